@@ -1,0 +1,16 @@
+// Each subcommand lives in its own cmd_<name>.cpp and registers itself on the app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace sinsim::cli {
+
+/// The action a subcommand runs after parsing; returns the process exit code.
+using Action = std::function<int()>;
+
+// One line per subcommand (add yours here and in main.cpp).
+// void addRunCommand(CLI::App& app, Action& action);
+
+}  // namespace sinsim::cli

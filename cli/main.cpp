@@ -1,0 +1,31 @@
+// sinsim — strapdown INS simulator and inertial-sensor error-model lab.
+// Exit codes: 0 success, 1 bad input or failed run (message on stderr), 2 bad command line.
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "common/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"sinsim: strapdown INS simulator and inertial-sensor error-model lab"};
+  app.require_subcommand(0, 1);
+  sinsim::cli::Action action;
+  // Subcommand registrations go here.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  if (!action) {
+    std::cout << app.help();
+    return 0;
+  }
+  try {
+    return action();
+  } catch (const sinsim::Error& e) {
+    std::cerr << "sinsim: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "sinsim: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,258 @@
+#include "common/config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace sinsim {
+namespace {
+
+int lineOf(const YAML::Node& n, int fallback) {
+  if (!n.IsDefined()) return fallback;
+  int l = n.Mark().line;
+  return l >= 0 ? l + 1 : fallback;  // yaml-cpp marks are 0-based
+}
+
+// Levenshtein distance, for "did you mean" hints on unknown keys.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string quoteList(const std::vector<std::string>& xs) {
+  std::string s;
+  for (const auto& x : xs) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+}  // namespace
+
+std::string joinKey(const std::string& parent, const std::string& child) {
+  if (parent.empty()) return child;
+  if (!child.empty() && child.front() == '[') return parent + child;
+  return parent + "." + child;
+}
+
+// ---------------------------------------------------------------------------------------------
+ConfigFile ConfigFile::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError({{path, 0, "", "cannot open file"}});
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return fromString(ss.str(), path);
+}
+
+ConfigFile ConfigFile::fromString(const std::string& text, const std::string& name) {
+  try {
+    YAML::Node root = YAML::Load(text);
+    return ConfigFile(root, name);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError({{name, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
+                        "YAML syntax error: " + e.msg}});
+  }
+}
+
+ConfigNode ConfigFile::root() { return ConfigNode(this, root_, "", lineOf(root_, 1)); }
+
+void ConfigFile::addError(int line, const std::string& key, const std::string& message) {
+  diagnostics_.push_back({name_, line, key, message});
+}
+
+void ConfigFile::throwIfErrors() const {
+  if (!diagnostics_.empty()) throw ConfigError(diagnostics_);
+}
+
+// ---------------------------------------------------------------------------------------------
+ConfigNode::ConfigNode(ConfigFile* file, YAML::Node node, std::string path, int line)
+    : file_(file), node_(std::move(node)), path_(std::move(path)), line_(line) {}
+
+ConfigNode& ConfigNode::operator=(const ConfigNode& other) {
+  // YAML::Node::operator= would overwrite the document's value; rebind the handle instead.
+  file_ = other.file_;
+  node_.reset(other.node_);
+  path_ = other.path_;
+  line_ = other.line_;
+  return *this;
+}
+
+ConfigNode ConfigNode::operator[](const std::string& key) const {
+  // Const access: a non-const yaml-cpp operator[] would insert the key into the document.
+  const YAML::Node& self = node_;
+  YAML::Node child = self.IsMap() ? self[key] : YAML::Node(YAML::NodeType::Undefined);
+  return ConfigNode(file_, child, joinKey(path_, key), lineOf(child, line_));
+}
+
+std::vector<ConfigNode> ConfigNode::items() const {
+  std::vector<ConfigNode> out;
+  if (!node_.IsSequence()) {
+    error("expected a list");
+    return out;
+  }
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    const YAML::Node& self = node_;
+    YAML::Node c = self[i];
+    out.emplace_back(file_, c, joinKey(path_, "[" + std::to_string(i) + "]"), lineOf(c, line_));
+  }
+  return out;
+}
+
+std::vector<std::string> ConfigNode::keys() const {
+  std::vector<std::string> out;
+  if (!node_.IsMap()) {
+    error("expected a map of key: value");
+    return out;
+  }
+  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  return out;
+}
+
+bool ConfigNode::has(const std::string& key) const { return (*this)[key].exists(); }
+
+void ConfigNode::allowKeys(std::initializer_list<const char*> allowed) const {
+  allowKeys(std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void ConfigNode::allowKeys(const std::vector<std::string>& allowed) const {
+  if (!node_.IsDefined() || node_.IsNull()) return;
+  if (!node_.IsMap()) {
+    error("expected a map with keys " + quoteList(allowed));
+    return;
+  }
+  for (const auto& kv : node_) {
+    std::string k = kv.first.as<std::string>();
+    if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+    std::string hint;
+    std::size_t best = 3;
+    for (const auto& a : allowed) {
+      std::size_t d = editDistance(k, a);
+      if (d < best) {
+        best = d;
+        hint = a;
+      }
+    }
+    std::string msg = "unknown key";
+    msg += hint.empty() ? " (known here: " + quoteList(allowed) + ")"
+                        : " (did you mean \"" + hint + "\"? known here: " + quoteList(allowed) + ")";
+    file_->addError(lineOf(kv.first, line_), joinKey(path_, k), msg);
+  }
+}
+
+ConfigNode ConfigNode::require(const std::string& key) const {
+  ConfigNode c = (*this)[key];
+  if (!c.exists()) file_->addError(line_, c.path(), "missing key");
+  return c;
+}
+
+void ConfigNode::error(const std::string& message) const {
+  file_->addError(line_, path_, message);
+}
+
+bool ConfigNode::check(bool ok, const std::string& message) const {
+  if (!ok) error(message);
+  return ok;
+}
+
+std::optional<std::string> ConfigNode::asString() const {
+  if (!node_.IsScalar()) {
+    error("expected a single value");
+    return std::nullopt;
+  }
+  return node_.Scalar();
+}
+
+std::optional<double> ConfigNode::asQuantity(Dimension expected) const {
+  auto s = asString();
+  if (!s) return std::nullopt;
+  try {
+    return parseQuantityAs(*s, expected);
+  } catch (const InputError& e) {
+    error(e.what());
+    return std::nullopt;
+  }
+}
+
+std::optional<double> ConfigNode::asNumber() const {
+  return asQuantity(Dimension::none());
+}
+
+std::optional<long long> ConfigNode::asInteger() const {
+  auto s = asString();
+  if (!s) return std::nullopt;
+  try {
+    std::size_t used = 0;
+    long long v = std::stoll(*s, &used);
+    if (used == s->size()) return v;
+  } catch (const std::exception&) {
+  }
+  error("expected an integer, got \"" + *s + "\"");
+  return std::nullopt;
+}
+
+std::optional<bool> ConfigNode::asBool() const {
+  auto s = asString();
+  if (!s) return std::nullopt;
+  if (*s == "true" || *s == "yes" || *s == "on") return true;
+  if (*s == "false" || *s == "no" || *s == "off") return false;
+  error("expected true or false, got \"" + *s + "\"");
+  return std::nullopt;
+}
+
+std::string ConfigNode::string(const std::string& key) const {
+  return require(key).exists() ? (*this)[key].asString().value_or("") : "";
+}
+std::string ConfigNode::string(const std::string& key, const std::string& fallback) const {
+  ConfigNode c = (*this)[key];
+  return c.exists() ? c.asString().value_or(fallback) : fallback;
+}
+double ConfigNode::quantity(const std::string& key, Dimension expected) const {
+  ConfigNode c = require(key);
+  return c.exists() ? c.asQuantity(expected).value_or(NAN) : NAN;
+}
+double ConfigNode::quantity(const std::string& key, Dimension expected, double fallbackSi) const {
+  ConfigNode c = (*this)[key];
+  return c.exists() ? c.asQuantity(expected).value_or(fallbackSi) : fallbackSi;
+}
+double ConfigNode::number(const std::string& key) const {
+  ConfigNode c = require(key);
+  return c.exists() ? c.asNumber().value_or(NAN) : NAN;
+}
+double ConfigNode::number(const std::string& key, double fallback) const {
+  ConfigNode c = (*this)[key];
+  return c.exists() ? c.asNumber().value_or(fallback) : fallback;
+}
+long long ConfigNode::integer(const std::string& key) const {
+  ConfigNode c = require(key);
+  return c.exists() ? c.asInteger().value_or(0) : 0;
+}
+long long ConfigNode::integer(const std::string& key, long long fallback) const {
+  ConfigNode c = (*this)[key];
+  return c.exists() ? c.asInteger().value_or(fallback) : fallback;
+}
+bool ConfigNode::boolean(const std::string& key, bool fallback) const {
+  ConfigNode c = (*this)[key];
+  return c.exists() ? c.asBool().value_or(fallback) : fallback;
+}
+std::string ConfigNode::choice(const std::string& key, const std::vector<std::string>& choices,
+                               const std::string& fallback) const {
+  ConfigNode c = (*this)[key];
+  if (!c.exists()) return fallback;
+  auto s = c.asString();
+  if (!s) return fallback;
+  if (std::find(choices.begin(), choices.end(), *s) == choices.end()) {
+    c.error("\"" + *s + "\" is not one of: " + quoteList(choices));
+    return fallback;
+  }
+  return *s;
+}
+
+}  // namespace sinsim

@@ -1,0 +1,50 @@
+// The one exception family of sinsim. Library code throws; only main() catches, prints and
+// returns non-zero (the GeographicLib GeographicErr / tools pattern).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sinsim {
+
+/// Base of every error sinsim throws on purpose.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Bad user input: a scenario, model file or data record that cannot be used as given.
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// One problem found in an input file, located by file, line and key path.
+struct Diagnostic {
+  std::string file;     ///< path as the user gave it
+  int line = 0;         ///< 1-based; 0 when unknown
+  std::string key;      ///< YAML key path, e.g. "segments[2].duration"; empty for the whole file
+  std::string message;  ///< what is wrong and what was expected
+
+  /// "scenario.yaml:14: segments[2].duration: expected a positive time, got \"-3 s\""
+  std::string str() const;
+};
+
+/// Every problem found in one input file, reported at once (OpenVINS-style: parse all, fail once).
+class ConfigError : public InputError {
+ public:
+  explicit ConfigError(std::vector<Diagnostic> diagnostics);
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+
+ private:
+  std::vector<Diagnostic> diagnostics_;
+};
+
+/// A numerical or internal condition that should not happen with valid input.
+class NumericalError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace sinsim

@@ -1,0 +1,1 @@
+#include "errormodels/imu_model.hpp"

@@ -1,0 +1,67 @@
+// The boundary between the simulator and the sensor error plug-ins.
+//
+// ImuErrorModel is the parsed, immutable description of an IMU's errors (a model file or an
+// inline `errors:` block of a scenario). It is shared by every run of a Monte Carlo batch.
+// ImuCorruptor is one realisation of it: stateful, seeded, turning ideal increments into measured
+// ones interval by interval. Ideal and corrupted signals stay apart: the simulator keeps the ideal
+// sample and hands a copy to the corruptor.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/config.hpp"
+#include "nav/types.hpp"
+
+namespace sinsim::errormodels {
+
+/// Identifies one realisation: every random stream is keyed by (seed, run, sensor, axis, effect),
+/// so run k of a batch can be regenerated alone and results do not depend on thread count.
+struct StreamKey {
+  std::uint64_t seed = 0;
+  std::uint64_t run = 0;
+};
+
+/// One realisation of an IMU error model.
+class ImuCorruptor {
+ public:
+  virtual ~ImuCorruptor() = default;
+  /// Replaces the ideal increments of `sample` (interval (t - dt, t]) by measured ones.
+  /// temperature [K] is the sensor temperature over the interval (NaN when the scenario has no
+  /// temperature profile; a model that needs it was refused at instantiation).
+  virtual void corrupt(nav::ImuSample& sample, double temperature) = 0;
+};
+
+class ImuErrorModel {
+ public:
+  /// A perfect IMU.
+  static ImuErrorModel none();
+  /// Reads a model file; throws ConfigError listing every problem with file, line, key path.
+  static ImuErrorModel load(const std::string& path);
+  /// Reads a model from a node of an already opened file (a scenario's inline `errors:` block);
+  /// problems are recorded in that file's diagnostics.
+  static ImuErrorModel parse(const ConfigNode& node);
+
+  bool empty() const;
+  /// Does any effect need a temperature profile?
+  bool needsTemperature() const;
+  /// Names of the effects, "gyro.x.white" style, in model order (for listings and budgets).
+  std::vector<std::string> effectNames() const;
+  /// Where the model came from (file name or "inline"), for reports.
+  const std::string& source() const { return source_; }
+
+  /// A realisation for an IMU at imuRate [Hz]. Throws InputError when the model cannot run at
+  /// that rate (e.g. a stochastic process defined at a rate slower than the IMU).
+  std::unique_ptr<ImuCorruptor> instantiate(double imuRate, const StreamKey& key) const;
+
+  struct Impl;
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+  std::string source_ = "none";
+};
+
+}  // namespace sinsim::errormodels

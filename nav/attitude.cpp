@@ -1,0 +1,75 @@
+#include "nav/attitude.hpp"
+
+#include <cmath>
+
+namespace sinsim::nav {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+Mat3 skew(const Vec3& a) {
+  Mat3 S;
+  S << 0.0, -a.z(), a.y(),  //
+      a.z(), 0.0, -a.x(),   //
+      -a.y(), a.x(), 0.0;
+  return S;
+}
+
+Quat quatFromRotationVector(const Vec3& phi) {
+  const double th2 = phi.squaredNorm();
+  double c, s;  // cos(θ/2), sin(θ/2)/θ
+  if (th2 < 1e-8) {
+    // Taylor series; truncation error < θ^6/46080 ≈ 2e-29 at θ = 1e-4 (Savage 2000, eq. 7.1.2.2-5)
+    c = 1.0 - th2 / 8.0 + th2 * th2 / 384.0;
+    s = 0.5 - th2 / 48.0 + th2 * th2 / 3840.0;
+  } else {
+    const double th = std::sqrt(th2);
+    c = std::cos(0.5 * th);
+    s = std::sin(0.5 * th) / th;
+  }
+  return Quat(c, s * phi.x(), s * phi.y(), s * phi.z());
+}
+
+Vec3 rotationVectorFromQuat(const Quat& qin) {
+  Quat q = qin.w() < 0.0 ? Quat(-qin.w(), -qin.x(), -qin.y(), -qin.z()) : qin;
+  const Vec3 v = q.vec();
+  const double sn = v.norm();  // sin(θ/2)
+  // θ = 2 atan2(|v|, w) is well conditioned everywhere, including θ → π (w → 0).
+  const double th = 2.0 * std::atan2(sn, q.w());
+  if (sn < 1e-12) return 2.0 * v / q.w();  // θ ≈ 2|v|/w to first order, exact for θ = 0
+  return v * (th / sn);
+}
+
+Vec3 eulerFromDcm(const Mat3& C) {
+  // C_nb = Rz(ψ)Ry(θ)Rx(φ): C(2,0) = -sin θ, C(2,1) = sin φ cos θ, C(2,2) = cos φ cos θ,
+  // C(1,0) = sin ψ cos θ, C(0,0) = cos ψ cos θ (Titterton & Weston 2004, eq. 3.47).
+  const double sp = -C(2, 0);
+  if (std::abs(sp) > 1.0 - 1e-12) {
+    // Gimbal lock: only ψ ∓ φ is defined; put it all in yaw.
+    const double pitch = std::copysign(kPi / 2.0, sp);
+    const double yaw = std::atan2(-C(0, 1), C(1, 1));
+    return Vec3(0.0, pitch, wrapAngle(yaw));
+  }
+  const double roll = std::atan2(C(2, 1), C(2, 2));
+  const double pitch = std::atan2(sp, std::hypot(C(2, 1), C(2, 2)));
+  const double yaw = std::atan2(C(1, 0), C(0, 0));
+  return Vec3(roll, pitch, yaw);
+}
+
+Vec3 eulerFromQuat(const Quat& q_nb) { return eulerFromDcm(q_nb.toRotationMatrix()); }
+
+Mat3 dcmFromEuler(const Vec3& rpy) { return quatFromEuler(rpy).toRotationMatrix(); }
+
+Quat quatFromEuler(const Vec3& rpy) {
+  const Quat qz(Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()));
+  const Quat qy(Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()));
+  const Quat qx(Eigen::AngleAxisd(rpy.x(), Vec3::UnitX()));
+  return qz * qy * qx;
+}
+
+double wrapAngle(double a) {
+  a = std::remainder(a, 2.0 * kPi);  // in [-π, π]
+  return a <= -kPi ? a + 2.0 * kPi : a;
+}
+
+}  // namespace sinsim::nav
