@@ -38,9 +38,19 @@ const std::vector<double>& signal1M() {
   return y;
 }
 
-/// A 1 M x 6 CSV like the ADIS16405 records (values quantized to the sensor LSBs), written once.
+/// Removes the generated file when the benchmark exits.
+struct TempFile {
+  std::string path;
+  ~TempFile() {
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+  }
+};
+
+/// A 1 M x 6 CSV like the ADIS16405 records (values quantized to the sensor LSBs), written once
+/// per run into the temp folder and removed at exit.
 const std::string& csv1Mx6() {
-  static const std::string path = [] {
+  static const TempFile file{[] {
     const std::string p =
         (std::filesystem::temp_directory_path() / "sinsim_bench_stats_1Mx6.csv").string();
     std::mt19937_64 rng(5);
@@ -55,8 +65,8 @@ const std::string& csv1Mx6() {
     }
     std::fclose(f);
     return p;
-  }();
-  return path;
+  }()};
+  return file.path;
 }
 
 RecordOptions adisOptions() {
