@@ -1,0 +1,374 @@
+#include "errormodels/stats/record.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "common/units.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+enum class Role { Time, Gyro, Accel, Temperature, Aux };
+
+struct Column {
+  Role role = Role::Aux;
+  int axis = 0;
+  std::string header;  // as written
+  double scale = 1.0;   // SI value = scale * file value + offset
+  double offset = 0.0;
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& what) {
+  std::ostringstream os;
+  os << source;
+  if (line > 0) os << ":" << line;
+  os << ": " << what;
+  throw InputError(os.str());
+}
+
+/// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
+std::string readWholeFile(const std::string& path) {
+  gzFile f = gzopen(path.c_str(), "rb");
+  if (f == nullptr) fail(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+  gzbuffer(f, 1u << 20);
+  std::string text;
+  std::size_t used = 0;
+  text.resize(std::size_t{1} << 24);
+  for (;;) {
+    if (text.size() - used < (std::size_t{1} << 22)) text.resize(text.size() * 2);
+    const unsigned want = static_cast<unsigned>(std::min<std::size_t>(text.size() - used, 1u << 30));
+    const int got = gzread(f, text.data() + used, want);
+    if (got < 0) {
+      int code = 0;
+      std::string msg = gzerror(f, &code);
+      gzclose(f);
+      fail(path, 0, "read error: " + msg);
+    }
+    if (got == 0) break;
+    used += static_cast<std::size_t>(got);
+  }
+  // A truncated gzip stream ends with Z_BUF_ERROR ("unexpected end of file").
+  int code = Z_OK;
+  const char* msg = gzerror(f, &code);
+  if (code != Z_OK && code != Z_STREAM_END) {
+    std::string m = msg;
+    gzclose(f);
+    fail(path, 0, "read error: " + m);
+  }
+  gzclose(f);
+  text.resize(used);
+  return text;
+}
+
+struct UnitSpec {
+  double scale = 1.0;
+  double offset = 0.0;
+  Dimension dim;
+};
+
+UnitSpec parseUnitSpec(std::string_view unit, const std::string& source, std::size_t line,
+                       const std::string& column) {
+  try {
+    Quantity q = parseUnit(unit);
+    UnitSpec spec{q.si, 0.0, q.dim};
+    if (q.dim == Dimension::temperature()) {
+      // Absolute temperatures carry an offset (degC -> K); parseQuantity applies it to a lone unit.
+      spec.offset = parseQuantity("0 " + std::string(unit)).si;
+    }
+    return spec;
+  } catch (const InputError& e) {
+    fail(source, line, "column \"" + column + "\": " + e.what());
+  }
+}
+
+/// Resolves the unit of one recognised column from the header text and the user's option.
+UnitSpec resolveUnit(std::string_view header_unit, const std::optional<std::string>& option,
+                     std::string_view default_unit, Dimension expected, const std::string& source,
+                     std::size_t line, const std::string& column) {
+  UnitSpec spec;
+  if (!header_unit.empty() && option) {
+    UnitSpec a = parseUnitSpec(header_unit, source, line, column);
+    UnitSpec b = parseUnitSpec(*option, source, line, column);
+    if (a.dim != b.dim || std::abs(a.scale - b.scale) > 1e-12 * std::abs(b.scale) ||
+        a.offset != b.offset) {
+      fail(source, line,
+           "column \"" + column + "\" is in " + std::string(header_unit) +
+               " by its header but the unit option says " + *option);
+    }
+    spec = b;
+  } else if (!header_unit.empty()) {
+    spec = parseUnitSpec(header_unit, source, line, column);
+  } else if (option) {
+    spec = parseUnitSpec(*option, source, line, column);
+  } else {
+    spec = parseUnitSpec(default_unit, source, line, column);
+  }
+  if (spec.dim != expected) {
+    fail(source, line,
+         "column \"" + column + "\": unit has dimension " + spec.dim.siUnit() + ", expected " +
+             expected.siUnit() + " (e.g. " + exampleUnit(expected) + ")");
+  }
+  return spec;
+}
+
+std::vector<Column> parseHeader(std::string_view header, const std::string& source,
+                                std::size_t line, const RecordOptions& options) {
+  std::vector<Column> cols;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = header.find(',', start);
+    std::string_view field =
+        trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                  : comma - start));
+    Column col;
+    col.header = std::string(field);
+    if (field.empty()) fail(source, line, "header: column " + std::to_string(cols.size() + 1) + " has no name");
+    std::string_view name = field;
+    std::string_view unit;
+    const std::size_t open = field.find_first_of("[(");
+    if (open != std::string_view::npos) {
+      const char close_char = field[open] == '[' ? ']' : ')';
+      const std::size_t close = field.find(close_char, open);
+      if (close == std::string_view::npos)
+        fail(source, line, "header: column \"" + col.header + "\": unclosed unit bracket");
+      name = trim(field.substr(0, open));
+      unit = trim(field.substr(open + 1, close - open - 1));
+    }
+    const std::string key = lower(name);
+    if (key == "t" || key == "time") {
+      col.role = Role::Time;
+      UnitSpec u = resolveUnit(unit, std::nullopt, "s", Dimension::time(), source, line, col.header);
+      col.scale = u.scale;
+    } else if (key.size() == 2 && (key[0] == 'g' || key[0] == 'a') &&
+               (key[1] == 'x' || key[1] == 'y' || key[1] == 'z')) {
+      const bool gyro = key[0] == 'g';
+      col.role = gyro ? Role::Gyro : Role::Accel;
+      col.axis = key[1] - 'x';
+      UnitSpec u = gyro ? resolveUnit(unit, options.gyro_unit, "rad/s", Dimension::angularRate(),
+                                      source, line, col.header)
+                        : resolveUnit(unit, options.accel_unit, "m/s^2",
+                                      Dimension::acceleration(), source, line, col.header);
+      col.scale = u.scale;
+    } else if (key == "temp" || key == "temperature") {
+      col.role = Role::Temperature;
+      UnitSpec u = resolveUnit(unit, std::nullopt, "degC", Dimension::temperature(), source, line,
+                               col.header);
+      col.scale = u.scale;
+      col.offset = u.offset;
+    }
+    for (const Column& other : cols) {
+      if (col.role != Role::Aux && other.role == col.role && other.axis == col.axis)
+        fail(source, line, "header: columns \"" + other.header + "\" and \"" + col.header +
+                               "\" hold the same quantity");
+    }
+    cols.push_back(col);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return cols;
+}
+
+/// Parses one number occupying [p, end) up to the next ',' or end of line; returns the position
+/// after the field (at the separator or end). Throws with line/column context on anything that
+/// is not a finite number.
+inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
+                              const std::string& source, std::size_t line) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  const char* q = p;
+  if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
+  auto res = std::from_chars(q, end, value);
+  const char* after = res.ptr;
+  while (after < end && (*after == ' ' || *after == '\t' || *after == '\r')) ++after;
+  if (res.ec != std::errc() || (after < end && *after != ',') || !std::isfinite(value)) {
+    const char* stop = p;
+    while (stop < end && *stop != ',' && *stop != '\r') ++stop;
+    std::string text(p, stop);
+    if (res.ec == std::errc::result_out_of_range)
+      fail(source, line, "column \"" + col.header + "\": number out of range: \"" + text + "\"");
+    if (text.empty()) fail(source, line, "column \"" + col.header + "\": empty field");
+    fail(source, line, "column \"" + col.header + "\": expected a finite number, got \"" + text + "\"");
+  }
+  return after;
+}
+
+/// Checks that time stamps increase and are uniform; first_line is the file line of row 0.
+void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options) {
+  const std::vector<double>& t = rec.t;
+  const std::size_t n = t.size();
+  auto lineOf = [&](std::size_t row) { return first_line + row; };
+  for (std::size_t k = 1; k < n; ++k) {
+    if (!(t[k] > t[k - 1])) {
+      fail(rec.source, lineOf(k),
+           "time stamp " + std::to_string(t[k]) + " s does not increase (previous " +
+               std::to_string(t[k - 1]) + " s)");
+    }
+  }
+  double dt0 = 0.0;
+  if (n >= 2) {
+    std::vector<double> dt(n - 1);
+    for (std::size_t k = 1; k < n; ++k) dt[k - 1] = t[k] - t[k - 1];
+    auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
+    std::nth_element(dt.begin(), mid, dt.end());
+    dt0 = *mid;  // median step: robust to a few gaps
+  }
+  if (options.rate_hz) {
+    const double dt_opt = 1.0 / *options.rate_hz;
+    if (n >= 2 && std::abs(dt_opt - dt0) > options.time_tolerance * dt_opt) {
+      std::ostringstream os;
+      os << "the rate option " << *options.rate_hz << " Hz disagrees with the time stamps (median step "
+         << dt0 << " s, i.e. " << 1.0 / dt0 << " Hz)";
+      fail(rec.source, 0, os.str());
+    }
+    dt0 = dt_opt;
+  }
+  if (n < 2 && !options.rate_hz) fail(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");
+  rec.rate_hz = 1.0 / dt0;
+  std::size_t count = 0;
+  std::vector<TimeIrregularity> found;
+  for (std::size_t k = 1; k < n; ++k) {
+    const double dt = t[k] - t[k - 1];
+    if (std::abs(dt - dt0) > options.time_tolerance * dt0) {
+      ++count;
+      if (found.size() < 1000) found.push_back({lineOf(k), k, t[k], dt, dt > 1.5 * dt0});
+    }
+  }
+  rec.irregular_count = count;
+  if (count > 0 && !options.allow_irregular_time) {
+    std::ostringstream os;
+    os << count << " irregular time step(s) (nominal " << dt0 << " s, tolerance "
+       << options.time_tolerance * 100 << " %); first at:";
+    for (std::size_t i = 0; i < std::min<std::size_t>(found.size(), 5); ++i) {
+      os << (i ? "," : "") << " line " << found[i].line << " (t = " << found[i].t << " s, dt = "
+         << found[i].dt << " s" << (found[i].gap ? ", gap" : "") << ")";
+    }
+    os << ". Records are not resampled; fix the file or allow irregular time.";
+    fail(rec.source, 0, os.str());
+  }
+  rec.irregularities = std::move(found);
+}
+
+}  // namespace
+
+Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
+  if (options.rate_hz && !(std::isfinite(*options.rate_hz) && *options.rate_hz > 0))
+    fail(source, 0, "rate must be a positive number of Hz");
+  if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
+    fail(source, 0, "time tolerance must be positive");
+
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  std::size_t line = 0;
+  // Comment lines and blank lines before the header.
+  std::string_view header;
+  while (p < end) {
+    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    if (eol == nullptr) eol = end;
+    ++line;
+    std::string_view l = trim(std::string_view(p, static_cast<std::size_t>(eol - p)));
+    p = eol < end ? eol + 1 : end;
+    if (l.empty() || l.front() == '#') continue;
+    header = l;
+    break;
+  }
+  if (header.empty()) fail(source, 0, "empty file: no header line and no data");
+  const std::size_t header_line = line;
+  std::vector<Column> cols = parseHeader(header, source, line, options);
+  const std::size_t ncol = cols.size();
+
+  // Upper bound of the row count, so that columns are written in place.
+  const std::size_t max_rows =
+      static_cast<std::size_t>(std::count(p, end, '\n')) + 1;
+  std::vector<std::vector<double>> data(ncol);
+  for (auto& c : data) c.resize(max_rows);
+
+  std::size_t rows = 0;
+  while (p < end) {
+    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    if (eol == nullptr) eol = end;
+    ++line;
+    const char* q = p;
+    const char* next = eol < end ? eol + 1 : end;
+    // Blank lines are allowed only at the end of the file.
+    if (trim(std::string_view(p, static_cast<std::size_t>(eol - p))).empty()) {
+      const char* r = next;
+      while (r < end && (*r == '\n' || *r == '\r' || *r == ' ' || *r == '\t')) ++r;
+      if (r == end) break;
+      fail(source, line, "empty row inside the data");
+    }
+    for (std::size_t c = 0; c < ncol; ++c) {
+      if (q >= eol && c > 0) {
+        fail(source, line, "short row: " + std::to_string(c) + " field(s), the header has " +
+                               std::to_string(ncol));
+      }
+      double v;
+      q = parseField(q, eol, v, cols[c], source, line);
+      data[c][rows] = v;
+      if (c + 1 < ncol) {
+        if (q >= eol)
+          fail(source, line, "short row: " + std::to_string(c + 1) + " field(s), the header has " +
+                                 std::to_string(ncol));
+        ++q;  // the ','
+      }
+    }
+    if (q < eol) {
+      fail(source, line, "long row: more than the " + std::to_string(ncol) + " fields of the header");
+    }
+    ++rows;
+    p = next;
+  }
+  if (rows == 0) fail(source, header_line, "no data rows after the header");
+
+  Record rec;
+  rec.source = source;
+  rec.rows = rows;
+  for (std::size_t c = 0; c < ncol; ++c) {
+    std::vector<double>& v = data[c];
+    v.resize(rows);
+    v.shrink_to_fit();
+    const Column& col = cols[c];
+    if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0)) {
+      for (double& x : v) x = col.scale * x + col.offset;
+    }
+    switch (col.role) {
+      case Role::Time: rec.t = std::move(v); break;
+      case Role::Gyro: rec.gyro[col.axis] = std::move(v); break;
+      case Role::Accel: rec.accel[col.axis] = std::move(v); break;
+      case Role::Temperature: rec.temperature = std::move(v); break;
+      case Role::Aux: rec.aux.push_back({col.header, std::move(v)}); break;
+    }
+  }
+  if (!rec.t.empty()) {
+    checkTime(rec, header_line + 1, options);
+  } else {
+    if (!options.rate_hz)
+      fail(source, 0, "the file has no time column (t): give the sample rate");
+    rec.rate_hz = *options.rate_hz;
+  }
+  return rec;
+}
+
+Record loadRecord(const std::string& path, const RecordOptions& options) {
+  const std::string text = readWholeFile(path);
+  return parseRecord(text, path, options);
+}
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,89 @@
+// A measured IMU record read from CSV (plain or gzip): the entry point of the identify path.
+//
+// File format: optional '#' comment lines, one header line, then one row per sample, fields
+// separated by ','. Recognised column names (case-insensitive, surrounding blanks ignored):
+//   t | time            time stamp            default unit s
+//   gx gy gz            angular rate          default unit rad/s  (RecordOptions::gyro_unit)
+//   ax ay az            specific force        default unit m/s^2  (RecordOptions::accel_unit)
+//   temp | temperature  sensor temperature    default unit degC
+// A unit may be written in the header after the name in brackets or parentheses, e.g.
+// "gx [deg/s]", "ax (g)", "t[ms]"; it is parsed with sinsim::parseUnit and its dimension checked.
+// Every other column is kept, unconverted, as an auxiliary channel. Values are converted to SI
+// once, here; everything downstream is SI.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sinsim::errormodels {
+
+struct RecordOptions {
+  /// Unit of the gx/gy/gz columns ("deg/s", "rad/s", "deg/h", ...). Unset: the header's unit,
+  /// else rad/s. Set and different from a unit written in the header: InputError.
+  std::optional<std::string> gyro_unit;
+  /// Unit of the ax/ay/az columns ("g", "m/s^2", "mg", ...). Unset: the header's unit, else m/s^2.
+  std::optional<std::string> accel_unit;
+  /// Sample rate [Hz]. Required when the file has no time column; with a time column it must
+  /// agree with the time stamps (within time_tolerance).
+  std::optional<double> rate_hz;
+  /// A time step is irregular when |dt - dt_nominal| > time_tolerance * dt_nominal. [1]
+  double time_tolerance = 0.01;
+  /// false: irregular or gapped time stamps are an InputError that says where (default).
+  /// true: they are listed in Record::irregularities and the record is returned as read
+  /// (never resampled).
+  bool allow_irregular_time = false;
+};
+
+/// One time step that departs from the nominal step (only records with a time column).
+struct TimeIrregularity {
+  std::size_t line = 0;   ///< 1-based file line of the later sample
+  std::size_t row = 0;    ///< 0-based sample index of the later sample
+  double t = 0.0;         ///< [s] its time stamp
+  double dt = 0.0;        ///< [s] step from the previous sample
+  bool gap = false;       ///< dt > 1.5 nominal steps (missing samples) rather than jitter
+};
+
+struct AuxChannel {
+  std::string name;            ///< header text as written
+  std::vector<double> values;  ///< as in the file, no unit conversion
+};
+
+struct Record {
+  std::string source;   ///< file path as given
+  double rate_hz = 0;   ///< [Hz] nominal sample rate (option, or 1 / median time step)
+  /// [s] time stamps as read (empty when the file has no time column: sample k is at k / rate_hz)
+  std::vector<double> t;
+  /// omega_ib_b per axis x, y, z [rad/s]; an axis absent from the file is an empty vector
+  std::array<std::vector<double>, 3> gyro;
+  /// f_b per axis x, y, z [m/s^2]; an axis absent from the file is an empty vector
+  std::array<std::vector<double>, 3> accel;
+  /// [K] sensor temperature; empty when absent
+  std::vector<double> temperature;
+  std::vector<AuxChannel> aux;
+  /// Irregular steps (filled only with RecordOptions::allow_irregular_time; at most 1000 kept)
+  std::vector<TimeIrregularity> irregularities;
+  std::size_t irregular_count = 0;  ///< total number of irregular steps found
+  std::size_t rows = 0;             ///< number of samples
+
+  std::size_t size() const { return rows; }
+  double duration() const { return rows / rate_hz; }  ///< [s] rows times the nominal step
+  bool hasGyro(int axis) const { return !gyro[axis].empty(); }
+  bool hasAccel(int axis) const { return !accel[axis].empty(); }
+};
+
+/// Reads a CSV record; a path ending in ".gz" (or any gzip stream) is decompressed on the fly
+/// with zlib. Throws sinsim::InputError naming the file and line for: a missing/unreadable
+/// file, no header or no data rows, duplicate or unknown-unit columns, a row with too few or too
+/// many fields, a field that is not a finite number (text, NaN, inf, empty), time stamps that do
+/// not increase, and (unless allowed) irregular or gapped time stamps.
+Record loadRecord(const std::string& path, const RecordOptions& options = {});
+
+/// The same parser on text already in memory; `source` names it in messages.
+Record parseRecord(std::string_view text, const std::string& source,
+                   const RecordOptions& options = {});
+
+}  // namespace sinsim::errormodels

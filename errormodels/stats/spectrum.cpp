@@ -1,0 +1,204 @@
+#include "errormodels/stats/spectrum.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "common/error.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// FFTW's planner is not thread-safe (FFTW manual 5.4): plans are made and destroyed under
+/// this lock; executing a plan on its own arrays is safe.
+std::mutex& plannerMutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+using RealBuffer = std::unique_ptr<double[], FftwFree>;
+using ComplexBuffer = std::unique_ptr<fftw_complex[], FftwFree>;
+
+/// A real-to-complex plan of length n with its own buffers (and optionally the inverse).
+class RealFft {
+ public:
+  explicit RealFft(std::size_t n, bool inverse = false) : n_(n) {
+    in_.reset(static_cast<double*>(fftw_malloc(sizeof(double) * n)));
+    out_.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * (n / 2 + 1))));
+    if (!in_ || !out_) throw NumericalError("FFT: out of memory for length " + std::to_string(n));
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    const int ni = static_cast<int>(n);
+    forward_ = fftw_plan_dft_r2c_1d(ni, in_.get(), out_.get(), FFTW_ESTIMATE);
+    if (inverse) backward_ = fftw_plan_dft_c2r_1d(ni, out_.get(), in_.get(), FFTW_ESTIMATE);
+  }
+  ~RealFft() {
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    if (forward_) fftw_destroy_plan(forward_);
+    if (backward_) fftw_destroy_plan(backward_);
+  }
+  RealFft(const RealFft&) = delete;
+  RealFft& operator=(const RealFft&) = delete;
+
+  double* in() { return in_.get(); }
+  fftw_complex* out() { return out_.get(); }
+  void forward() { fftw_execute(forward_); }
+  void backward() { fftw_execute(backward_); }  // c2r overwrites out(); unnormalised
+  std::size_t size() const { return n_; }
+
+ private:
+  std::size_t n_;
+  RealBuffer in_;
+  ComplexBuffer out_;
+  fftw_plan forward_ = nullptr;
+  fftw_plan backward_ = nullptr;
+};
+
+/// Smallest 2^a 3^b 5^c 7^d >= n: lengths FFTW handles with its fastest codelets.
+std::size_t goodFftSize(std::size_t n) {
+  for (std::size_t m = n;; ++m) {
+    std::size_t r = m;
+    for (std::size_t p : {2, 3, 5, 7})
+      while (r % p == 0) r /= p;
+    if (r == 1) return m;
+  }
+}
+
+void checkSamples(const std::vector<double>& x, double rate_hz, const char* who) {
+  if (!(std::isfinite(rate_hz) && rate_hz > 0))
+    throw InputError(std::string(who) + ": sample rate must be a positive number of Hz");
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i]))
+      throw InputError(std::string(who) + ": sample " + std::to_string(i) + " is not finite");
+  }
+}
+
+}  // namespace
+
+Autocorrelation autocorrelation(const std::vector<double>& x, double rate_hz, std::size_t max_lag,
+                                AcfScaling scaling, AcfMethod method) {
+  checkSamples(x, rate_hz, "autocorrelation");
+  const std::size_t n = x.size();
+  if (n < 2) throw InputError("autocorrelation: need at least 2 samples");
+  if (max_lag >= n)
+    throw InputError("autocorrelation: max lag " + std::to_string(max_lag) + " must be below the " +
+                     std::to_string(n) + " samples");
+  Autocorrelation a;
+  a.samples = n;
+  a.dt = 1.0 / rate_hz;
+  a.scaling = scaling;
+  double mean = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(n);
+  a.mean = mean;
+  a.r.assign(max_lag + 1, 0.0);
+  if (method == AcfMethod::Auto) method = max_lag < 64 ? AcfMethod::Direct : AcfMethod::Fft;
+  if (method == AcfMethod::Direct) {
+    std::vector<double> z(n);
+    for (std::size_t i = 0; i < n; ++i) z[i] = x[i] - mean;
+    for (std::size_t k = 0; k <= max_lag; ++k) {
+      double s = 0;
+      for (std::size_t i = 0; i + k < n; ++i) s += z[i] * z[i + k];
+      a.r[k] = s / static_cast<double>(n);
+    }
+  } else {
+    // Wiener-Khinchin on the zero-padded record: padding to L >= N + max_lag makes the
+    // circular correlation equal the linear one for every lag <= max_lag.
+    const std::size_t len = goodFftSize(n + max_lag);
+    RealFft fft(len, true);
+    double* in = fft.in();
+    for (std::size_t i = 0; i < n; ++i) in[i] = x[i] - mean;
+    for (std::size_t i = n; i < len; ++i) in[i] = 0.0;
+    fft.forward();
+    fftw_complex* c = fft.out();
+    for (std::size_t k = 0; k <= len / 2; ++k) {
+      c[k][0] = c[k][0] * c[k][0] + c[k][1] * c[k][1];
+      c[k][1] = 0.0;
+    }
+    fft.backward();
+    const double scale = 1.0 / (static_cast<double>(len) * static_cast<double>(n));
+    for (std::size_t k = 0; k <= max_lag; ++k) a.r[k] = in[k] * scale;
+  }
+  a.variance = a.r[0];
+  if (scaling == AcfScaling::Normalised) {
+    if (a.variance > 0) {
+      const double inv = 1.0 / a.variance;
+      for (double& v : a.r) v *= inv;
+    } else {
+      throw InputError("autocorrelation: the record is constant, its normalised ACF is undefined");
+    }
+  }
+  a.lag.resize(max_lag + 1);
+  for (std::size_t k = 0; k <= max_lag; ++k) a.lag[k] = static_cast<double>(k) * a.dt;
+  return a;
+}
+
+PowerSpectrum welchPsd(const std::vector<double>& x, double rate_hz, const WelchOptions& options) {
+  checkSamples(x, rate_hz, "Welch PSD");
+  const std::size_t n = x.size();
+  if (!(options.overlap >= 0 && options.overlap < 1))
+    throw InputError("Welch PSD: overlap must be in [0, 1)");
+  std::size_t len = options.segment_length;
+  if (len == 0) {
+    len = 16;
+    while (len * 2 <= n / 8) len *= 2;
+    len = std::min(len, n);
+  }
+  if (len < 2) throw InputError("Welch PSD: segment length must be at least 2");
+  if (len > n)
+    throw InputError("Welch PSD: segment of " + std::to_string(len) + " samples is longer than the " +
+                     std::to_string(n) + "-sample record");
+  const std::size_t noverlap = static_cast<std::size_t>(std::floor(options.overlap * len));
+  const std::size_t step = len - noverlap;
+  const std::size_t segments = (n - len) / step + 1;  // the tail that does not fill one is dropped
+
+  // Periodic Hann window (scipy.signal.get_window("hann", L), fftbins=True).
+  std::vector<double> w(len);
+  double sw = 0, sw2 = 0;
+  for (std::size_t i = 0; i < len; ++i) {
+    w[i] = 0.5 - 0.5 * std::cos(2.0 * kPi * static_cast<double>(i) / static_cast<double>(len));
+    sw += w[i];
+    sw2 += w[i] * w[i];
+  }
+  const std::size_t nf = len / 2 + 1;
+  PowerSpectrum p;
+  p.rate_hz = rate_hz;
+  p.segment_length = len;
+  p.segments = segments;
+  p.df = rate_hz / static_cast<double>(len);
+  p.enbw_hz = rate_hz * sw2 / (sw * sw);
+  p.f.resize(nf);
+  p.psd.assign(nf, 0.0);
+  for (std::size_t k = 0; k < nf; ++k) p.f[k] = static_cast<double>(k) * p.df;
+
+  RealFft fft(len);
+  double* in = fft.in();
+  const fftw_complex* c = fft.out();
+  for (std::size_t s = 0; s < segments; ++s) {
+    const double* seg = x.data() + s * step;
+    double mean = 0;
+    if (options.detrend) {
+      for (std::size_t i = 0; i < len; ++i) mean += seg[i];
+      mean /= static_cast<double>(len);
+    }
+    for (std::size_t i = 0; i < len; ++i) in[i] = w[i] * (seg[i] - mean);
+    fft.forward();
+    for (std::size_t k = 0; k < nf; ++k) p.psd[k] += c[k][0] * c[k][0] + c[k][1] * c[k][1];
+  }
+  const double scale = 1.0 / (rate_hz * sw2 * static_cast<double>(segments));
+  for (std::size_t k = 0; k < nf; ++k) {
+    const bool single = k == 0 || (len % 2 == 0 && k == len / 2);
+    p.psd[k] *= scale * (single ? 1.0 : 2.0);
+  }
+  return p;
+}
+
+}  // namespace sinsim::errormodels

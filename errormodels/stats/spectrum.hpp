@@ -1,0 +1,67 @@
+// Second-order statistics of a uniformly sampled record: autocorrelation and Welch power
+// spectral density. Inputs are in any unit u; outputs state theirs.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace sinsim::errormodels {
+
+enum class AcfScaling {
+  Biased,      ///< r(k) = 1/N sum_{n=0}^{N-1-k} (x_n - xbar)(x_{n+k} - xbar)   [u^2]
+  Normalised,  ///< r(k) / r(0)                                                  [1]
+};
+enum class AcfMethod {
+  Auto,    ///< direct sum for up to 64 lags, FFT otherwise
+  Direct,  ///< O(N * lags)
+  Fft,     ///< FFTW r2c/c2r, zero-padded to >= N + max_lag (no circular wrap), O(N log N)
+};
+
+/// Autocorrelation at lags 0..max_lag. The biased estimator (divide by N at every lag) is the
+/// one whose sequence is positive semi-definite (Box & Jenkins 2.1.6) and the one Yule-Walker
+/// and the GM fit expect; the mean is removed first.
+struct Autocorrelation {
+  double dt = 0.0;            ///< [s] lag step, 1 / rate
+  std::vector<double> lag;    ///< [s] k * dt
+  std::vector<double> r;      ///< [u^2] (Biased) or [1] (Normalised)
+  AcfScaling scaling = AcfScaling::Normalised;
+  double variance = 0.0;      ///< [u^2] r(0) of the biased estimator (mean-removed, / N)
+  double mean = 0.0;          ///< [u] the removed mean
+  std::size_t samples = 0;    ///< N
+};
+
+/// Throws InputError for fewer than 2 samples, non-finite samples, max_lag >= N, rate <= 0.
+Autocorrelation autocorrelation(const std::vector<double>& x, double rate_hz, std::size_t max_lag,
+                                AcfScaling scaling = AcfScaling::Normalised,
+                                AcfMethod method = AcfMethod::Auto);
+
+struct WelchOptions {
+  /// Samples per segment; 0: the largest power of two <= N / 8 (about 15 averaged segments at
+  /// 50 % overlap), at least 16 and at most N.
+  std::size_t segment_length = 0;
+  double overlap = 0.5;  ///< fraction of a segment shared with the next, [0, 1)
+  bool detrend = true;   ///< remove each segment's mean before windowing
+};
+
+/// One-sided power spectral density by Welch's method (Welch 1967) with a periodic Hann window:
+/// psd_k = c_k |sum_n w_n x_n e^{-2 pi i k n / L}|^2 / (fs sum_n w_n^2), averaged over segments,
+/// c_k = 2 except at DC and (L even) Nyquist where c_k = 1. Same as scipy.signal.welch(x, fs,
+/// window="hann", nperseg=L, noverlap=floor(overlap L), detrend="constant"|False,
+/// scaling="density"). Units: [u^2/Hz] — e.g. (rad/s)^2/Hz for gyro rates. Parseval: the sum
+/// of psd_k * df equals the mean over segments of sum (w x)^2 / sum w^2, the record's variance
+/// for a stationary signal.
+struct PowerSpectrum {
+  std::vector<double> f;    ///< [Hz] k * fs / L, k = 0..L/2
+  std::vector<double> psd;  ///< [u^2/Hz] one-sided density
+  double rate_hz = 0.0;     ///< [Hz] fs
+  double df = 0.0;          ///< [Hz] bin spacing fs / L
+  double enbw_hz = 0.0;     ///< [Hz] equivalent noise bandwidth of one bin, fs sum w^2 / (sum w)^2
+  std::size_t segment_length = 0;
+  std::size_t segments = 0;
+};
+
+/// Throws InputError for non-finite samples, a record shorter than the segment, rate <= 0, an
+/// overlap outside [0, 1), or a segment shorter than 2.
+PowerSpectrum welchPsd(const std::vector<double>& x, double rate_hz, const WelchOptions& options = {});
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,186 @@
+// CSV / gzip record loading: conversions, every kind of bad input, and the real ADIS16405 file.
+#include <catch2/catch.hpp>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "common/error.hpp"
+#include "errormodels/stats/record.hpp"
+
+using namespace sinsim::errormodels;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kG = 9.80665;
+
+/// Catches the InputError of parsing `text` and returns its message.
+std::string errorOf(const std::string& text, const RecordOptions& opt = {}) {
+  try {
+    parseRecord(text, "rec.csv", opt);
+  } catch (const sinsim::InputError& e) {
+    return e.what();
+  }
+  FAIL("no InputError for:\n" << text);
+  return {};
+}
+
+fs::path tempPath(const std::string& name) {
+  return fs::temp_directory_path() / ("sinsim_test_stats_" + std::to_string(::getpid()) + "_" + name);
+}
+
+}  // namespace
+
+TEST_CASE("record: columns, header units, options and conversion to SI", "[record]") {
+  const std::string text =
+      "# a comment line before the header\n"
+      "t [ms], gx, gy, gz, ax (g), ay (g), az (g), temp, counter\n"
+      "0, 1, 2, 3, 0, 0, -1, 25, 7\n"
+      "10, 1.5, -2e-1, +3, 0.5, 0, -1.0, 26.5, 8\r\n"
+      "20, 0, 0, 0, 0, 0, -1, 27, 9\n"
+      "\n";
+  RecordOptions opt;
+  opt.gyro_unit = "deg/s";
+  const Record r = parseRecord(text, "rec.csv", opt);
+  REQUIRE(r.size() == 3);
+  CHECK(r.rate_hz == Approx(100.0));  // 10 ms steps
+  CHECK(r.t[1] == Approx(0.010));
+  CHECK(r.gyro[0][1] == Approx(1.5 * kDeg));
+  CHECK(r.gyro[1][1] == Approx(-0.2 * kDeg));
+  CHECK(r.gyro[2][1] == Approx(3 * kDeg));  // leading '+'
+  CHECK(r.accel[0][1] == Approx(0.5 * kG));
+  CHECK(r.accel[2][0] == Approx(-kG));
+  CHECK(r.temperature[0] == Approx(298.15));  // degC -> K
+  REQUIRE(r.aux.size() == 1);
+  CHECK(r.aux[0].name == "counter");
+  CHECK(r.aux[0].values[2] == 9.0);
+  CHECK(r.irregular_count == 0);
+}
+
+TEST_CASE("record: no time column needs a rate; defaults are SI", "[record]") {
+  const std::string text = "gx,gy,gz\n0.1,0.2,0.3\n0.1,0.2,0.3\n";
+  CHECK_THAT(errorOf(text), Catch::Contains("no time column") && Catch::Contains("rec.csv"));
+  RecordOptions opt;
+  opt.rate_hz = 200.0;
+  const Record r = parseRecord(text, "rec.csv", opt);
+  CHECK(r.rate_hz == 200.0);
+  CHECK(r.gyro[1][0] == 0.2);  // rad/s by default: untouched
+  CHECK(r.t.empty());
+  CHECK_FALSE(r.hasAccel(0));
+  CHECK(r.duration() == Approx(0.01));
+}
+
+TEST_CASE("record: bad rows name the file and the line", "[record]") {
+  RecordOptions opt;
+  opt.rate_hz = 1.0;
+  const std::string head = "gx,gy,gz\n1,2,3\n";
+  CHECK_THAT(errorOf(head + "1,nan,3\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("\"gy\"") && Catch::Contains("nan"));
+  CHECK_THAT(errorOf(head + "1,abc,3\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("abc"));
+  CHECK_THAT(errorOf(head + "1,2\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("short row"));
+  CHECK_THAT(errorOf(head + "1,2,3,4\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("long row"));
+  CHECK_THAT(errorOf(head + "1,,3\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("empty field"));
+  CHECK_THAT(errorOf(head + "1,2,inf\n", opt), Catch::Contains("rec.csv:3"));
+  CHECK_THAT(errorOf(head + "1,2,3 4\n", opt), Catch::Contains("rec.csv:3"));
+  CHECK_THAT(errorOf(head + "\n1,2,3\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("empty row"));
+  CHECK_THAT(errorOf(head + "1,2,1e999\n", opt), Catch::Contains("rec.csv:3") && Catch::Contains("range"));
+  CHECK_THAT(errorOf("", opt), Catch::Contains("empty file"));
+  CHECK_THAT(errorOf("# only a comment\n\n", opt), Catch::Contains("empty file"));
+  CHECK_THAT(errorOf("gx,gy,gz\n", opt), Catch::Contains("rec.csv:1") && Catch::Contains("no data rows"));
+}
+
+TEST_CASE("record: header problems", "[record]") {
+  RecordOptions opt;
+  opt.rate_hz = 1.0;
+  CHECK_THAT(errorOf("gx,GX\n1,2\n", opt), Catch::Contains("same quantity"));
+  CHECK_THAT(errorOf("gx [m/s],gy\n1,2\n", opt), Catch::Contains("dimension"));
+  CHECK_THAT(errorOf("gx [furlong],gy\n1,2\n", opt), Catch::Contains("gx [furlong]"));
+  CHECK_THAT(errorOf("gx,,gz\n1,2,3\n", opt), Catch::Contains("no name"));
+  opt.gyro_unit = "rad/s";
+  CHECK_THAT(errorOf("gx [deg/s]\n1\n", opt), Catch::Contains("unit option"));
+  opt.gyro_unit = "m/s^2";
+  CHECK_THAT(errorOf("gx\n1\n", opt), Catch::Contains("dimension"));
+}
+
+TEST_CASE("record: irregular and gapped time stamps are reported, not resampled", "[record]") {
+  const std::string text = "t,gx\n0,0\n0.01,0\n0.02,0\n0.05,0\n0.06,0\n0.0705,0\n0.08,0\n";
+  const std::string msg = errorOf(text);
+  // One gap (line 5) and one late sample (line 7), which makes two off-nominal steps.
+  CHECK_THAT(msg, Catch::Contains("3 irregular") && Catch::Contains("line 5") &&
+                      Catch::Contains("gap") && Catch::Contains("line 7") && Catch::Contains("line 8"));
+  RecordOptions opt;
+  opt.allow_irregular_time = true;
+  const Record r = parseRecord(text, "rec.csv", opt);
+  CHECK(r.size() == 7);  // nothing inserted or dropped
+  CHECK(r.rate_hz == Approx(100.0));
+  REQUIRE(r.irregularities.size() == 3);
+  CHECK(r.irregularities[0].line == 5);
+  CHECK(r.irregularities[0].gap);
+  CHECK(r.irregularities[0].dt == Approx(0.03));
+  CHECK_FALSE(r.irregularities[1].gap);
+  CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.01,0\n"), Catch::Contains("rec.csv:4") && Catch::Contains("does not increase"));
+  RecordOptions wrong_rate;
+  wrong_rate.rate_hz = 50.0;
+  CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.02,0\n", wrong_rate), Catch::Contains("disagrees"));
+}
+
+TEST_CASE("record: gzip files are read directly; missing or truncated files are errors", "[record]") {
+  const std::string text = "gx,gy,gz,ax,ay,az\n0.05,-0.1,0,0.003,0,-1.016\n0.1,0,0,0,0,-1\n";
+  const fs::path gz = tempPath("rec.csv.gz");
+  {
+    gzFile f = gzopen(gz.string().c_str(), "wb");
+    REQUIRE(f != nullptr);
+    gzwrite(f, text.data(), static_cast<unsigned>(text.size()));
+    gzclose(f);
+  }
+  RecordOptions opt;
+  opt.rate_hz = 100;
+  opt.gyro_unit = "deg/s";
+  opt.accel_unit = "g";
+  const Record r = loadRecord(gz.string(), opt);
+  const Record p = parseRecord(text, "mem", opt);
+  CHECK(r.size() == 2);
+  CHECK(r.gyro[0] == p.gyro[0]);
+  CHECK(r.accel[2][0] == Approx(-1.016 * kG));
+  CHECK(r.source == gz.string());
+  // Truncated stream: zlib reports "unexpected end of file".
+  const auto size = fs::file_size(gz);
+  fs::resize_file(gz, size - 6);
+  CHECK_THROWS_AS(loadRecord(gz.string(), opt), sinsim::InputError);
+  fs::remove(gz);
+  CHECK_THAT([&] {
+    try {
+      loadRecord("/nonexistent/dir/x.csv", opt);
+    } catch (const sinsim::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  }(), Catch::Contains("/nonexistent/dir/x.csv") && Catch::Contains("cannot open"));
+}
+
+TEST_CASE("record: the ADIS16405 run 1 file", "[record][real]") {
+  // Data README: 1,000,000 rows, 100 Hz, deg/s and g; gyro means ~ +0.40 / -0.42 / -0.29 deg/s,
+  // z accel ~ -1.016 g. The means are quoted to 2 digits, hence +-0.01 deg/s and +-0.002 g.
+  RecordOptions opt;
+  opt.rate_hz = 100;
+  opt.gyro_unit = "deg/s";
+  opt.accel_unit = "g";
+  const Record r = loadRecord(std::string(SINSIM_SHARED_DIR) + "/data/adis16405/run1.csv.gz", opt);
+  REQUIRE(r.size() == 1000000);
+  CHECK(r.duration() == Approx(10000.0));
+  auto mean = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x;
+    return s / v.size();
+  };
+  CHECK(mean(r.gyro[0]) / kDeg == Approx(0.40).margin(0.01));
+  CHECK(mean(r.gyro[1]) / kDeg == Approx(-0.42).margin(0.01));
+  CHECK(mean(r.gyro[2]) / kDeg == Approx(-0.29).margin(0.01));
+  CHECK(mean(r.accel[2]) / kG == Approx(-1.016).margin(0.002));
+  CHECK(r.aux.empty());
+}

@@ -1,0 +1,131 @@
+// Autocorrelation and Welch PSD against closed forms, identities and statistical bounds.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "common/error.hpp"
+#include "errormodels/stats/spectrum.hpp"
+
+using namespace sinsim::errormodels;
+
+TEST_CASE("FFT autocorrelation equals the direct sum (no circular wrap)", "[acf]") {
+  std::mt19937_64 rng(11);  // stream "acf-fft"
+  std::normal_distribution<double> g(3.0, 2.0);
+  for (std::size_t n : {2u, 7u, 1000u, 4097u}) {
+    std::vector<double> x(n);
+    for (auto& v : x) v = g(rng);
+    const std::size_t lags = n - 1;  // every lag, including the last with a single product
+    const Autocorrelation d = autocorrelation(x, 50.0, lags, AcfScaling::Biased, AcfMethod::Direct);
+    const Autocorrelation f = autocorrelation(x, 50.0, lags, AcfScaling::Biased, AcfMethod::Fft);
+    // FFT round-off: ~eps log2(L) r(0) per lag; 1e-12 r(0) leaves a factor > 100 of margin,
+    // while a wrapped (unpadded) correlation errs by O(r(0)) at the large lags.
+    for (std::size_t k = 0; k <= lags; ++k) CHECK(std::abs(d.r[k] - f.r[k]) <= 1e-12 * d.r[0]);
+    CHECK(d.lag[1] == Approx(0.02));
+  }
+}
+
+TEST_CASE("ACF of an AR(1) record follows phi^k within Bartlett's bound", "[acf]") {
+  // x_n = phi x_{n-1} + e_n has rho(k) = phi^k. Bartlett's formula for AR(1):
+  // var r_k ~ [(1 + phi^2)(1 - phi^2k) / (1 - phi^2) - 2 k phi^2k] / N; 4 sd per lag over 20
+  // lags keeps the family-wise false-alarm rate < 0.2 %. The biased estimator's -k/N rho_k
+  // bias (< 1e-4 here) is far inside.
+  const double phi = 0.9;
+  const std::size_t n = 200000;
+  std::mt19937_64 rng(12);  // stream "acf-ar1"
+  std::normal_distribution<double> g;
+  std::vector<double> x(n);
+  double s = 0;
+  for (std::size_t i = 0; i < 1000; ++i) s = phi * s + g(rng);  // burn-in to stationarity
+  for (auto& v : x) v = s = phi * s + g(rng);
+  const Autocorrelation a = autocorrelation(x, 1.0, 200);  // FFT path
+  CHECK(a.r[0] == 1.0);
+  CHECK(a.variance == Approx(1.0 / (1 - phi * phi)).epsilon(0.05));  // 3.5 sd of the variance
+  for (int k = 1; k <= 20; ++k) {
+    const double p2k = std::pow(phi, 2 * k);
+    const double var = ((1 + phi * phi) * (1 - p2k) / (1 - phi * phi) - 2 * k * p2k) / n;
+    CHECK(std::abs(a.r[k] - std::pow(phi, k)) <= 4 * std::sqrt(var));
+  }
+}
+
+TEST_CASE("autocorrelation bad input", "[acf]") {
+  CHECK_THROWS_AS(autocorrelation({1.0}, 1.0, 0), sinsim::InputError);
+  CHECK_THROWS_AS(autocorrelation({1.0, 2.0}, 1.0, 2), sinsim::InputError);
+  CHECK_THROWS_AS(autocorrelation({1.0, 1.0, 1.0}, 1.0, 1), sinsim::InputError);  // constant
+  CHECK_THROWS_AS(autocorrelation({1.0, INFINITY, 1.0}, 1.0, 1), sinsim::InputError);
+  CHECK_THROWS_AS(autocorrelation({1.0, 2.0, 1.0}, -1.0, 1), sinsim::InputError);
+}
+
+TEST_CASE("Welch PSD: Parseval identity and white-noise level", "[psd]") {
+  // White noise of sd 2 at 100 Hz: the one-sided density is 2 sigma^2 / fs = 0.08 u^2/Hz.
+  const double fs = 100.0, sigma = 2.0;
+  const std::size_t n = 1 << 18;
+  std::mt19937_64 rng(13);  // stream "psd-white"
+  std::normal_distribution<double> g(5.0, sigma);
+  std::vector<double> x(n);
+  for (auto& v : x) v = g(rng);
+  WelchOptions opt;
+  opt.segment_length = 1024;
+  const PowerSpectrum p = welchPsd(x, fs, opt);
+  REQUIRE(p.segments == (n - 1024) / 512 + 1);
+  REQUIRE(p.f.size() == 513);
+  CHECK(p.f.back() == Approx(fs / 2));
+  CHECK(p.enbw_hz == Approx(1.5 * fs / 1024).epsilon(1e-12));  // Hann: 1.5 bins
+  // Parseval, an identity: sum psd df = mean over segments of sum (w (x - mean))^2 / sum w^2.
+  double integral = 0;
+  for (double v : p.psd) integral += v * p.df;
+  double expect = 0;
+  std::vector<double> w(1024);
+  double sw2 = 0;
+  for (std::size_t i = 0; i < 1024; ++i) {
+    w[i] = 0.5 - 0.5 * std::cos(2 * M_PI * i / 1024.0);
+    sw2 += w[i] * w[i];
+  }
+  for (std::size_t s = 0; s < p.segments; ++s) {
+    double mean = 0;
+    for (std::size_t i = 0; i < 1024; ++i) mean += x[s * 512 + i];
+    mean /= 1024;
+    double e = 0;
+    for (std::size_t i = 0; i < 1024; ++i) e += std::pow(w[i] * (x[s * 512 + i] - mean), 2);
+    expect += e / sw2;
+  }
+  expect /= p.segments;
+  CHECK(integral == Approx(expect).epsilon(1e-12));  // rounding of ~1e6 terms
+  // ... and that is the variance: 511 segments of ~1024 samples, Hann-weighted, give a relative
+  // standard error ~ sqrt(2 / (511 * 1024 / 1.9)) = 0.3 %; 1.5 % is 5 sd.
+  CHECK(integral == Approx(sigma * sigma).epsilon(0.015));
+  // Level: mean over bins 1..511 of a chi2 average; relative sd ~ 0.3 %, 1.5 % = 5 sd.
+  double level = 0;
+  for (std::size_t k = 1; k < 512; ++k) level += p.psd[k];
+  level /= 511;
+  CHECK(level == Approx(2 * sigma * sigma / fs).epsilon(0.015));
+}
+
+TEST_CASE("Welch PSD: a bin-centred sinusoid puts A^2/2 into three bins", "[psd]") {
+  // x = A cos(2 pi k0 n / L): the periodic Hann spectrum of a bin-centred tone has exactly the
+  // bins k0 - 1, k0, k0 + 1 (weights 1/4, 1/2, 1/4 in amplitude), so their integral is A^2/2 to
+  // rounding and every other bin is zero to rounding.
+  const std::size_t len = 256, k0 = 20;
+  const double fs = 50.0, amp = 3.0;
+  std::vector<double> x(len * 16);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = amp * std::cos(2 * M_PI * k0 * i / len);
+  WelchOptions opt;
+  opt.segment_length = len;
+  const PowerSpectrum p = welchPsd(x, fs, opt);
+  const double peak = (p.psd[k0 - 1] + p.psd[k0] + p.psd[k0 + 1]) * p.df;
+  CHECK(peak == Approx(amp * amp / 2).epsilon(1e-12));
+  CHECK(p.f[k0] == Approx(k0 * fs / len));
+  for (std::size_t k = 0; k < p.psd.size(); ++k) {
+    if (k + 1 < k0 || k > k0 + 1) CHECK(p.psd[k] <= 1e-20 * p.psd[k0]);
+  }
+}
+
+TEST_CASE("Welch PSD bad input and defaults", "[psd]") {
+  CHECK_THROWS_AS(welchPsd(std::vector<double>(10, 1.0), 1.0, WelchOptions{64, 0.5, true}), sinsim::InputError);
+  CHECK_THROWS_AS(welchPsd(std::vector<double>(100, 1.0), 1.0, WelchOptions{16, 1.0, true}), sinsim::InputError);
+  CHECK_THROWS_AS(welchPsd(std::vector<double>(100, 1.0), 0.0), sinsim::InputError);
+  const PowerSpectrum p = welchPsd(std::vector<double>(100000, 1.0), 1.0);
+  CHECK(p.segment_length == 8192);  // largest power of two <= N / 8
+  for (double v : p.psd) CHECK(v == 0.0);  // a constant has no power once its mean is removed
+}
