@@ -11,6 +11,6 @@ namespace sinsim::cli {
 using Action = std::function<int()>;
 
 // One line per subcommand (add yours here and in main.cpp).
-// void addRunCommand(CLI::App& app, Action& action);
+void addRunCommand(CLI::App& app, Action& action);  // cmd_run.cpp
 
 }  // namespace sinsim::cli

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
   sinsim::cli::Action action;
   // Subcommand registrations go here.
+  sinsim::cli::addRunCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
