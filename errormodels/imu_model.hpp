@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +45,8 @@ class ImuErrorModel {
   /// Reads a model from a node of an already opened file (a scenario's inline `errors:` block);
   /// problems are recorded in that file's diagnostics.
   static ImuErrorModel parse(const ConfigNode& node);
+  /// Parses model text as if read from the named file (tests, generated models).
+  static ImuErrorModel fromString(const std::string& text, const std::string& name);
 
   bool empty() const;
   /// Does any effect need a temperature profile?
@@ -52,6 +55,10 @@ class ImuErrorModel {
   std::vector<std::string> effectNames() const;
   /// Where the model came from (file name or "inline"), for reports.
   const std::string& source() const { return source_; }
+  /// The same model keeping only the effects whose name passes `keep` (error budgets: switch
+  /// effects off one at a time). Random streams are unchanged: the kept effects draw exactly the
+  /// numbers they draw in the full model.
+  ImuErrorModel filtered(const std::function<bool(const std::string&)>& keep) const;
 
   /// A realisation for an IMU at imuRate [Hz]. Throws InputError when the model cannot run at
   /// that rate (e.g. a stochastic process defined at a rate slower than the IMU).

@@ -1,0 +1,74 @@
+// `white`: white noise on the sensor output.
+//   density: 0.2 deg/sqrt(h)    noise density N (= ARW/VRW; signal·sqrt(time), e.g. deg/s/sqrt(Hz))
+//   or sigma: 0.6 deg/s, rate: 1 kHz     per-sample standard deviation at a stated sample rate
+//   rate (optional with density): generate at that rate instead of as a continuous process
+//
+// Without a rate the noise is continuous white noise with autocovariance N²·δ(τ) (so that the Allan
+// variance is N²/τ, IEEE Std 952-1997 Annex C, angle/velocity random walk); its exact integral over
+// an interval of length dt is N·sqrt(dt)·w, w ~ N(0,1). The rate output dtheta/dt then has standard
+// deviation N/sqrt(dt): it grows with the output rate, as it must. With a rate f the process is a
+// discrete sequence of standard deviation sigma = N·sqrt(f) held over each 1/f and integrated into
+// the IMU intervals; both forms have the same low-frequency density N = sigma/sqrt(f).
+#include "errormodels/held_process.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+class ContinuousWhite final : public AxisErrorState {
+ public:
+  ContinuousWhite(int axis, double density, NormalStream s)
+      : AxisErrorState(axis), n_(density), s_(s) {}
+  double integral(const Interval& iv) override { return n_ * std::sqrt(iv.dt) * s_.next(); }
+
+ private:
+  double n_;  // [signal·sqrt(s)]
+  NormalStream s_;
+};
+
+class DiscreteWhite final : public HeldProcessState {
+ public:
+  DiscreteWhite(int axis, double rate, double sigma, NormalStream s)
+      : HeldProcessState(axis, rate), sigma_(sigma), s_(s) {}
+
+ protected:
+  double next() override { return sigma_ * s_.next(); }
+
+ private:
+  double sigma_;  // [signal]
+  NormalStream s_;
+};
+
+class White final : public Effect {
+ public:
+  White(double density, double rate) : density_(density), rate_(rate) {}
+  std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
+    if (std::isnan(rate_)) return std::make_unique<ContinuousWhite>(ctx.site->axis, density_, ctx.stream());
+    requireRateAtLeastImu(rate_, ctx);
+    return std::make_unique<DiscreteWhite>(ctx.site->axis, rate_, density_ * std::sqrt(rate_),
+                                           ctx.stream());
+  }
+
+ private:
+  double density_;  // N [signal·sqrt(s)]
+  double rate_;     // [Hz] or NaN for continuous
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> parseEffect_white(const ConfigNode& node, const EffectSite& site) {
+  node.allowKeys({"type", "enabled", "density", "sigma", "rate"});
+  const Dimension densityDim = site.signal() * Dimension::time().sqrt();
+  exactlyOne(node, {"density", "sigma"});
+  double rate = optionalPositive(node, "rate", Dimension::frequency());
+  double density = NAN;
+  if (node.has("density")) density = positiveQuantity(node, "density", densityDim);
+  if (node.has("sigma")) {
+    double sigma = positiveQuantity(node, "sigma", site.signal());
+    if (!node.has("rate"))
+      node.error("missing key rate: a per-sample sigma needs the sample rate it holds at");
+    density = sigma / std::sqrt(rate);
+  }
+  return std::make_unique<White>(density, rate);
+}
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,57 @@
+// A discrete-time process generated at its own rate and held over each of its sample periods
+// (zero-order hold), integrated exactly over each IMU interval — what a real IMU does when its
+// internal sensor rate is faster than its output rate and it outputs integrated increments.
+// Works for any ratio of process rate to IMU rate ≥ 1 (integer or not); slower processes are
+// refused at instantiation (requireRateAtLeastImu), because holding one value across several IMU
+// intervals would invent a correlation the model does not have.
+#pragma once
+
+#include "errormodels/effect.hpp"
+
+namespace sinsim::errormodels {
+
+class HeldProcessState : public AxisErrorState {
+ public:
+  /// rate [Hz] of the process samples.
+  HeldProcessState(int axis, double rate) : AxisErrorState(axis), h_(1.0 / rate) {}
+
+  double integral(const Interval& iv) final {
+    if (!started_) {
+      start_ = iv.t0;
+      y_ = next();
+      started_ = true;
+    }
+    // Times relative to the first interval's start; sample k holds over [k h, (k+1) h).
+    const double b = iv.t1 - start_;
+    const double eps = 1e-6 * h_;  // edges closer than this coincide (rounding of t, not physics)
+    double t = iv.t0 - start_;
+    double acc = 0.0;
+    for (;;) {
+      const double edge = double(k_ + 1) * h_;
+      if (edge > b + eps) return acc + y_ * (b - t);
+      if (edge >= b - eps) {
+        acc += y_ * (b - t);
+        ++k_;
+        y_ = next();
+        return acc;
+      }
+      acc += y_ * (edge - t);
+      t = edge;
+      ++k_;
+      y_ = next();
+    }
+  }
+
+ protected:
+  /// The next process sample [signal units, SI].
+  virtual double next() = 0;
+
+ private:
+  double h_;
+  double start_ = 0.0;
+  std::uint64_t k_ = 0;
+  double y_ = 0.0;
+  bool started_ = false;
+};
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,77 @@
+// Counter-based Gaussian streams (Random123 Philox4x64-10 + Box-Muller; Salmon et al., "Parallel
+// random numbers: as easy as 1, 2, 3", SC'11). There is no global generator and nothing is seeded
+// from time: a stream is a pure function of (seed, run, stream id) and the position in it, so run k
+// of a Monte Carlo batch can be regenerated alone, and results do not depend on thread count.
+//
+// Key   = {seed, run}                        (128 bits)
+// Count = {block, stream id, 0, 0}           (block = index of the 4-normal block in the stream)
+// stream id packs (sensor, axis, effect index, sub-stream) — see streamId().
+#pragma once
+
+#include <Random123/boxmuller.hpp>
+#include <Random123/philox.h>
+
+#include <array>
+#include <cstdint>
+
+namespace sinsim::errormodels {
+
+/// Packs the identity of one random stream: sensor (0 gyro, 1 accel), axis (0..2, 3 = triad),
+/// effect index in its list, and a sub-stream for effects that need several (e.g. one per GM
+/// component of bias_instability, or the turn-on draw of a bias).
+constexpr std::uint64_t streamId(unsigned sensor, unsigned axis, unsigned effect, unsigned sub = 0) {
+  return (std::uint64_t(sensor & 0xffu) << 56) | (std::uint64_t(axis & 0xffu) << 48) |
+         (std::uint64_t(effect & 0xffffu) << 32) | std::uint64_t(sub);
+}
+
+/// A stream of independent N(0, 1) draws, produced in blocks of kBlock.
+class NormalStream {
+ public:
+  static constexpr int kBlock = 64;  // normals per refill (16 Philox calls)
+
+  NormalStream() = default;
+  NormalStream(std::uint64_t seed, std::uint64_t run, std::uint64_t stream) {
+    key_ = {{seed, run}};
+    stream_ = stream;
+  }
+
+  double next() {
+    if (pos_ == kBlock) refill();
+    return buf_[pos_++];
+  }
+
+  /// The n-th normal of the stream (random access, for tests and regeneration).
+  static double at(std::uint64_t seed, std::uint64_t run, std::uint64_t stream, std::uint64_t n) {
+    Philox::ctr_type c = {{n / 4, stream, 0, 0}};
+    Philox::key_type k = {{seed, run}};
+    Philox::ctr_type r = Philox()(c, k);
+    r123::double2 p = r123::boxmuller(r.v[(n % 4) / 2 * 2], r.v[(n % 4) / 2 * 2 + 1]);
+    return (n % 2) == 0 ? p.x : p.y;
+  }
+
+ private:
+  using Philox = r123::Philox4x64;
+
+  void refill() {
+    Philox gen;
+    for (int b = 0; b < kBlock / 4; ++b) {
+      Philox::ctr_type c = {{block_++, stream_, 0, 0}};
+      Philox::ctr_type r = gen(c, key_);
+      r123::double2 p0 = r123::boxmuller(r.v[0], r.v[1]);
+      r123::double2 p1 = r123::boxmuller(r.v[2], r.v[3]);
+      buf_[4 * b + 0] = p0.x;
+      buf_[4 * b + 1] = p0.y;
+      buf_[4 * b + 2] = p1.x;
+      buf_[4 * b + 3] = p1.y;
+    }
+    pos_ = 0;
+  }
+
+  Philox::key_type key_ = {{0, 0}};
+  std::uint64_t stream_ = 0;
+  std::uint64_t block_ = 0;
+  int pos_ = kBlock;
+  std::array<double, kBlock> buf_{};
+};
+
+}  // namespace sinsim::errormodels
