@@ -30,6 +30,22 @@ Quat quatFromRotationVector(const Vec3& phi) {
   return Quat(c, s * phi.x(), s * phi.y(), s * phi.z());
 }
 
+Quat quatDeltaFromRotationVector(const Vec3& phi) {
+  const double th2 = phi.squaredNorm();
+  double cm1, s;  // cos(θ/2) - 1, sin(θ/2)/θ
+  if (th2 < 1e-8) {
+    // Same series as quatFromRotationVector, without its leading 1.
+    cm1 = -th2 / 8.0 + th2 * th2 / 384.0;
+    s = 0.5 - th2 / 48.0 + th2 * th2 / 3840.0;
+  } else {
+    const double th = std::sqrt(th2);
+    const double s4 = std::sin(0.25 * th);
+    cm1 = -2.0 * s4 * s4;  // cos x - 1 = -2 sin²(x/2)
+    s = std::sin(0.5 * th) / th;
+  }
+  return Quat(cm1, s * phi.x(), s * phi.y(), s * phi.z());
+}
+
 Vec3 rotationVectorFromQuat(const Quat& qin) {
   Quat q = qin.w() < 0.0 ? Quat(-qin.w(), -qin.x(), -qin.y(), -qin.z()) : qin;
   const Vec3 v = q.vec();
@@ -41,19 +57,30 @@ Vec3 rotationVectorFromQuat(const Quat& qin) {
 }
 
 Vec3 eulerFromDcm(const Mat3& C) {
-  // C_nb = Rz(ψ)Ry(θ)Rx(φ): C(2,0) = -sin θ, C(2,1) = sin φ cos θ, C(2,2) = cos φ cos θ,
-  // C(1,0) = sin ψ cos θ, C(0,0) = cos ψ cos θ (Titterton & Weston 2004, eq. 3.47).
-  const double sp = -C(2, 0);
-  if (std::abs(sp) > 1.0 - 1e-12) {
-    // Gimbal lock: only ψ ∓ φ is defined; put it all in yaw.
-    const double pitch = std::copysign(kPi / 2.0, sp);
-    const double yaw = std::atan2(-C(0, 1), C(1, 1));
-    return Vec3(0.0, pitch, wrapAngle(yaw));
+  // C_nb = Rz(ψ)Ry(θ)Rx(φ): C(2,0) = -sin θ, C(1,0) = sin ψ cos θ, C(0,0) = cos ψ cos θ,
+  // C(2,1) = sin φ cos θ, C(2,2) = cos φ cos θ (Titterton & Weston 2004, eq. 3.47).
+  // Yaw first, from the first column; then roll and pitch from R = Rz(-ψ) C = Ry(θ)Rx(φ), whose
+  // entries R(1,1) = cos φ, R(1,2) = -sin φ, R(0,0) = cos θ ≥ 0 are O(1) at every pitch. Near
+  // ±90° pitch ψ is ill-conditioned, but any error in it passes into φ as the one combination
+  // ψ ∓ φ that C defines, so Rz(ψ)Ry(θ)Rx(φ) reproduces C to rounding at every attitude.
+  double yaw;
+  const double cp = std::hypot(C(0, 0), C(1, 0));  // cos θ ≥ 0
+  const bool locked = cp < 1e-14;
+  if (locked) {
+    // Gimbal lock (at the rounding level): only ψ ∓ φ is defined; put it all in yaw, roll = 0.
+    // At θ = +90°: C(0,1) = sin(φ - ψ), C(1,1) = cos(φ - ψ); at θ = -90°: C(0,1) = -sin(φ + ψ),
+    // C(1,1) = cos(φ + ψ). So atan2(-C(0,1), C(1,1)) = ψ ∓ φ.
+    yaw = std::atan2(-C(0, 1), C(1, 1));
+  } else {
+    yaw = std::atan2(C(1, 0), C(0, 0));
   }
-  const double roll = std::atan2(C(2, 1), C(2, 2));
-  const double pitch = std::atan2(sp, std::hypot(C(2, 1), C(2, 2)));
-  const double yaw = std::atan2(C(1, 0), C(0, 0));
-  return Vec3(roll, pitch, yaw);
+  const double cy = std::cos(yaw), sy = std::sin(yaw);
+  const double R00 = cy * C(0, 0) + sy * C(1, 0);
+  const double R11 = -sy * C(0, 1) + cy * C(1, 1);
+  const double R12 = -sy * C(0, 2) + cy * C(1, 2);
+  const double roll = locked ? 0.0 : std::atan2(-R12, R11);
+  const double pitch = std::atan2(-C(2, 0), R00);
+  return Vec3(wrapAngle(roll), pitch, wrapAngle(yaw));
 }
 
 Vec3 eulerFromQuat(const Quat& q_nb) { return eulerFromDcm(q_nb.toRotationMatrix()); }

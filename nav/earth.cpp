@@ -31,20 +31,33 @@ Vec3 Earth::gravity_n(double lat, double h) const {
   return Vec3(gammay, 0.0, -gammaz);
 }
 
-Vec3 Earth::omega_ie_n(double lat) const {
-  return Vec3(omega_ * std::cos(lat), 0.0, -omega_ * std::sin(lat));
-}
-
 Vec3 Earth::omega_en_n(double lat, double h, const Vec3& v_n) const {
   double M = 0.0, N = 0.0;
   radii(lat, M, N);
-  return Vec3(v_n.y() / (N + h), -v_n.x() / (M + h), -v_n.y() * std::tan(lat) / (N + h));
+  return omega_en_n(M, N, h, std::tan(lat), v_n);
 }
 
 double Earth::schulerFrequency(double lat) const {
   double M = 0.0, N = 0.0;
   radii(lat, M, N);
   return std::sqrt(-gravity_n(lat, 0.0).z() / std::sqrt(M * N));
+}
+
+}  // namespace sinsim::nav
+
+namespace sinsim::nav {
+
+void LocalGravity::reanchor(double lat, double h) {
+  // Central differences: steps keep the truncation (f''' δ²/6) and the rounding (≈ 1e-15 g/δ)
+  // of each derivative far below what the expansion box needs (see earth.hpp).
+  constexpr double dLat = 1e-5;  // [rad]
+  constexpr double dH = 10.0;    // [m]
+  lat0_ = lat;
+  h0_ = h;
+  g0_n_ = earth_->gravity_n(lat, h);
+  dg_dlat_ = (earth_->gravity_n(lat + dLat, h) - earth_->gravity_n(lat - dLat, h)) / (2.0 * dLat);
+  dg_dh_ = (earth_->gravity_n(lat, h + dH) - earth_->gravity_n(lat, h - dH)) / (2.0 * dH);
+  ++reanchors_;
 }
 
 }  // namespace sinsim::nav
