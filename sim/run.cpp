@@ -132,6 +132,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     sumH2 += e.horizontal() * e.horizontal();
     sumV2 += e.vertical() * e.vertical();
     ++rows;
+    if (opt.onRow) opt.onRow(e);
     if (out) {
       writeState(fTruth, imu.truth());
       writeState(fNav, strapdown.state());

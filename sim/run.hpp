@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <cmath>
 #include <string>
@@ -12,17 +13,6 @@
 
 namespace sinsim::sim {
 
-struct RunOptions {
-  /// Output folder; empty: compute only, write nothing. Created (with parents) only after the
-  /// scenario, the model and its instantiation have been validated.
-  std::string outDir;
-  /// Overrides the scenario's seed (`--seed`). Default when neither gives one: 0.
-  std::optional<std::uint64_t> seed;
-  /// Overrides the scenario's error model (`--model`): "none" or a model file path.
-  std::optional<std::string> model;
-  /// Monte Carlo run index (the realisation of the error model), 0 for a single run.
-  std::uint64_t runIndex = 0;
-};
 
 /// Navigation error of one epoch: nav minus truth.
 struct NavError {
@@ -39,6 +29,21 @@ struct NavError {
 /// exact to O(δ²/R), < 1 µm for errors below 100 m). Attitude as wrapped Euler differences
 /// (meaningless near pitch ±90°, where the Euler angles themselves are).
 NavError navError(const nav::Earth& earth, const nav::NavState& nav, const nav::NavState& truth);
+
+struct RunOptions {
+  /// Output folder; empty: compute only, write nothing. Created (with parents) only after the
+  /// scenario, the model and its instantiation have been validated.
+  std::string outDir;
+  /// Overrides the scenario's seed (`--seed`). Default when neither gives one: 0.
+  std::optional<std::uint64_t> seed;
+  /// Overrides the scenario's error model (`--model`): "none" or a model file path.
+  std::optional<std::string> model;
+  /// Monte Carlo run index (the realisation of the error model), 0 for a single run.
+  std::uint64_t runIndex = 0;
+  /// Called with the error of every output row (t = 0 and every 1/outputRate s), in time order,
+  /// whether or not files are written: for statistics without CSV round trips.
+  std::function<void(const NavError&)> onRow;
+};
 
 struct RunSummary {
   std::string scenario;     // name
