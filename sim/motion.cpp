@@ -94,8 +94,18 @@ std::string planSegment(Segment& seg, PlanCursor& c) {
 MotionProfile::MotionProfile(const MotionStart& start, std::vector<Segment> segments)
     : start_(start), segments_(std::move(segments)) {
   ends_.reserve(segments_.size());
-  for (const auto& s : segments_) ends_.push_back(s.t1());
+  for (const auto& s : segments_) {
+    ends_.push_back(s.t1());
+    if (s.kind == SegmentKind::Pitch || s.kind == SegmentKind::Roll)
+      knots_.push_back(s.t0 + 0.5 * s.duration);
+    knots_.push_back(s.t1());
+  }
   duration_ = ends_.empty() ? 0.0 : ends_.back();
+}
+
+double MotionProfile::nextKnot(double t) const {
+  const auto it = std::upper_bound(knots_.begin(), knots_.end(), t);
+  return it == knots_.end() ? INFINITY : *it;
 }
 
 MotionPoint MotionProfile::at(double t) const {

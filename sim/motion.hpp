@@ -82,6 +82,12 @@ class MotionProfile {
   /// state). Cost O(log #segments).
   MotionPoint at(double t) const;
 
+  /// The first knot strictly after t [s], or +inf. Knots are the instants where the motion's
+  /// third derivatives (angular acceleration, jerk) may jump: segment boundaries and the turning
+  /// points of excursions. Between knots every profile is analytic, so an integrator that steps
+  /// on the knots keeps its full order (one that steps across them drops to O(h²) there).
+  double nextKnot(double t) const;
+
   double duration() const { return duration_; }  // [s]
   const MotionStart& start() const { return start_; }
   const std::vector<Segment>& segments() const { return segments_; }
@@ -89,7 +95,8 @@ class MotionProfile {
  private:
   MotionStart start_;
   std::vector<Segment> segments_;
-  std::vector<double> ends_;  // t1 of each segment, for the lookup
+  std::vector<double> ends_;   // t1 of each segment, for the lookup
+  std::vector<double> knots_;  // sorted, see nextKnot
   double duration_ = 0.0;
 };
 

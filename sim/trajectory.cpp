@@ -39,7 +39,7 @@ Kinematics Trajectory::at(double t, double lat, double lon, double h) const {
   double M = 0.0, N = 0.0;
   earth_.radii(lat, M, N);
   k.posRate = nav::Vec3(m.v_n.x() / (M + h), m.v_n.y() / ((N + h) * std::cos(lat)), -m.v_n.z());
-  const nav::Vec3 omega_en_n = earth_.omega_en_n(lat, h, m.v_n);
+  const nav::Vec3 omega_en_n = nav::Earth::omega_en_n(M, N, h, std::tan(lat), m.v_n);
   const nav::Vec3 omega_ie_n = earth_.omega_ie_n(lat);
   k.g_n = earth_.gravity_n(lat, h);
 

@@ -242,3 +242,36 @@ segments:
   CHECK(worstRatioF <= 1.0);
   CHECK(worstRatioW <= 1.0);
 }
+
+TEST_CASE("increments converge: 10 ms and 0.5 ms integration steps agree to RK4's bound") {
+  // The limit h → 0 is the exact integral; RK4 between knots has local error
+  // h^5/2880·max|x⁗| (Simpson's rule for the pure quadratures). Fastest motion here: the pitch
+  // excursion of A = 15° in T = 4 s, ω ≈ 4A/T = 0.26 rad/s with derivatives growing by
+  // 2π/(T/2) = π s^-1 each: |ω⁗| ≈ 0.26·π^4 ≈ 25 rad/s^5 → 1e-10/2880·25 ≈ 9e-13 rad per
+  // 10 ms step; the specific force turns with it, |f⁗| ≈ g·|ω⁗| ≈ 250 → 9e-12 m/s.
+  // Bounds: 3× these. A step across a knot (segment boundary, excursion turning point, here at
+  // odd instants to land inside IMU intervals) would leave O(h²·Δω̇) ≈ 1e-8 instead.
+  const sim::Scenario sc = sim::parseScenario(R"(
+start: {latitude: 10 deg, longitude: 10 deg, height: 1000 m, speed: 80 m/s}
+imu_rate: 100 Hz
+segments:
+  - {type: accelerate, speed: 100 m/s, duration: 4.005 s}
+  - {type: turn, heading_change: 60 deg, bank: auto, duration: 10.003 s}
+  - {type: climb, height_change: 200 m, duration: 20 s}
+  - {type: pitch, angle: 15 deg, duration: 4.0071 s}
+  - {type: roll, angle: -30 deg, duration: 4 s}
+  - {type: descend, height: 1000 m, duration: 20.002 s}
+)", "knots.yaml");
+  const nav::Earth earth;
+  const sim::Trajectory traj(earth, sc.motion());
+  sim::IdealImu coarse(traj, sc.imuRate, 0.01), fine(traj, sc.imuRate, 0.0005);
+  double worstV = 0.0, worstT = 0.0;
+  while (!coarse.done()) {
+    const nav::ImuSample a = coarse.next(), b = fine.next();
+    worstV = std::max(worstV, (a.dv_b - b.dv_b).norm());
+    worstT = std::max(worstT, (a.dtheta_b - b.dtheta_b).norm());
+  }
+  INFO("largest differences: dv " << worstV << " m/s, dtheta " << worstT << " rad");
+  CHECK(worstV < 3e-11);
+  CHECK(worstT < 3e-12);
+}
