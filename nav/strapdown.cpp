@@ -29,7 +29,7 @@ bool finiteState(const NavState& s) {
 }  // namespace
 
 Strapdown::Strapdown(const Earth& earth, const NavState& initial, const StrapdownOptions& options)
-    : earth_(earth), state_(initial), options_(options), gravity_(earth) {
+    : earth_(&earth), state_(initial), options_(options), local_(earth) {
   if (!finiteState(initial))
     throw InputError("strapdown: initial state must be finite with a non-zero attitude quaternion");
   if (!(std::abs(initial.lat) < 0.5 * 3.14159265358979323846))
@@ -42,19 +42,17 @@ Strapdown::Strapdown(const Earth& earth, const NavState& initial, const Strapdow
   tau_ = options.dampingTimeConstant;
   k1_ = 2.0 / tau_;
   // Gravity minus Coriolis at the start, for the first midpoint extrapolation.
-  double M = 0.0, N = 0.0;
-  earth_.radii(state_.lat, M, N);
-  const Vec3 w_ie = earth_.omega_ie_n(state_.lat);
-  const Vec3 w_en = Earth::omega_en_n(M, N, state_.h, std::tan(state_.lat), state_.v_n);
-  gcc_n_ = gravity_.at(state_.lat, state_.h) - (2.0 * w_ie + w_en).cross(state_.v_n);
-  M_ = M;
-  N_ = N;
+  const EarthPoint& e = local_.at(state_.lat, state_.h);
+  const Vec3 w_ie = earth_->omega_ie_n(e.sinLat, e.cosLat);
+  const Vec3 w_en = Earth::omega_en_n(e.M, e.N, state_.h, e.sinLat / e.cosLat, state_.v_n);
+  gcc_n_ = e.g_n - (2.0 * w_ie + w_en).cross(state_.v_n);
+  M_ = e.M;
   hRefPrev_ = state_.h;
 }
 
 double Strapdown::dampingGainK2() const {
   // ω_v² = -∂g_D/∂h from GeographicLib (≈ 2g/R = 3.1e-6 s^-2).
-  return 1.0 / (tau_ * tau_) - gravity_.dgdh().z();
+  return 1.0 / (tau_ * tau_) - local_.dgdh().z();
 }
 
 void Strapdown::update(const ImuSample& imu, double hRef) {
@@ -84,13 +82,13 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
   }
   const double lat_mid = state_.lat + 0.25 * dt * (v0.x() + v_mid.x()) / (M_ + h0);
 
-  // 2. Earth at the midpoint, once per step.
-  earth_.radii(lat_mid, M_, N_);
-  const double sinLat = std::sin(lat_mid), cosLat = std::cos(lat_mid);
-  const Vec3 w_ie = earth_.omega_ie_n(sinLat, cosLat);
-  const Vec3 w_en = Earth::omega_en_n(M_, N_, h_mid, sinLat / cosLat, v_mid);
+  // 2. Earth at the midpoint, once per step (LocalEarth: GeographicLib values, earth.hpp).
+  const EarthPoint& e = local_.at(lat_mid, h_mid);
+  const double cosLat = e.cosLat;
+  const Vec3 w_ie = earth_->omega_ie_n(e.sinLat, cosLat);
+  const Vec3 w_en = Earth::omega_en_n(e.M, e.N, h_mid, e.sinLat / cosLat, v_mid);
   const Vec3 zeta = (w_ie + w_en) * dt;  // nav-frame rotation over the interval [rad]
-  const Vec3& g_n = gravity_.at(lat_mid, h_mid);
+  M_ = e.M;
 
   // 3. Body-frame increments (two-sample forms; the first step uses the one-sample forms).
   const Vec3 phi_b = rotationVectorTwoSample(prevDtheta_b_, imu.dtheta_b);
@@ -101,7 +99,7 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
   //    the first-order nav-frame rotation -½ ζ × (·); gravity and Coriolis at the midpoint.
   const Vec3 dvSF_n0 = C_nb * dvSF_b;
   const Vec3 dvSF_n = dvSF_n0 - 0.5 * zeta.cross(dvSF_n0);
-  gcc_n_ = g_n - (2.0 * w_ie + w_en).cross(v_mid);
+  gcc_n_ = e.g_n - (2.0 * w_ie + w_en).cross(v_mid);
   Vec3 v1 = v0 + dvSF_n + gcc_n_ * dt;
 
   // 5. Position: trapezoid on velocity (PSINS Mpvvn = Mpv·(vn + vn1)/2), radii at the midpoint.
@@ -136,8 +134,8 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
       h1 = h0;
   }
   const double hm = 0.5 * (h0 + h1);
-  state_.lat += 0.5 * dt * (v0.x() + v1.x()) / (M_ + hm);
-  state_.lon += 0.5 * dt * (v0.y() + v1.y()) / ((N_ + hm) * cosLat);
+  state_.lat += 0.5 * dt * (v0.x() + v1.x()) / (e.M + hm);
+  state_.lon += 0.5 * dt * (v0.y() + v1.y()) / ((e.N + hm) * cosLat);
   if (std::abs(state_.lon) > 3.14159265358979323846) state_.lon = wrapAngle(state_.lon);
   state_.h = h1;
   state_.v_n = v1;

@@ -71,17 +71,17 @@ class Strapdown {
   double dampingGainK2() const;                 // [1/s^2]
 
  private:
-  const Earth& earth_;
+  const Earth* earth_;  // not owned; a pointer keeps Strapdown copy-assignable
   NavState state_;
   StrapdownOptions options_;
-  LocalGravity gravity_;  // GeographicLib normal gravity, expanded about a moving anchor
+  LocalEarth local_;  // GeographicLib radii and normal gravity, expanded about a moving anchor
   // previous interval's increments, for the two-sample coning and sculling corrections (zero
   // before the first step, which makes the first step's forms one-sample)
   Vec3 prevDtheta_b_ = Vec3::Zero();
   Vec3 prevDv_b_ = Vec3::Zero();
   double prevDt_ = 0.0;  // [s]
-  // radii of curvature at the last midpoint [m], for the next midpoint extrapolation
-  double M_ = 0.0, N_ = 0.0;
+  // meridian radius of curvature at the last midpoint [m], for the next midpoint extrapolation
+  double M_ = 0.0;
   // gravity minus Coriolis [m/s^2] of the last step, to extrapolate the midpoint velocity
   Vec3 gcc_n_ = Vec3::Zero();
   // reference heights of the two previous steps (Held: second-order backward difference for v_D)

@@ -28,8 +28,10 @@ std::vector<Vec3> axes() {
 }  // namespace
 
 TEST_CASE("rotation vector to quaternion matches Eigen::AngleAxis") {
-  const std::vector<double> angles = {0.0,  1e-12, 1e-8, 1e-5,       1e-4 - 1e-12, 1e-4 + 1e-12,
-                                      0.3,  1.0,   3.0,  kPi - 1e-6, kPi - 1e-12,  kPi};
+  // 0.05 rad is where the series gives way to trigonometry: both sides of it.
+  const std::vector<double> angles = {0.0, 1e-12, 1e-8, 1e-5,       1e-4,        0.05 - 1e-12,
+                                      0.05, 0.3,  1.0,  3.0,        kPi - 1e-6,  kPi - 1e-12,
+                                      kPi};
   for (const Vec3& u : axes()) {
     for (double th : angles) {
       const Quat q = quatFromRotationVector(th * u);
@@ -37,6 +39,11 @@ TEST_CASE("rotation vector to quaternion matches Eigen::AngleAxis") {
       INFO("theta = " << th << ", axis = " << u.transpose());
       CHECK(quatDistance(q, ref) < kTol);
       CHECK(std::abs(q.norm() - 1.0) < kTol);
+      // q(φ) - 1 keeps full relative precision in its scalar part (-2 sin²(θ/4) exactly).
+      const Quat dq = quatDeltaFromRotationVector(th * u);
+      const double s4 = std::sin(0.25 * th);
+      CHECK(std::abs(dq.w() + 2.0 * s4 * s4) <= 1e-15 * 2.0 * s4 * s4);
+      CHECK((dq.vec() - q.vec()).norm() == 0.0);
     }
   }
   // Exactly zero: identity, bit for bit.
