@@ -8,7 +8,6 @@
 // stream id packs (sensor, axis, effect index, sub-stream) — see streamId().
 #pragma once
 
-#include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
 
 #include <array>
@@ -40,32 +39,16 @@ class NormalStream {
     return buf_[pos_++];
   }
 
-  /// The n-th normal of the stream (random access, for tests and regeneration).
-  static double at(std::uint64_t seed, std::uint64_t run, std::uint64_t stream, std::uint64_t n) {
-    Philox::ctr_type c = {{n / 4, stream, 0, 0}};
-    Philox::key_type k = {{seed, run}};
-    Philox::ctr_type r = Philox()(c, k);
-    r123::double2 p = r123::boxmuller(r.v[(n % 4) / 2 * 2], r.v[(n % 4) / 2 * 2 + 1]);
-    return (n % 2) == 0 ? p.x : p.y;
-  }
+  /// The n-th normal of the stream (random access: regenerates only the block holding it).
+  static double at(std::uint64_t seed, std::uint64_t run, std::uint64_t stream, std::uint64_t n);
 
  private:
   using Philox = r123::Philox4x64;
 
-  void refill() {
-    Philox gen;
-    for (int b = 0; b < kBlock / 4; ++b) {
-      Philox::ctr_type c = {{block_++, stream_, 0, 0}};
-      Philox::ctr_type r = gen(c, key_);
-      r123::double2 p0 = r123::boxmuller(r.v[0], r.v[1]);
-      r123::double2 p1 = r123::boxmuller(r.v[2], r.v[3]);
-      buf_[4 * b + 0] = p0.x;
-      buf_[4 * b + 1] = p0.y;
-      buf_[4 * b + 2] = p1.x;
-      buf_[4 * b + 3] = p1.y;
-    }
-    pos_ = 0;
-  }
+  /// Fills buf_ with the next kBlock normals. Compiled in random.cpp with the vector math library
+  /// (log, sin, cos four at a time): the Box-Muller transform dominates the cost of the error
+  /// models. The result depends only on (key, stream, block), never on the caller.
+  void refill();
 
   Philox::key_type key_ = {{0, 0}};
   std::uint64_t stream_ = 0;

@@ -1,0 +1,126 @@
+// `ar`: autoregressive process of order p, in the MATLAB arburg convention of the seed paper:
+//   A(z) = 1 + a1 z^-1 + ... + ap z^-p,   y[n] = -a1 y[n-1] - ... - ap y[n-p] + sigma_e w[n]
+//   a: [-1.0327, -0.34341, 0.037895, 0.19732, 0.14724]   (a1..ap; arburg's output without its 1)
+//   sigma: 0.01 deg/s          driving-noise standard deviation sigma_e (a standard deviation,
+//                              NOT arburg's variance e: give sqrt(e))
+//   or output_sigma: 0.1 deg/s stationary standard deviation of y; sigma_e = output_sigma / sqrt(G),
+//                              G = r(0)/sigma_e² the variance gain of 1/A(z) (ar_model.hpp)
+//   rate: 1 kHz                the sample rate the coefficients hold at (required: a discrete
+//                              model means nothing without it)
+//
+// Generated at its own rate, each sample held over 1/rate and integrated into the IMU intervals
+// (held_process.hpp); an IMU faster than the model's rate is refused. The first p samples come
+// from the stationary distribution (Cholesky factor of the Toeplitz autocovariance), so there is no
+// start-up transient to burn in. An unstable polynomial is refused, naming its largest pole.
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <sstream>
+
+#include "errormodels/ar_model.hpp"
+#include "errormodels/held_process.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+constexpr int kMaxOrder = 64;
+
+class ArState final : public HeldProcessState {
+ public:
+  ArState(int axis, double rate, const std::vector<double>& a, double sigmaE,
+          const Eigen::MatrixXd& L, NormalStream s, NormalStream init)
+      : HeldProcessState(axis, rate), p_(int(a.size())), sigmaE_(sigmaE), s_(s) {
+    for (int i = 0; i < p_; ++i) negA_[i] = -a[i];
+    // hist_[i] = y[n-1-i]; stationary draw of the p past values.
+    Eigen::VectorXd z(p_);
+    for (int i = 0; i < p_; ++i) z(i) = init.next();
+    Eigen::VectorXd y0 = L * z;
+    for (int i = 0; i < p_; ++i) hist_[i] = y0(i);
+  }
+
+ protected:
+  double next() override {
+    double y = sigmaE_ * s_.next();
+    for (int i = 0; i < p_; ++i) y += negA_[i] * hist_[i];
+    for (int i = p_ - 1; i > 0; --i) hist_[i] = hist_[i - 1];
+    hist_[0] = y;
+    return y;
+  }
+
+ private:
+  int p_;
+  double sigmaE_;
+  NormalStream s_;
+  double negA_[kMaxOrder];
+  double hist_[kMaxOrder];
+};
+
+class Ar final : public Effect {
+ public:
+  Ar(std::vector<double> a, double sigmaE, double rate)
+      : a_(std::move(a)), sigmaE_(sigmaE), rate_(rate) {
+    const int p = int(a_.size());
+    auto r = ar::autocovariance(a_, sigmaE_, p);
+    Eigen::MatrixXd T(p, p);
+    for (int i = 0; i < p; ++i)
+      for (int j = 0; j < p; ++j) T(i, j) = r[std::abs(i - j)];
+    L_ = T.llt().matrixL();
+  }
+  std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
+    requireRateAtLeastImu(rate_, ctx);
+    return std::make_unique<ArState>(ctx.site->axis, rate_, a_, sigmaE_, L_, ctx.stream(0),
+                                     ctx.stream(1));
+  }
+
+ private:
+  std::vector<double> a_;
+  double sigmaE_, rate_;
+  Eigen::MatrixXd L_;
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> parseEffect_ar(const ConfigNode& node, const EffectSite& site) {
+  node.allowKeys({"type", "enabled", "a", "sigma", "output_sigma", "rate"});
+  std::vector<double> a = numberList(node, "a");
+  std::string form = exactlyOne(node, {"sigma", "output_sigma"});
+  double sigma = form.empty() ? NAN : positiveQuantity(node, form, site.signal());
+  double rate = positiveQuantity(node, "rate", Dimension::frequency());
+  bool ok = std::isfinite(sigma) && std::isfinite(rate);
+  if (node.has("a")) {
+    ConfigNode an = node["a"];
+    bool finite = true;
+    for (double v : a) finite = finite && std::isfinite(v);
+    if (a.empty() || int(a.size()) > kMaxOrder) {
+      an.error("expected 1 to " + std::to_string(kMaxOrder) + " coefficients a1..ap, got " +
+               std::to_string(a.size()));
+      ok = false;
+    } else if (!finite) {
+      ok = false;  // the item's own diagnostic says why
+    } else {
+      auto poles = ar::poles(a);
+      std::complex<double> worst = 0;
+      for (const auto& z : poles)
+        if (std::abs(z) > std::abs(worst)) worst = z;
+      // Strictly inside the unit circle, with a margin for the rounding of printed coefficients:
+      // a pole at |z| > 1 - 1e-9 has a correlation time over 1e9 samples — not a stationary model.
+      if (!(std::abs(worst) < 1.0 - 1e-9)) {
+        std::ostringstream s;
+        s.precision(6);
+        s << "unstable AR polynomial: largest pole magnitude " << std::abs(worst) << " (pole "
+          << worst.real() << (worst.imag() < 0 ? " - " : " + ") << std::abs(worst.imag())
+          << "i); every pole of 1/A(z) must lie inside the unit circle (|z| < 1). Check the sign "
+             "convention: A(z) = 1 + a1 z^-1 + ... + ap z^-p, as MATLAB arburg returns it";
+        an.error(s.str());
+        ok = false;
+      }
+    }
+  } else {
+    ok = false;
+  }
+  if (!ok) return nullptr;
+  if (form == "output_sigma") sigma /= std::sqrt(ar::varianceGain(a));
+  return std::make_unique<Ar>(std::move(a), sigma, rate);
+}
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,91 @@
+// `bias_instability`: flicker (1/f) bias noise, as a sum of first-order Gauss-Markov processes.
+//   B: 10 deg/h                bias-instability coefficient (IEEE Std 952-1997 Annex C: two-sided
+//                              PSD B²/(2π f); Allan deviation floor sqrt(2 ln2/π) B ≈ 0.664 B)
+//   or floor: 6.64 deg/h       the Allan-deviation floor itself (B = floor / 0.664)
+//   tau_range: [1 s, 1000 s]   averaging times over which the Allan floor must hold
+//
+// Construction: a log-uniform set of GM correlation times with the same variance each has a PSD
+// sum ≈ ρ σ² ∫ 2T/(1+(2πfT)²) d(ln T) = ρ σ²/(2f); equal to B²/(2πf) when σ² = B²/(π ρ), with
+// ρ = d/ln 10 components per unit of ln T (d per decade). Keshner 1982 ("1/f noise", Proc. IEEE
+// 70(3)) gives the same sum-of-relaxations picture. Here d = 2 per decade, at the centres of
+// half-decade cells spanning tau_range widened by 10^1.5 on each side: the widening is what makes
+// the Allan floor flat up to the ends of tau_range. Computed from the GM closed-form Allan variance,
+// the floor then stays within -2.5 %/+1 % of 0.664 B over tau_range (checked in
+// tests/errormodels/test_processes.cpp). Outside the widened band the process is what a sum of GMs
+// is: random-walk-like (ADEV ∝ τ^+1/2) below the fastest correlation time, and ADEV ∝ τ^-1/2 above
+// the slowest (bounded variance).
+// Each component is integrated exactly over the IMU intervals (gm_process.hpp).
+#include <cmath>
+
+#include "errormodels/gm_process.hpp"
+#include "errormodels/held_process.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+constexpr int kPerDecade = 2;
+constexpr double kWidenDecades = 1.5;
+
+class FlickerState final : public AxisErrorState {
+ public:
+  FlickerState(int axis, double sigma, const std::vector<double>& taus, const InstanceContext& ctx)
+      : AxisErrorState(axis) {
+    for (std::size_t j = 0; j < taus.size(); ++j)
+      gms_.emplace_back(sigma, taus[j], ctx.stream(unsigned(j)));
+  }
+  double integral(const Interval& iv) override {
+    double s = 0.0;
+    for (auto& g : gms_) s += g.integral(iv.dt);
+    return s;
+  }
+
+ private:
+  std::vector<ExactGaussMarkov> gms_;
+};
+
+class BiasInstability final : public Effect {
+ public:
+  BiasInstability(double B, double tauLo, double tauHi) {
+    const double lo = tauLo * std::pow(10.0, -kWidenDecades);
+    const double hi = tauHi * std::pow(10.0, kWidenDecades);
+    const int n = int(std::ceil(kPerDecade * std::log10(hi / lo) - 1e-9));
+    for (int j = 0; j < n; ++j) taus_.push_back(lo * std::pow(10.0, (j + 0.5) / kPerDecade));
+    sigma_ = B * std::sqrt(std::log(10.0) / (M_PI * kPerDecade));
+  }
+  std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
+    return std::make_unique<FlickerState>(ctx.site->axis, sigma_, taus_, ctx);
+  }
+
+ private:
+  std::vector<double> taus_;  // GM correlation times [s]
+  double sigma_;              // standard deviation of each component [signal]
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> parseEffect_bias_instability(const ConfigNode& node,
+                                                     const EffectSite& site) {
+  node.allowKeys({"type", "enabled", "B", "floor", "tau_range"});
+  std::string form = exactlyOne(node, {"B", "floor"});
+  double B = form.empty() ? NAN : positiveQuantity(node, form, site.signal());
+  if (form == "floor") B /= std::sqrt(2.0 * std::log(2.0) / M_PI);
+  ConfigNode range = node.require("tau_range");
+  double lo = NAN, hi = NAN;
+  if (range.exists()) {
+    auto items = range.items();
+    if (items.size() != 2) {
+      range.error("expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]");
+    } else {
+      lo = items[0].asQuantity(Dimension::time()).value_or(NAN);
+      hi = items[1].asQuantity(Dimension::time()).value_or(NAN);
+      if (!(lo > 0 && hi > lo)) {
+        range.error("expected 0 < shortest < longest");
+        lo = hi = NAN;
+      }
+    }
+  }
+  if (!(std::isfinite(B) && std::isfinite(lo) && std::isfinite(hi))) return nullptr;
+  return std::make_unique<BiasInstability>(B, lo, hi);
+}
+
+}  // namespace sinsim::errormodels

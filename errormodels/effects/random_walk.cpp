@@ -1,0 +1,69 @@
+// `random_walk`: rate random walk (gyro) / acceleration random walk (accel) of the sensor output,
+// b' = K w(t): the output's bias wanders as Brownian motion.
+//   K: 0.5 deg/h/sqrt(h)     coefficient (IEEE Std 952-1997 Annex C: AVAR = K² tau / 3)
+//   rate: 1 kHz              (optional) generate as a discrete walk at that rate, held (ZOH)
+//
+// Without a rate the walk is continuous and both its value and its integral over an interval are
+// drawn exactly (integrated Brownian motion): with w1, w2 ~ N(0,1) independent,
+//   b1 = b0 + K sqrt(dt) w1,      ∫ b dt = b0 dt + K dt^(3/2) (w1/2 + w2/(2 sqrt 3))
+// (Var = K² dt³/3, Cov with the step = K² dt²/2). The step is scaled by sqrt(dt), never dt.
+// The walk starts at 0 (add a `bias` with sigma for a random starting value).
+#include "errormodels/held_process.hpp"
+
+namespace sinsim::errormodels {
+namespace {
+
+class ContinuousWalk final : public AxisErrorState {
+ public:
+  ContinuousWalk(int axis, double K, NormalStream s) : AxisErrorState(axis), k_(K), s_(s) {}
+  double integral(const Interval& iv) override {
+    const double w1 = s_.next(), w2 = s_.next();
+    const double sdt = std::sqrt(iv.dt);
+    const double I = b_ * iv.dt + k_ * iv.dt * sdt * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
+    b_ += k_ * sdt * w1;
+    return I;
+  }
+
+ private:
+  double k_;  // [signal/sqrt(s)]
+  NormalStream s_;
+  double b_ = 0.0;
+};
+
+class DiscreteWalk final : public HeldProcessState {
+ public:
+  DiscreteWalk(int axis, double rate, double K, NormalStream s)
+      : HeldProcessState(axis, rate), step_(K / std::sqrt(rate)), s_(s) {}
+
+ protected:
+  double next() override { return b_ += step_ * s_.next(); }
+
+ private:
+  double step_;  // K sqrt(h) [signal]
+  NormalStream s_;
+  double b_ = 0.0;
+};
+
+class RandomWalk final : public Effect {
+ public:
+  RandomWalk(double K, double rate) : k_(K), rate_(rate) {}
+  std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
+    if (std::isnan(rate_)) return std::make_unique<ContinuousWalk>(ctx.site->axis, k_, ctx.stream());
+    requireRateAtLeastImu(rate_, ctx);
+    return std::make_unique<DiscreteWalk>(ctx.site->axis, rate_, k_, ctx.stream());
+  }
+
+ private:
+  double k_, rate_;
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> parseEffect_random_walk(const ConfigNode& node, const EffectSite& site) {
+  node.allowKeys({"type", "enabled", "K", "rate"});
+  double K = positiveQuantity(node, "K", site.signal() / Dimension::time().sqrt());
+  double rate = optionalPositive(node, "rate", Dimension::frequency());
+  return std::make_unique<RandomWalk>(K, rate);
+}
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,67 @@
+// First-order Gauss-Markov (Ornstein-Uhlenbeck) process x' = -x/tau + sqrt(2 sigma²/tau) w(t),
+// stationary variance sigma², integrated EXACTLY over intervals of any length: the state x and its
+// integral I = ∫ x dt over an interval Δ are jointly Gaussian given the state at the start
+// (Van Loan 1978 discretisation, written out):
+//   x1 = φ x0 + e1,            I = tau (1-φ) x0 + e2,            φ = exp(-Δ/tau)
+//   Var e1 = sigma² (1-φ²)
+//   Var e2 = q tau² [Δ - 2 tau (1-φ) + tau (1-φ²)/2]
+//   Cov    = q tau² (1-φ)² / 2,          q = 2 sigma²/tau (driving-noise intensity)
+// So the integral over an IMU interval is right whatever Δ/tau is (no "tau must be ≫ dt").
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "errormodels/random.hpp"
+
+namespace sinsim::errormodels {
+
+class ExactGaussMarkov {
+ public:
+  ExactGaussMarkov(double sigma, double tau, NormalStream s) : sigma_(sigma), tau_(tau), s_(s) {
+    x_ = sigma_ * s_.next();  // stationary start
+  }
+
+  /// ∫ x dt over the next interval of length dt [s]; advances the state.
+  double integral(double dt) {
+    if (dt != dt_) setInterval(dt);
+    const double w1 = s_.next(), w2 = s_.next();
+    const double e1 = l11_ * w1;
+    const double e2 = l21_ * w1 + l22_ * w2;
+    const double I = c_ * x_ + e2;
+    x_ = phi_ * x_ + e1;
+    return I;
+  }
+  double state() const { return x_; }
+
+ private:
+  void setInterval(double dt) {
+    dt_ = dt;
+    const double r = dt / tau_;
+    phi_ = std::exp(-r);
+    const double om = -std::expm1(-r);         // 1 - φ, accurate for small r
+    const double om2 = -std::expm1(-2.0 * r);  // 1 - φ²
+    const double q = 2.0 * sigma_ * sigma_ / tau_;
+    const double v1 = sigma_ * sigma_ * om2;
+    // dt - 2 tau (1-φ) + tau (1-φ²)/2 loses digits for r ≪ 1; use its series r³/3 - r⁴/4 + ...
+    double bracket;
+    if (r < 1e-3) {
+      bracket = tau_ * (r * r * r / 3.0 - r * r * r * r / 4.0 + r * r * r * r * r * 7.0 / 60.0);
+    } else {
+      bracket = dt - 2.0 * tau_ * om + 0.5 * tau_ * om2;
+    }
+    const double v2 = q * tau_ * tau_ * bracket;
+    const double cv = q * tau_ * tau_ * om * om / 2.0;
+    c_ = tau_ * om;
+    l11_ = std::sqrt(v1);
+    l21_ = l11_ > 0 ? cv / l11_ : 0.0;
+    l22_ = std::sqrt(std::max(0.0, v2 - l21_ * l21_));
+  }
+
+  double sigma_, tau_;
+  NormalStream s_;
+  double x_ = 0.0;
+  double dt_ = -1.0, phi_ = 0.0, c_ = 0.0, l11_ = 0.0, l21_ = 0.0, l22_ = 0.0;
+};
+
+}  // namespace sinsim::errormodels

@@ -1,0 +1,224 @@
+// Deterministic and signal-dependent effects against closed forms; refusals with their messages.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "errormodels/effect.hpp"
+#include "errormodels/imu_model.hpp"
+#include "helpers.hpp"
+
+using namespace sinsim;
+using namespace sinsim::errormodels;
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kG = 9.80665;
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const ConfigError& e) {
+    std::string all;
+    for (const auto& d : e.diagnostics()) all += d.str() + "\n";
+    return all;
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+nav::ImuSample sample(double t, double dt, nav::Vec3 dth = nav::Vec3::Zero(),
+                      nav::Vec3 dv = nav::Vec3::Zero()) {
+  nav::ImuSample s;
+  s.t = t;
+  s.dt = dt;
+  s.dtheta_b = dth;
+  s.dv_b = dv;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("every catalogue effect is registered under its YAML name") {
+  for (const char* name : {"white", "random_walk", "gauss_markov", "ar", "bias_instability", "bias",
+                           "quantization", "scale_factor", "misalignment", "g_sensitivity",
+                           "temperature", "sinusoid", "ramp", "warmup"})
+    CHECK(findEffectType(name) != nullptr);
+  CHECK(findEffectType("whyte") == nullptr);
+}
+
+TEST_CASE("an unstable AR polynomial is refused, naming its largest pole") {
+  // A(z) = 1 - 2.05 z^-1 + 1.05 z^-2 = (1 - z^-1)(1 - 1.05 z^-1): poles 1 and 1.05.
+  auto msg = messageOf([] {
+    ImuErrorModel::fromString("gyro:\n  x:\n    - {type: ar, a: [-2.05, 1.05], sigma: 1 deg/s, "
+                              "rate: 1 kHz}\n", "ar.yaml");
+  });
+  CHECK(msg.find("ar.yaml:3: gyro.x[0].a: unstable AR polynomial: largest pole magnitude 1.05") !=
+        std::string::npos);
+  // A pole ON the unit circle (random walk in disguise) is refused too.
+  CHECK(messageOf([] {
+          ImuErrorModel::fromString("gyro:\n  x: [{type: ar, a: [-1], sigma: 1 deg/s, rate: 1 kHz}]",
+                                    "ar.yaml");
+        }).find("largest pole magnitude 1 ") != std::string::npos);
+  // The paper's six polynomials are accepted (largest poles 0.833 ... 0.982, seed-paper.md).
+  CHECK_NOTHROW(ImuErrorModel::load(std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml"));
+}
+
+TEST_CASE("a process defined at a rate slower than the IMU is refused at instantiation") {
+  auto m = ImuErrorModel::fromString(
+      "accel:\n  all: [{type: gauss_markov, sigma: 1 mg, tau: 1 s, rate: 100 Hz}]\n", "slow.yaml");
+  CHECK_NOTHROW(m.instantiate(100.0, {}));
+  CHECK_NOTHROW(m.instantiate(50.0, {}));
+  auto msg = messageOf([&] { m.instantiate(200.0, {}); });
+  CHECK(msg.find("accel.all[0].gauss_markov(x)") != std::string::npos);
+  CHECK(msg.find("slower than the IMU rate 200 Hz") != std::string::npos);
+}
+
+TEST_CASE("triad and axis effects must sit in the right lists; the model file is all-or-nothing") {
+  auto msg = messageOf([] {
+    ImuErrorModel::fromString(R"(gyro:
+  x: [{type: scale_factor, value: 300 ppm}]
+  triad: [{type: white, density: 1 deg/sqrt(h)}]
+accel:
+  triad:
+    - {type: g_sensitivity, value: 0.01 deg/s/g}
+    - {type: misalignment, matrix: [[1 deg, 0, 0], [0, 0, 0], [0, 0, 0]]}
+    - {type: scale_factor, diagonal: [1, 2]}
+  y:
+    - {type: temperature, T0: 25 degC, coefficients: [0.1 mg/degC, 1 mg]}
+    - {type: quantization, lsb: 1 deg}
+)", "place.yaml");
+  });
+  CHECK(msg.find("place.yaml:2: gyro.x[0].type: scale_factor acts on the whole triad") != std::string::npos);
+  CHECK(msg.find("place.yaml:3: gyro.triad[0].type: white acts on one axis") != std::string::npos);
+  CHECK(msg.find("place.yaml:6: accel.triad[0].type: g_sensitivity is a gyro effect") != std::string::npos);
+  CHECK(msg.find("accel.triad[1].matrix: the diagonal must be 0") != std::string::npos);
+  CHECK(msg.find("accel.triad[2].diagonal: expected 3 values, got 2") != std::string::npos);
+  // The second temperature coefficient must be signal/temperature².
+  CHECK(msg.find("place.yaml:10: accel.y[0].coefficients[1]") != std::string::npos);
+  CHECK(msg.find("accel.y[1].lsb: expected an LSB of the rate output") != std::string::npos);
+}
+
+TEST_CASE("quantization with carry: the summed output stays within one LSB of the true sum") {
+  // White noise + a bias, quantized with an increment LSB of 0.001 deg (carry on by default). The
+  // same model without the quantization draws the same numbers (filtered() keeps the streams).
+  auto m = ImuErrorModel::fromString(R"(
+gyro:
+  all:
+    - {type: white, density: 0.5 deg/sqrt(h)}
+    - {type: bias, value: 3.3 deg/h}
+    - {type: quantization, lsb: 0.001 deg}
+)", "q.yaml");
+  auto raw = m.filtered([](const std::string& n) { return n.find("quantization") == std::string::npos; });
+  auto cq = m.instantiate(100.0, {3, 0});
+  auto cr = raw.instantiate(100.0, {3, 0});
+  const double lsb = 0.001 * kDeg;
+  nav::Vec3 sq = nav::Vec3::Zero(), sr = nav::Vec3::Zero();
+  double worst = 0.0;
+  for (int k = 1; k <= 100000; ++k) {
+    auto a = sample(k / 100.0, 0.01), b = a;
+    cq->corrupt(a, NAN);
+    cr->corrupt(b, NAN);
+    // every output is an integer number of LSBs (to rounding of the multiplication, 1e-9 LSB)
+    CHECK(std::fabs(a.dtheta_b.x() / lsb - std::round(a.dtheta_b.x() / lsb)) < 1e-9);
+    sq += a.dtheta_b;
+    sr += b.dtheta_b;
+    worst = std::max(worst, (sq - sr).cwiseAbs().maxCoeff());
+  }
+  // |Σq - Σu| = |remainder| ≤ lsb/2, plus the rounding of 1e5 additions (≪ 1e-6 lsb).
+  CHECK(worst <= 0.5 * lsb * (1 + 1e-6));
+  // Without carry the error accumulates (it is a random walk of ±lsb/2 steps: ≫ 1 LSB after 1e5).
+  auto nc = ImuErrorModel::fromString(R"(
+gyro:
+  all:
+    - {type: white, density: 0.5 deg/sqrt(h)}
+    - {type: bias, value: 3.3 deg/h}
+    - {type: quantization, lsb: 0.001 deg, carry: false}
+)", "q.yaml").instantiate(100.0, {3, 0});
+  auto cr2 = raw.instantiate(100.0, {3, 0});
+  double sum = 0.0;
+  for (int k = 1; k <= 100000; ++k) {
+    auto a = sample(k / 100.0, 0.01), b = a;
+    nc->corrupt(a, NAN);
+    cr2->corrupt(b, NAN);
+    sum += a.dtheta_b.x() - b.dtheta_b.x();
+  }
+  CHECK(std::fabs(sum) > 2 * lsb);
+}
+
+TEST_CASE("a rate LSB rounds each interval's increment to lsb·dt") {
+  auto c = ImuErrorModel::fromString(
+      "gyro:\n  z: [{type: quantization, lsb: 0.07326 deg/s}]\n", "q.yaml").instantiate(1000, {});
+  auto s = sample(0.001, 0.001, nav::Vec3(0, 0, 0.1 * kDeg * 0.001));  // 0.1 deg/s true
+  c->corrupt(s, NAN);
+  // round(0.1/0.07326) = 1 LSB = 0.07326 deg/s; 1e-12 relative: unit conversion rounding.
+  CHECK(s.dtheta_b.z() / 0.001 == Approx(0.07326 * kDeg).epsilon(1e-12));
+}
+
+TEST_CASE("linear triad effects: u ← (I+M)(I+S)u in file order, g-sensitivity adds G·dv") {
+  auto m = ImuErrorModel::fromString(R"(
+gyro:
+  triad:
+    - {type: scale_factor, diagonal: [1000 ppm, -500 ppm, 0]}
+    - {type: misalignment, matrix: [[0, 1 mrad, 0], [0, 0, -2 mrad], [0.001, 0, 0]]}
+    - {type: g_sensitivity, matrix: [[0.1 deg/s/g, 0, 0], [0, 0, 0], [0, 0, 0.2 deg/s/g]]}
+accel:
+  triad:
+    - {type: scale_factor, value: 200 ppm}
+)", "lin.yaml");
+  auto c = m.instantiate(100, {});
+  const nav::Vec3 dth(0.01, -0.02, 0.03), dv(0.1, 0.2, -0.098);
+  auto s = sample(0.01, 0.01, dth, dv);
+  c->corrupt(s, NAN);
+  nav::Mat3 S = nav::Vec3(1e-3, -5e-4, 0).asDiagonal();
+  nav::Mat3 M;
+  M << 0, 1e-3, 0, 0, 0, -2e-3, 1e-3, 0, 0;
+  nav::Mat3 G = nav::Vec3(0.1 * kDeg / kG, 0, 0.2 * kDeg / kG).asDiagonal();
+  nav::Vec3 expected = (nav::Mat3::Identity() + M) * (nav::Mat3::Identity() + S) * dth + G * dv;
+  // 1e-15 absolute on 0.03 rad: a few roundings of 3×3 products.
+  CHECK((s.dtheta_b - expected).norm() < 1e-15);
+  CHECK((s.dv_b - 1.0002 * dv).norm() < 1e-15);
+}
+
+TEST_CASE("sinusoid, ramp, warmup: increments are the exact integrals; temperature needs T") {
+  auto m = ImuErrorModel::fromString(R"(
+gyro:
+  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 12.34 Hz, phase: 30 deg}]
+  y: [{type: ramp, slope: 36 deg/h/h}]
+  z: [{type: warmup, amplitude: 0.1 deg/s, tau: 2 s}]
+accel:
+  x: [{type: temperature, T0: 25 degC, coefficients: [0.1 mg/degC, 0.01 mg/degC^2]}]
+)", "det.yaml");
+  CHECK(m.needsTemperature());
+  auto c = m.instantiate(100, {});
+  auto s0 = sample(0.01, 0.01);
+  CHECK(messageOf([&] { c->corrupt(s0, NAN); }).find("no sensor temperature") != std::string::npos);
+  const double A = 0.05 * kDeg, w = 2 * M_PI * 12.34, ph = 30 * kDeg;
+  const double R = 36 * kDeg / 3600 / 3600, Aw = 0.1 * kDeg, tw = 2.0;
+  nav::Vec3 sum = nav::Vec3::Zero();
+  const double T = 273.15 + 35;  // 10 K above T0
+  for (int k = 1; k <= 1000; ++k) {
+    auto s = sample(k * 0.01, 0.01);
+    c->corrupt(s, T);
+    sum += s.dtheta_b;
+    CHECK(s.dv_b.x() == Approx((0.1e-3 * kG * 10 + 0.01e-3 * kG * 100) * 0.01).epsilon(1e-12));
+  }
+  // ∫_0^10 s of each error, closed form (12.34 Hz: 123.4 periods, so the integral is not 0);
+  // 1e-10 / 1e-12 relative: 1000 roundings of terms of comparable size.
+  CHECK(sum.x() == Approx(A / w * (std::cos(ph) - std::cos(w * 10 + ph))).epsilon(1e-10));
+  CHECK(sum.y() == Approx(R * 100 / 2).epsilon(1e-12));
+  CHECK(sum.z() == Approx(Aw * tw * (1 - std::exp(-10 / tw))).epsilon(1e-12));
+}
+
+TEST_CASE("enabled: false removes an effect without moving the other effects' streams") {
+  auto on = ImuErrorModel::fromString(
+      "gyro:\n  x: [{type: bias, sigma: 1 deg/s}, {type: white, density: 1 deg/sqrt(h)}]\n", "e.yaml");
+  auto off = ImuErrorModel::fromString(
+      "gyro:\n  x: [{type: bias, sigma: 1 deg/s, enabled: false}, {type: white, density: 1 deg/sqrt(h)}]\n",
+      "e.yaml");
+  auto white = on.filtered([](const std::string& n) { return n.find("white") != std::string::npos; });
+  CHECK(off.effectNames() == white.effectNames());
+  auto a = test::simulateRates(off, 100, 100, 9, 0), b = test::simulateRates(white, 100, 100, 9, 0);
+  CHECK(a == b);
+}
