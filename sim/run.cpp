@@ -60,7 +60,7 @@ nlohmann::json errorJson(const NavError& e) {
 std::string lengthText(double m) {
   char buf[64];
   const double a = std::abs(m);
-  if (!std::isfinite(m)) std::snprintf(buf, sizeof buf, "%g m", m);
+  if (!std::isfinite(m) || m == 0.0) std::snprintf(buf, sizeof buf, "%g m", m);
   else if (a < 1e-3) std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
   else if (a < 1.0) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
   else if (a < 1e4) std::snprintf(buf, sizeof buf, "%.3g m", m);
