@@ -213,3 +213,41 @@ TEST_CASE("a failing run leaves no output files and no folder it created") {
   CHECK(std::distance(fs::directory_iterator(dir / "out"), fs::directory_iterator()) == 1);
   fs::remove_all(dir);
 }
+
+TEST_CASE("error model from a file beside the scenario, fed with the scenario's temperature") {
+  // Model: north accelerometer bias c1·(T − T0) with c1 = 1e-4 m/s²/K; scenario temperature
+  // 27 degC, T0 = 25 degC → ∇ = 2e-4 m/s². At rest, heading north, for t ≪ the Schuler period:
+  // δN = ∇(1 − cos ωs t)/ωs² = ∇t²/2·(1 − (ωs t)²/12 + ...), at t = 60 s: (ωs t)²/12 = 4.5e-4,
+  // and the Foucault coupling moves it by (Ω sin φ · t)²/... < 1e-5. So δN = 0.36 m within 0.1 %.
+  const fs::path dir = tempDir("modelfile");
+  fs::create_directories(dir / "models");
+  { std::ofstream(dir / "models" / "thermal.yaml")
+        << "accel:\n  x: [{type: temperature, T0: 25 degC, coefficients: [1e-4 m/s^2/K]}]\n"; }
+  const std::string body = R"(
+start: {latitude: 45 deg, longitude: 0 deg}
+imu_rate: 10 Hz
+vertical: held
+errors: models/thermal.yaml
+segments: [{type: static, duration: 60 s}]
+)";
+  { std::ofstream(dir / "warm.yaml") << body << "temperature: 27 degC\n"; }
+  { std::ofstream(dir / "cold.yaml") << body; }
+
+  const sim::Scenario sc = sim::loadScenario((dir / "warm.yaml").string());
+  CHECK(sc.errors.source().find("thermal.yaml") != std::string::npos);
+  CHECK(sc.errors.needsTemperature());
+  const sim::RunSummary s = sim::run(sc);
+  CHECK(s.final.pos_n.x() == Approx(2e-4 * 60.0 * 60.0 / 2.0).epsilon(1e-3));
+
+  // Without a temperature profile the scenario is refused, at its `errors:` line.
+  try {
+    sim::loadScenario((dir / "cold.yaml").string());
+    FAIL("a temperature-dependent model without temperature was accepted");
+  } catch (const ConfigError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(e.diagnostics()[0].key == "errors");
+    CHECK(e.diagnostics()[0].line == 5);
+    CHECK(e.diagnostics()[0].message.find("temperature") != std::string::npos);
+  }
+  fs::remove_all(dir);
+}
