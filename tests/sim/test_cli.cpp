@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -39,7 +40,8 @@ Result sinsim(const std::string& args, const fs::path& tmp, const std::string& c
 }
 
 fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("sinsim_test_cli_" + name);
+  const fs::path d = fs::temp_directory_path() /
+                     ("sinsim_test_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

@@ -2,6 +2,8 @@
 // Foucault-modulated Schuler response to an accelerometer bias, outputs and their atomicity.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <complex>
 #include <cstdio>
 #include <filesystem>
@@ -34,7 +36,8 @@ std::string slurp(const fs::path& p) {
 
 // A fresh, empty temporary folder per test.
 fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("sinsim_test_sim_" + name);
+  const fs::path d = fs::temp_directory_path() /
+                     ("sinsim_test_sim_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(d);
   return d;
 }
