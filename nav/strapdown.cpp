@@ -75,7 +75,8 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
   Vec3 v_mid = v0 + 0.5 * (C_nb * imu.dv_b + gcc_n_ * dt);
   double h_mid;
   if (vc == VerticalChannel::Held) {
-    v_mid.z() = -(hRef - h0) / dt;  // mean vertical velocity over the interval = v_D(t_{k-½}) + O(h²)
+    // The interval's mean vertical velocity: v_D(t_{k-½}) + O(h²).
+    v_mid.z() = -(hRef - h0) / dt;
     h_mid = 0.5 * (h0 + hRef);
   } else {
     h_mid = h0 - 0.25 * dt * (v0.z() + v_mid.z());
@@ -125,9 +126,9 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
       // Second-order baro-inertial loop, forward-Euler on the loop terms (dt/τ ≪ 1):
       // ḣ = -v_D - k1 e, v̇_D = a_D + k2 e, e = h - hRef (gains: strapdown.hpp).
       const double hFree = h0 - 0.5 * dt * (v0.z() + v1.z());
-      const double e = hFree - hRef;
-      h1 = hFree - k1_ * e * dt;
-      v1.z() += dampingGainK2() * e * dt;
+      const double err = hFree - hRef;
+      h1 = hFree - k1_ * err * dt;
+      v1.z() += dampingGainK2() * err * dt;
       break;
     }
     default:

@@ -6,7 +6,7 @@
 //
 // The linear error model is the psi-angle model (Benson 1975; Titterton & Weston 2004 §12.3.4),
 // written here from scratch for a vehicle at rest with the vertical channel held:
-//   ψ̇  = -ω_ie × ψ - C_nb δω_b                    (attitude error of the platform vs computer frame)
+//   ψ̇  = -ω_ie × ψ - C_nb δω_b                    (platform vs computer frame attitude error)
 //   δv̇ = -ψ × f_n - 2 ω_ie × δv + δg + C_nb δf_b  (f_n = -g_n = (0, 0, -g))
 //   δṙ = δv,  δg = -(g/M δr_N, g/N δr_E)           (normal rotates by δN/M, δE/N on the ellipsoid)
 // with the vertical components of δv, δr held at zero. It is linear time-invariant, so it is

@@ -24,7 +24,7 @@ TEST_CASE("free vertical channel: a height error grows as cosh(omega_v t)") {
   // δh = δh0 cosh(ω_v t). Neglected: the Coriolis coupling of δv_D into the east channel and
   // back, 4Ω² cos²φ / ω_v² ≈ 0.35 % of ω_v², which changes cosh(ω_v t) at ω_v t ≈ 2 by
   // ≈ ω_v t tanh(ω_v t)·0.17 % ≈ 0.35 %; the horizontal Schuler loop it excites is bounded.
-  // Tolerance 1 %. Also the textbook ω_v = sqrt(2g/R) (R = sqrt(MN)): the true gradient of normal
+  // Tolerance 0.5 % (measured 0.085 %). Also the textbook ω_v = sqrt(2g/R) (R = sqrt(MN)): the true gradient of normal
   // gravity is 2g/R (1 + f + m - 2f sin²φ) ≈ 0.3 % steeper, giving ≈ 0.3 % more growth: 2 %.
   const Earth earth;
   const double lat = 45.0 * kDeg, dh0 = 1.0, duration = 1200.0;
@@ -48,14 +48,15 @@ TEST_CASE("free vertical channel: a height error grows as cosh(omega_v t)") {
       const double dh = ins.state().h;
       const double ref = dh0 * std::cosh(wv * imu.t);
       worst = std::max(worst, std::abs(dh / ref - 1.0));
-      worstTextbook = std::max(worstTextbook, std::abs(dh / (dh0 * std::cosh(wv2gR * imu.t)) - 1.0));
+      const double refTextbook = dh0 * std::cosh(wv2gR * imu.t);
+      worstTextbook = std::max(worstTextbook, std::abs(dh / refTextbook - 1.0));
     }
   }
   std::printf("free vertical channel: omega_v = %.5g 1/s (sqrt(2g/R) = %.5g), h(%.0f s) = %.4f m, "
               "worst relative deviation from cosh %.3g %% (textbook omega: %.3g %%)\n",
               wv, wv2gR, duration, ins.state().h, 100.0 * worst, 100.0 * worstTextbook);
   CHECK(ins.state().h > 3.0 * dh0);  // it did grow (cosh(2.1) ≈ 4.1)
-  CHECK(worst < 0.01);
+  CHECK(worst < 0.005);
   CHECK(worstTextbook < 0.02);
 }
 
@@ -100,7 +101,8 @@ TEST_CASE("damped vertical channel: critically damped decay with the set time co
 
 TEST_CASE("held vertical channel follows the reference height and its rate") {
   // hRef(t) = H sin(ωt): h must equal hRef exactly and v_D = -ḣRef up to the three-point
-  // difference's error (ω²dt²/3)·Hω ≈ 1.3e-7 m/s for H = 50 m, ω = 0.2 rad/s, dt = 0.01 s.
+  // backward difference's error (dt²/3)|h'''| ≤ (dt²/3) H ω³ ≈ 1.3e-5 m/s for H = 50 m,
+  // ω = 0.2 rad/s, dt = 0.01 s; asserted with a factor 2 for the O(dt³) remainder.
   const Earth earth;
   const double lat = 30.0 * kDeg, H = 50.0, w = 0.2, dt = 0.01;
   NavState s0;
@@ -113,7 +115,8 @@ TEST_CASE("held vertical channel follows the reference height and its rate") {
     const double href = H * std::sin(w * imu.t);
     ins.update(imu, href);
     CHECK(ins.state().h == href);
-    if (k >= 2) worstV = std::max(worstV, std::abs(ins.state().v_n.z() + H * w * std::cos(w * imu.t)));
+    const double vD = -H * w * std::cos(w * imu.t);
+    if (k >= 2) worstV = std::max(worstV, std::abs(ins.state().v_n.z() - vD));
   }
   CHECK(worstV < 2.0 * H * w * w * w * dt * dt / 3.0);
 }
