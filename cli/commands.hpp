@@ -12,5 +12,6 @@ using Action = std::function<int()>;
 
 // One line per subcommand (add yours here and in main.cpp).
 void addRunCommand(CLI::App& app, Action& action);  // cmd_run.cpp
+void addSynthCommand(CLI::App& app, Action& action);
 
 }  // namespace sinsim::cli

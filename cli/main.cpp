@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   sinsim::cli::Action action;
   // Subcommand registrations go here.
   sinsim::cli::addRunCommand(app, action);
+  sinsim::cli::addSynthCommand(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
