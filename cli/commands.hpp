@@ -11,8 +11,8 @@ namespace sinsim::cli {
 using Action = std::function<int()>;
 
 // One line per subcommand (add yours here and in main.cpp).
-// void addRunCommand(CLI::App& app, Action& action);
 void addAnalyzeCommand(CLI::App& app, Action& action);
+void addRunCommand(CLI::App& app, Action& action);
 void addSynthCommand(CLI::App& app, Action& action);
 
 }  // namespace sinsim::cli

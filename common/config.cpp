@@ -87,8 +87,17 @@ ConfigNode& ConfigNode::operator=(const ConfigNode& other) {
 
 ConfigNode ConfigNode::operator[](const std::string& key) const {
   // Const access: a non-const yaml-cpp operator[] would insert the key into the document.
+  // A missing key yields a yaml-cpp "zombie" node whose every accessor throws; hand out a valid
+  // Undefined node instead, so that children of missing children can be asked for safely.
   const YAML::Node& self = node_;
-  YAML::Node child = self.IsMap() ? self[key] : YAML::Node(YAML::NodeType::Undefined);
+  auto pick = [&]() -> YAML::Node {
+    if (self.IsDefined() && self.IsMap()) {
+      YAML::Node c = self[key];
+      if (c.IsDefined()) return c;
+    }
+    return YAML::Node(YAML::NodeType::Undefined);
+  };
+  YAML::Node child = pick();
   return ConfigNode(file_, child, joinKey(path_, key), lineOf(child, line_));
 }
 

@@ -1,1 +1,0 @@
-// sim/ starts here

@@ -1,0 +1,60 @@
+// A scenario: where the vehicle starts, how it moves (segments), how its IMU is sampled and
+// corrupted, and how the navigation runs. Read from YAML once, at the edge; everything inside
+// is SI. The file format is documented in README.md ("Simulate") and in scenarios/*.yaml.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "errormodels/imu_model.hpp"
+#include "nav/strapdown.hpp"
+#include "sim/motion.hpp"
+
+namespace sinsim::sim {
+
+/// Sensor temperature over the run (the value handed to ImuCorruptor::corrupt).
+struct TemperatureProfile {
+  bool present = false;
+  double start = NAN;  // temperature at t = 0 [K]
+  double rate = 0.0;   // linear ramp [K/s]
+  /// Temperature at time t [s] [K]; NaN when the scenario has no temperature profile.
+  double at(double t) const { return present ? start + rate * t : NAN; }
+};
+
+struct Scenario {
+  std::string name;         // `name:` or the file stem
+  std::string description;  // `description:` (free text)
+  std::string file;         // path as given ("" for a scenario parsed from text)
+
+  MotionStart start;
+  std::vector<Segment> segments;  // planned, repeats expanded, back to back from t = 0
+
+  double imuRate = 100.0;    // [Hz]
+  double outputRate = 1.0;   // [Hz], divides imuRate
+  nav::StrapdownOptions strapdown;
+
+  errormodels::ImuErrorModel errors = errormodels::ImuErrorModel::none();
+  TemperatureProfile temperature;
+  std::optional<std::uint64_t> seed;  // `seed:`; the run's --seed overrides it
+
+  double duration() const;  // [s], sum of the segment durations
+  MotionProfile motion() const { return MotionProfile(start, segments); }
+  /// IMU samples per output row: imuRate / outputRate (an integer by validation).
+  long long decimation() const;
+};
+
+/// Reads a scenario file. Every problem of the file (and of an error-model file it names) is
+/// collected and thrown at once as a ConfigError whose diagnostics carry file, line and key path.
+Scenario loadScenario(const std::string& path);
+
+/// Parses scenario text as if read from the file `name`; relative model paths resolve against
+/// baseDir. Same error behaviour as loadScenario.
+Scenario parseScenario(const std::string& text, const std::string& name,
+                       const std::string& baseDir = ".");
+
+/// The segment type names a scenario may use, for help texts and messages.
+std::vector<std::string> segmentTypes();
+
+}  // namespace sinsim::sim

@@ -1,0 +1,111 @@
+// `sinsim run` as a user calls it: exit codes, messages naming file, line and key path, and no
+// output files for bad input.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Runs `sinsim <args>` in folder `cwd`, capturing stdout and stderr.
+Result sinsim(const std::string& args, const fs::path& tmp, const std::string& cwd = ".") {
+  const std::string cmd = "cd '" + cwd + "' && '" + std::string(SINSIM_BINARY_DIR) +
+                          "/sinsim' " + args + " > '" + (tmp / "stdout").string() + "' 2> '" +
+                          (tmp / "stderr").string() + "'";
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(tmp / "stdout");
+  r.err = slurp(tmp / "stderr");
+  return r;
+}
+
+fs::path tempDir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() /
+                     ("sinsim_test_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+const std::string kFixtures = std::string(SINSIM_SOURCE_DIR) + "/tests/sim/fixtures/";
+
+}  // namespace
+
+TEST_CASE("sinsim run: bad scenarios exit 1 naming file, line and key, and write nothing") {
+  const fs::path tmp = tempDir("bad");
+  struct Case {
+    const char* file;
+    const char* located;  // "<line>: <key path>: <start of the message>"
+  };
+  const Case cases[] = {
+      {"bad_unknown_key.yaml", ":6: start.headin: unknown key (did you mean \"heading\"?"},
+      {"bad_missing_start.yaml", ":2: start: missing key"},
+      {"bad_negative_duration.yaml", ":6: segments[1].duration: expected a positive duration"},
+      {"bad_unit.yaml", ":6: segments[0].speed: expected a value in m/s"},
+      {"bad_segment_type.yaml", ":5: segments[1].type: unknown segment type \"hover\" (known: "},
+  };
+  for (const Case& c : cases) {
+    const fs::path out = tmp / "out";
+    const Result r = sinsim("run '" + kFixtures + c.file + "' -o '" + out.string() + "'", tmp);
+    INFO(c.file << "\nstderr: " << r.err);
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.find(kFixtures + c.file + c.located) != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim run: a good scenario, overrides, and a bad model or option") {
+  const fs::path tmp = tempDir("good");
+  const std::string scenario = "'" + kFixtures + "good_short.yaml'";
+  Result r = sinsim("run " + scenario + " -o '" + (tmp / "a").string() + "' --seed 5 --model none",
+                    tmp);
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find((tmp / "a").string()) != std::string::npos);
+  CHECK(r.out.find("final horizontal error") != std::string::npos);
+  for (const char* f : {"truth.csv", "nav.csv", "errors.csv", "summary.json"})
+    CHECK(fs::is_regular_file(tmp / "a" / f));
+  CHECK(slurp(tmp / "a" / "summary.json").find("\"seed\": 5") != std::string::npos);
+
+  r = sinsim("run " + scenario + " -o '" + (tmp / "b").string() + "' --model no_such.yaml", tmp);
+  CHECK(r.exitCode == 1);
+  CHECK(r.err.find("no_such.yaml") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "b"));
+
+  r = sinsim("run " + scenario + " --seed minus-one", tmp);
+  CHECK(r.exitCode == 2);  // command-line error (CLI11)
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim run without arguments runs the default scenario into out/<name>") {
+  // From a folder that is not the checkout: the default scenario is found via the source tree.
+  const fs::path tmp = tempDir("default");
+  const Result r = sinsim("run", tmp, tmp.string());
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  CHECK(r.exitCode == 0);
+  CHECK(r.out.find("scenarios/car.yaml") != std::string::npos);
+  CHECK(r.out.find("car: ") != std::string::npos);
+  CHECK(fs::is_regular_file(tmp / "out" / "car" / "errors.csv"));
+  fs::remove_all(tmp);
+}

@@ -1,0 +1,216 @@
+// Scenario parsing: the shipped examples load, every bad input is reported with file, line and
+// key path, all problems of a file at once.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "common/error.hpp"
+#include "sim/scenario.hpp"
+
+using namespace sinsim;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+// The diagnostics of parsing `text`, or a test failure if it parses.
+std::vector<Diagnostic> problems(const std::string& text) {
+  try {
+    sim::parseScenario(text, "bad.yaml");
+  } catch (const ConfigError& e) {
+    return e.diagnostics();
+  }
+  FAIL("scenario parsed without error:\n" << text);
+  return {};
+}
+
+bool has(const std::vector<Diagnostic>& ds, int line, const std::string& key,
+         const std::string& fragment) {
+  for (const auto& d : ds)
+    if (d.file == "bad.yaml" && d.line == line && d.key == key &&
+        d.message.find(fragment) != std::string::npos)
+      return true;
+  return false;
+}
+
+std::string listing(const std::vector<Diagnostic>& ds) {
+  std::string s;
+  for (const auto& d : ds) s += d.str() + "\n";
+  return s;
+}
+
+const char* kGood = R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments: [{type: static, duration: 10 s}]
+)";
+}  // namespace
+
+TEST_CASE("shipped scenarios load with the documented durations") {
+  const std::string dir = std::string(SINSIM_SOURCE_DIR) + "/scenarios/";
+  const sim::Scenario st = sim::loadScenario(dir + "static.yaml");
+  CHECK(st.duration() == 3600.0);
+  CHECK(st.start.lat == Approx(45.0 * kPi / 180.0).epsilon(1e-15));
+  const sim::Scenario car = sim::loadScenario(dir + "car.yaml");
+  CHECK(car.duration() >= 1800.0);  // issue 2: ≥ 30 min
+  CHECK(car.duration() == Approx(90.0 + 7 * 284.0).epsilon(1e-12));
+  const sim::Scenario air = sim::loadScenario(dir + "aircraft.yaml");
+  CHECK(air.duration() > 1800.0);
+  CHECK(air.imuRate == 100.0);
+  CHECK(air.outputRate == 1.0);
+  CHECK(air.strapdown.vertical == nav::VerticalChannel::Damped);
+}
+
+TEST_CASE("defaults and units") {
+  const sim::Scenario sc = sim::parseScenario(kGood, "good.yaml");
+  CHECK(sc.name == "good");
+  CHECK(sc.imuRate == 100.0);
+  CHECK(sc.outputRate == 1.0);
+  CHECK(sc.decimation() == 100);
+  CHECK(sc.errors.empty());
+  CHECK_FALSE(sc.temperature.present);
+  CHECK(std::isnan(sc.temperature.at(0.0)));
+  CHECK_FALSE(sc.seed.has_value());
+
+  const sim::Scenario t = sim::parseScenario(R"(
+start: {latitude: 1 deg, longitude: 2 deg, speed: 36 kph, heading: -90 deg}
+imu_rate: 200 Hz
+output_rate: 10 Hz
+vertical: held
+temperature: {start: 20 degC, end: 30 degC}
+seed: 7
+segments:
+  - {type: cruise, duration: 1 min}
+  - {type: turn, heading: 0 deg, duration: 10 s}
+  - {type: repeat, count: 3, segments: [{type: accelerate, speed: 20 m/s, duration: 5 s},
+                                        {type: decelerate, speed: 10 m/s, duration: 5 s}]}
+)", "t.yaml");
+  CHECK(t.start.speed == Approx(10.0).epsilon(1e-15));
+  CHECK(t.decimation() == 20);
+  CHECK(t.strapdown.vertical == nav::VerticalChannel::Held);
+  CHECK(t.temperature.at(0.0) == Approx(293.15).epsilon(1e-15));
+  CHECK(t.temperature.at(t.duration()) == Approx(303.15).epsilon(1e-14));
+  CHECK(*t.seed == 7);
+  REQUIRE(t.segments.size() == 8);
+  CHECK(t.duration() == 100.0);
+  CHECK(t.segments[1].change == Approx(kPi / 2).epsilon(1e-15));  // -90° → 0°: a right turn
+  CHECK(t.segments[7].change == Approx(-10.0).epsilon(1e-15));
+}
+
+TEST_CASE("bad scenario: unknown key names it, its line and the known keys") {
+  const auto ds = problems(R"(start:
+  latitude: 45 deg
+  longitud: 7 deg
+segments: [{type: static, duration: 10 s}]
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 3, "start.longitud", "did you mean \"longitude\""));
+  CHECK(has(ds, 2, "start.longitude", "missing key"));  // the line where start's map begins
+}
+
+TEST_CASE("bad scenario: missing start") {
+  const auto ds = problems("segments: [{type: static, duration: 10 s}]\n");
+  INFO(listing(ds));
+  CHECK(has(ds, 1, "start", "missing key"));
+}
+
+TEST_CASE("bad scenario: negative and zero durations") {
+  const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments:
+  - {type: static, duration: 10 s}
+  - {type: static, duration: -3 s}
+  - {type: static, duration: 0 s}
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 4, "segments[1].duration", "expected a positive duration, got \"-3 s\""));
+  CHECK(has(ds, 5, "segments[2].duration", "expected a positive duration"));
+}
+
+TEST_CASE("bad scenario: a unit that does not fit") {
+  const auto ds = problems(R"(start:
+  latitude: 45 m
+  longitude: 7 deg
+segments: [{type: static, duration: 10 m/s}]
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 2, "start.latitude", "expected a value in deg"));
+  CHECK(has(ds, 4, "segments[0].duration", "expected a value in s"));
+}
+
+TEST_CASE("bad scenario: unknown segment type lists the known ones") {
+  const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments:
+  - {type: static, duration: 10 s}
+  - {type: hover, duration: 10 s}
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 4, "segments[1].type",
+            "unknown segment type \"hover\" (known: accelerate, climb, cruise, decelerate, "
+            "descend, pitch, roll, static, turn, repeat)"));
+}
+
+TEST_CASE("bad scenario: every problem of the file is reported at once") {
+  const auto ds = problems(R"(start: {latitude: 95 deg, longitude: 7 deg, speed: -1 m/s}
+imu_rate: 100 Hz
+output_rate: 3 Hz
+vertical: sinking
+colour: red
+segments:
+  - {type: turn, heading_change: 90 deg, heading: 10 deg, duration: 5 s}
+  - {type: climb, height_change: -5 m, duration: 5 s}
+  - {type: repeat, count: 0, segments: [{type: cruise}]}
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 1, "start.latitude", "89 deg"));
+  CHECK(has(ds, 1, "start.speed", "speed ≥ 0"));
+  CHECK(has(ds, 3, "output_rate", "divide"));
+  CHECK(has(ds, 4, "vertical", "free, held, damped"));
+  CHECK(has(ds, 5, "colour", "unknown key"));
+  CHECK(has(ds, 7, "segments[0]", "not both"));
+  CHECK(has(ds, 8, "segments[1].height_change", "use descend"));
+  CHECK(has(ds, 9, "segments[2].count", "count ≥ 1"));
+  CHECK(has(ds, 9, "segments[2].segments[0].duration", "missing key"));
+  CHECK(ds.size() == 9);
+}
+
+TEST_CASE("bad scenario: motions that cannot be flown, located at their segment") {
+  SECTION("static while moving") {
+    const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg, speed: 10 m/s}
+segments:
+  - {type: cruise, duration: 10 s}
+  - {type: static, duration: 10 s}
+)");
+    INFO(listing(ds));
+    CHECK(has(ds, 4, "segments[1]", "at rest"));
+  }
+  SECTION("too steep a climb, inside a repeat") {
+    const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg, speed: 10 m/s}
+segments:
+  - type: repeat
+    count: 3
+    segments:
+      - {type: climb, height_change: 40 m, duration: 10 s}
+      - {type: decelerate, speed: 1 m/s, duration: 10 s}
+)");
+    INFO(listing(ds));
+    // 10 m/s: 2·40/10 = 8 m/s peak vertical speed is fine; at 1 m/s on the second lap it is not
+    CHECK(has(ds, 6, "segments[0].segments[0]", "too steep"));
+    CHECK(has(ds, 6, "segments[0].segments[0]", "(repetition 2 of 3)"));
+    CHECK(ds.size() == 1);
+  }
+  SECTION("decelerate that speeds up, bank without speed") {
+    const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments:
+  - {type: turn, heading_change: 90 deg, bank: 20 deg}
+)");
+    INFO(listing(ds));
+    CHECK(has(ds, 3, "segments[0]", "needs forward speed"));
+  }
+}
+
+TEST_CASE("bad scenario: error model file that does not exist is located at errors") {
+  try {
+    sim::parseScenario(std::string(kGood) + "errors: no/such/model.yaml\n", "bad.yaml", "/tmp");
+    FAIL("parsed");
+  } catch (const ConfigError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("/tmp/no/such/model.yaml") != std::string::npos);
+  }
+}
