@@ -52,7 +52,7 @@ TEST_CASE("rotation vector to quaternion matches Eigen::AngleAxis") {
   CHECK(q0.vec() == Vec3::Zero());
 }
 
-TEST_CASE("quaternion to rotation vector round trip, including 180 degrees") {
+TEST_CASE("quaternion to rotation vector round trip including 180 degrees") {
   for (const Vec3& u : axes()) {
     for (double th : {0.0, 1e-12, 1e-5, 0.5, 2.0, kPi - 1e-6, kPi - 1e-9}) {
       const Vec3 phi = th * u;
@@ -133,7 +133,7 @@ TEST_CASE("Euler angles at and near gimbal lock reproduce the DCM") {
   }
 }
 
-TEST_CASE("wrapAngle maps to (-pi, pi]") {
+TEST_CASE("wrapAngle maps into the half-open interval from -pi to pi") {
   CHECK(wrapAngle(0.0) == 0.0);
   CHECK(wrapAngle(kPi) == kPi);
   CHECK(wrapAngle(-kPi) == kPi);

@@ -200,7 +200,7 @@ TEST_CASE("Euler-rate body rate agrees with the derivative of the DCM") {
   }
 }
 
-TEST_CASE("error-free car drive, 30 min at 100 Hz: horizontal error below 1 cm") {
+TEST_CASE("error-free car drive of 30 min at 100 Hz: horizontal error below 1 cm") {
   const DynResult r = fly(carProfile(), 48.0 * kDeg, 300.0, 1800.0, 100.0);
   std::printf("car 30 min, %.1f km: max horizontal error %.3g m, velocity %.3g m/s, attitude "
               "%.3g rad\n",
@@ -209,7 +209,7 @@ TEST_CASE("error-free car drive, 30 min at 100 Hz: horizontal error below 1 cm")
   CHECK(r.horizontal < 0.01);
 }
 
-TEST_CASE("error-free aircraft flight, 30 min at 100 Hz: horizontal error below 1 cm") {
+TEST_CASE("error-free aircraft flight of 30 min at 100 Hz: horizontal error below 1 cm") {
   const DynResult r = fly(aircraftProfile(), -33.0 * kDeg, 3000.0, 1800.0, 100.0);
   std::printf("aircraft 30 min, %.1f km: max horizontal error %.3g m, velocity %.3g m/s, "
               "attitude %.3g rad\n",
