@@ -26,6 +26,7 @@
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/mc_output.hpp"
+#include "sim/measured.hpp"
 #include "sim/montecarlo.hpp"
 #include "sim/scenario.hpp"
 
@@ -87,24 +88,6 @@ double parseAngle(const std::string& text, const std::string& what) {
     throw InputError(what + ": " + e.what());
   }
 }
-
-// The measured record as an ImuCorruptor: it replaces the ideal increments of the static
-// reference by the recorded rate × dt (the record is the "sensor").
-class RecordReplay final : public errormodels::ImuCorruptor {
- public:
-  RecordReplay(const errormodels::Record& r, double rate) : rec_(r), rate_(rate) {}
-  void corrupt(nav::ImuSample& s, double) override {
-    const auto k = std::size_t(std::llround(s.t * rate_)) - 1;
-    for (int a = 0; a < 3; ++a) {
-      s.dtheta_b[a] = rec_.gyro[a][k] * s.dt;
-      s.dv_b[a] = rec_.accel[a][k] * s.dt;
-    }
-  }
-
- private:
-  const errormodels::Record& rec_;
-  double rate_;
-};
 
 std::string fmt(double v, const char* f = "%.6g") {
   char buf[64];
@@ -200,39 +183,24 @@ int runMc(const Args& a) {
       n -= n % std::size_t(perOut);  // whole output epochs
       if (n == 0) throw InputError(a.measured + ": the record is shorter than one output epoch");
       if (a.biasWindow.empty()) biasWindow = std::min(60.0, 0.1 * double(n) / rate);
-      // Attitude: stated, or levelled from the mean specific force over the bias window:
-      // at rest f_b = C_bn (0, 0, −g): roll = atan2(−f_y, −f_z), pitch = atan2(f_x, √(f_y²+f_z²)).
-      double roll = 0, pitch = 0, yaw = parseAngle(a.heading, "--heading");
+      // Attitude: stated, or levelled from the mean specific force over the bias window.
+      nav::Vec3 rpy;
       if (!a.attitude.empty()) {
         const auto parts = splitList(a.attitude);
         if (parts.size() != 3) throw InputError("--attitude: expected roll,pitch,yaw");
-        roll = parseAngle(parts[0], "--attitude");
-        pitch = parseAngle(parts[1], "--attitude");
-        yaw = parseAngle(parts[2], "--attitude");
+        rpy = nav::Vec3(parseAngle(parts[0], "--attitude"), parseAngle(parts[1], "--attitude"),
+                        parseAngle(parts[2], "--attitude"));
       } else {
-        const auto nb = std::max<std::size_t>(1, std::min(n, std::size_t(std::llround(
-                                                                 std::max(biasWindow, 1.0) * rate))));
-        double f[3] = {0, 0, 0};
-        for (int ax = 0; ax < 3; ++ax) {
-          for (std::size_t k = 0; k < nb; ++k) f[ax] += record->accel[ax][k];
-          f[ax] /= double(nb);
-        }
-        roll = std::atan2(-f[1], -f[2]);
-        pitch = std::atan2(f[0], std::hypot(f[1], f[2]));
+        rpy = sim::levelAttitude(*record, std::size_t(std::llround(std::max(biasWindow, 1.0) * rate)),
+                                 parseAngle(a.heading, "--heading"));
       }
-      std::ostringstream y;
-      y.precision(17);
-      y << "name: measured-" << fs::path(a.measured).stem().stem().string() << "\n"
-        << "start:\n  latitude: " << parseAngle(a.latitude, "--latitude") * 180 / M_PI << " deg\n"
-        << "  longitude: " << parseAngle(a.longitude, "--longitude") * 180 / M_PI << " deg\n"
-        << "  height: " << parseQuantityAs(a.height, Dimension::length()) << " m\n"
-        << "  attitude: {roll: " << roll * 180 / M_PI << " deg, pitch: " << pitch * 180 / M_PI
-        << " deg, yaw: " << yaw * 180 / M_PI << " deg}\n"
-        << "imu_rate: " << rate << " Hz\noutput_rate: " << a.outputRate << " Hz\n"
-        << "vertical: " << a.vertical << "\nerrors: none\n"
-        << "segments:\n  - {type: static, duration: " << double(n) / rate << " s}\n";
-      sc = sim::parseScenario(y.str(), "(static scenario of " + a.measured + ")");
-      scenarioIdentity = y.str();
+      const std::string yaml = sim::staticScenarioYaml(
+          "measured-" + fs::path(a.measured).stem().stem().string(),
+          parseAngle(a.latitude, "--latitude"), parseAngle(a.longitude, "--longitude"),
+          parseQuantityAs(a.height, Dimension::length()), rpy, rate, a.outputRate, a.vertical,
+          double(n) / rate);
+      sc = sim::parseScenario(yaml, "(static scenario of " + a.measured + ")");
+      scenarioIdentity = yaml;
     } else {
       if (a.scenario.empty()) throw InputError("name a scenario file (or give --measured DATA.csv)");
       sc = sim::loadScenario(a.scenario);
@@ -295,7 +263,7 @@ int runMc(const Args& a) {
     if (record) {
       measured.source = a.measured;
       measured.errors.resize(ref.epochs() * sim::kErrorFields);
-      RecordReplay replay(*record, ref.imuRate);
+      sim::RecordReplay replay(*record, ref.imuRate);
       sim::navigateRealisation(ref, &replay, opt.navigate, measured.errors.data());
       opt.measured = &measured;
     }

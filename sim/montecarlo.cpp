@@ -266,6 +266,15 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
         }
       }
     }
+    // Temporaries of a process that was killed while writing: never valid, remove them.
+    if (fs::exists(opt.outDir, ec)) {
+      std::vector<fs::path> stale;
+      for (auto it = fs::recursive_directory_iterator(opt.outDir, ec);
+           it != fs::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_regular_file(ec) && it->path().filename().string().find(".tmp.") != std::string::npos)
+          stale.push_back(it->path());
+      for (const auto& p : stale) fs::remove(p, ec);
+    }
     for (const auto& d : dirs) {
       fs::create_directories(runsDir / d, ec);
       if (ec) throw InputError("cannot create " + (runsDir / d).string() + ": " + ec.message());
