@@ -39,9 +39,11 @@ class ArState final : public HeldProcessState {
   }
 
  protected:
+  // The oldest terms are summed first and y[n-1] last: the chain from one sample to the next is
+  // then one multiply-add, not p of them (the recursion's latency bounds its speed).
   double next() override {
     double y = sigmaE_ * s_.next();
-    for (int i = 0; i < p_; ++i) y += negA_[i] * hist_[i];
+    for (int i = p_ - 1; i >= 0; --i) y += negA_[i] * hist_[i];
     for (int i = p_ - 1; i > 0; --i) hist_[i] = hist_[i - 1];
     hist_[0] = y;
     return y;
@@ -74,7 +76,7 @@ class ArState final : public HeldProcessState {
     }
     for (int k = 0; k < n; ++k) {
       double y = sigmaE_ * s_.next();
-      for (int i = 0; i < P; ++i) y += a[i] * h[i];
+      for (int i = P - 1; i >= 0; --i) y += a[i] * h[i];
       for (int i = P - 1; i > 0; --i) h[i] = h[i - 1];
       h[0] = y;
       out[k] = y;
