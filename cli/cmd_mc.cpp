@@ -119,6 +119,14 @@ struct Args {
 };
 
 #ifdef SINSIM_HAVE_MPI
+// MPI is started only when the process was launched by an MPI launcher (mpirun/srun set these
+// variables); a plain `sinsim mc` of the MPI build behaves exactly like the ordinary build.
+bool launchedByMpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
 struct MpiSession {
   int rank = 0, size = 1;
   MpiSession() {
@@ -139,9 +147,11 @@ int runMc(const Args& a) {
   int rank = 0, size = 1;
   sim::McPartition partition;
 #ifdef SINSIM_HAVE_MPI
-  static MpiSession mpi;  // finalised at exit
-  rank = mpi.rank;
-  size = mpi.size;
+  if (launchedByMpi()) {
+    static MpiSession mpi;  // finalised at exit
+    rank = mpi.rank;
+    size = mpi.size;
+  }
   if (size > 1) {
     partition.rank = rank;
     partition.size = size;

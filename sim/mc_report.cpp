@@ -35,7 +35,6 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
     if (batch.entries[m].parent < 0) prim.push_back(m);
 
   HtmlPage page("sinsim mc: " + ref.name);
-  page.heading("Monte Carlo: " + ref.name, 1);
   page.paragraph(std::to_string(batch.runs) + " runs per model, seed " +
                  std::to_string(batch.seed) + "; run k of every model uses the random streams "
                  "StreamKey{seed, k}, so the models are compared on paired realisations. " +
