@@ -161,6 +161,11 @@ int runMc(const Args& a) {
       MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
       return out != 0;
     };
+    partition.sum = [](std::uint64_t v) {
+      unsigned long long in = v, out = 0;
+      MPI_Allreduce(&in, &out, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+      return std::uint64_t(out);
+    };
   }
 #endif
   try {
@@ -298,7 +303,7 @@ int runMc(const Args& a) {
     if (tty) std::fputs("\n", stderr);
 
     if (rank != 0) return r.complete ? 0 : 130;
-    const double steps = double(r.runsComputed) * double(ref.samples.size());
+    const double steps = double(r.runsComputedAll) * double(ref.samples.size());
     if (!r.complete) {
       std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
                 << ") after " << r.runsComputed << " runs this session; "
@@ -311,7 +316,7 @@ int runMc(const Args& a) {
               << " runs" << (opt.budget ? " (+ budget variants)" : "") << " -> " << opt.outDir
               << " (";
     for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
-    std::cout << ")\n  " << r.runsComputed << " runs computed";
+    std::cout << ")\n  " << r.runsComputedAll << " runs computed";
     if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
     std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
               << " s CPU, " << r.threads << " thread(s)"

@@ -400,6 +400,8 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     }
   }
   if (opt.partition.anyOf) result.complete = opt.partition.anyOf(result.complete);
+  result.runsComputedAll =
+      opt.partition.sum ? opt.partition.sum(result.runsComputed) : result.runsComputed;
 
   result.wallTime =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();

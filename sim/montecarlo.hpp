@@ -56,6 +56,8 @@ struct McPartition {
   std::function<void()> barrier;
   /// Logical OR of a flag across processes (MPI_Allreduce); empty for one process.
   std::function<bool(bool)> anyOf;
+  /// Sum of a count across processes (MPI_Allreduce); empty for one process.
+  std::function<std::uint64_t(std::uint64_t)> sum;
 };
 
 struct McOptions {
@@ -87,6 +89,7 @@ struct McOptions {
 struct McResult {
   bool complete = false;       // every run of every model present (outputs written by rank 0)
   std::uint64_t runsComputed = 0;  // by this process in this session
+  std::uint64_t runsComputedAll = 0;  // by every process (MPI ranks) in this session
   std::uint64_t runsResumed = 0;   // found in checkpoints at the start
   std::uint64_t runsTotal = 0;     // runs × (models incl. budget variants)
   std::vector<std::string> files;  // outputs written (rank 0, when complete)
