@@ -95,7 +95,7 @@ TEST_CASE("formatFixed strips trailing zeros and never prints minus zero") {
   CHECK(formatFixed(kNaN, 2) == "nan");
 }
 
-TEST_CASE("linear ticks step by 1, 2 or 5 times a power of ten") {
+TEST_CASE("linear ticks step by 1 or 2 or 5 times a power of ten") {
   SECTION("[0, 7.3] with 6 intervals wanted: step 1 (7.3 intervals) beats step 2 (3.65)") {
     const Ticks t = linearTicks(0, 7.3, 6);
     CHECK(t.major == std::vector<double>{0, 1, 2, 3, 4, 5, 6, 7});
@@ -269,14 +269,14 @@ TEST_CASE("the XML checker itself rejects broken documents") {
   CHECK(xmlProblem("<a x=\"&lt;&#39;&#x3c;\">&amp;</a>") == "");
 }
 
-TEST_CASE("output is deterministic: same input, same bytes") {
+TEST_CASE("output is deterministic: same input gives the same bytes") {
   const std::string a = sinsim::report::testing::samplePage().html();
   const std::string b = sinsim::report::testing::samplePage().html();
   CHECK(a == b);
   CHECK(a.size() > 10000);
 }
 
-TEST_CASE("the legend goes to a corner free of data, else beside the plot") {
+TEST_CASE("the legend goes to a corner free of data or else beside the plot") {
   SECTION("rising line: top-left and bottom-right are free; top-right is not") {
     Plot p;
     p.add(Series{"rising", {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10}});
@@ -305,7 +305,7 @@ TEST_CASE("the legend goes to a corner free of data, else beside the plot") {
   }
 }
 
-TEST_CASE("x tick labels never overlap, even on a narrow plot") {
+TEST_CASE("x tick labels never overlap even on a narrow plot") {
   for (int width : {160, 300, 760}) {
     Plot p;
     p.add(Series{"", {0, 1.23456e6}, {0, 1}});
