@@ -101,6 +101,7 @@ struct LegendEntry {
   bool dashed = false;
   double width = 1.8, opacity = 1;
   bool markers = false;
+  bool outline = false;
 };
 
 struct Layout {
@@ -192,7 +193,7 @@ std::string Plot::svg(int width, int height) const {
                         series_[i].width, 1, series_[i].markers});
     } else if (kind == Kind::Band && !bands_[i].label.empty()) {
       legend.push_back({LegendEntry::Fill, bands_[i].label, bandColor_[i], false, 0,
-                        std::clamp(bands_[i].opacity, 0.0, 1.0)});
+                        std::clamp(bands_[i].opacity, 0.0, 1.0), false, bands_[i].edges});
     } else if (kind == Kind::Shade && !shades_[i].label.empty()) {
       const Shade& s = shades_[i];
       const bool dup = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) {
@@ -396,6 +397,15 @@ std::string Plot::svg(int width, int height) const {
       d += " Z";
       o += "<path d=\"" + d + "\" fill=\"" + escape(bandColor_[bi]) + "\" fill-opacity=\"" +
            formatFixed(std::clamp(b.opacity, 0.0, 1.0), 3) + "\" stroke=\"none\"/>\n";
+      if (b.edges) {
+        std::string e;
+        for (const Run* r : {&upper, &lower})
+          for (std::size_t k = 0; k < r->size(); ++k)
+            e += (k == 0 ? (e.empty() ? "M" : " M") : " L") + num((*r)[k].first) + "," +
+                 num((*r)[k].second);
+        o += "<path d=\"" + e + "\" fill=\"none\" stroke=\"" + escape(bandColor_[bi]) +
+             "\" stroke-opacity=\"0.6\" stroke-width=\"0.8\"/>\n";
+      }
       i = j;
     }
   }
@@ -491,7 +501,11 @@ std::string Plot::svg(int width, int height) const {
       } else {
         o += "<rect x=\"" + num(sx) + "\" y=\"" + num(cy - 6) + "\" width=\"" + num(legendSwatch) +
              "\" height=\"12\" fill=\"" + escape(e.color) + "\" fill-opacity=\"" +
-             formatFixed(std::max(e.opacity, 0.15), 3) + "\"/>\n";
+             formatFixed(std::max(e.opacity, 0.15), 3) + "\"" +
+             (e.outline ? " stroke=\"" + escape(e.color) +
+                              "\" stroke-opacity=\"0.6\" stroke-width=\"0.8\""
+                        : std::string()) +
+             "/>\n";
       }
       o += "<text x=\"" + num(sx + legendSwatch + 8) + "\" y=\"" + num(cy + kLegendSize * 0.36) +
            "\" fill=\"#222\">" + escape(e.label) + "</text>\n";

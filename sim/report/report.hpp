@@ -41,12 +41,14 @@ struct Band {
   std::vector<double> x, lo, hi;  ///< same length
   std::string color;              ///< empty = next colour of the palette
   double opacity = 0.22;          ///< fill opacity in [0, 1]
+  bool edges = true;              ///< thin lines along lo and hi (tells overlapping bands apart)
 
   Band() = default;
   Band(std::string label_, std::vector<double> x_, std::vector<double> lo_,
-       std::vector<double> hi_, std::string color_ = "", double opacity_ = 0.22)
+       std::vector<double> hi_, std::string color_ = "", double opacity_ = 0.22,
+       bool edges_ = true)
       : label(std::move(label_)), x(std::move(x_)), lo(std::move(lo_)), hi(std::move(hi_)),
-        color(std::move(color_)), opacity(opacity_) {}
+        color(std::move(color_)), opacity(opacity_), edges(edges_) {}
 };
 
 /// A vertical shaded x-range over the whole plot height, e.g. a τ-range where a test fails.

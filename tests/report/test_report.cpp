@@ -376,7 +376,7 @@ TEST_CASE("mismatched lengths and unusable fixed ranges are input errors") {
   CHECK_THROWS_AS(d.svg(), sinsim::InputError);
 }
 
-TEST_CASE("an empty plot still renders a framed, well-formed SVG") {
+TEST_CASE("an empty plot still renders a framed and well-formed SVG") {
   Plot p("empty", "x", "y");
   CHECK(xmlProblem(p.svg()) == "");
   p.xLog = p.yLog = true;
