@@ -100,6 +100,8 @@ struct LegendEntry {
   std::string label, color;
   bool dashed = false;
   double width = 1.8, opacity = 1;
+  bool markers = false;
+  bool outline = false;
 };
 
 struct Layout {
@@ -110,18 +112,21 @@ struct Layout {
 }  // namespace
 
 Plot& Plot::add(Series s) {
+  order_.emplace_back(Kind::Series, series_.size());
   seriesColor_.push_back(s.color.empty() ? paletteColor(nextColor_++) : s.color);
   series_.push_back(std::move(s));
   return *this;
 }
 
 Plot& Plot::add(Band b) {
+  order_.emplace_back(Kind::Band, bands_.size());
   bandColor_.push_back(b.color.empty() ? paletteColor(nextColor_++) : b.color);
   bands_.push_back(std::move(b));
   return *this;
 }
 
 Plot& Plot::add(Shade s) {
+  order_.emplace_back(Kind::Shade, shades_.size());
   shades_.push_back(std::move(s));
   return *this;
 }
@@ -182,22 +187,22 @@ std::string Plot::svg(int width, int height) const {
 
   // --- legend entries ---------------------------------------------------------------------------
   std::vector<LegendEntry> legend;
-  for (std::size_t i = 0; i < series_.size(); ++i)
-    if (!series_[i].label.empty())
+  for (const auto& [kind, i] : order_) {
+    if (kind == Kind::Series && !series_[i].label.empty()) {
       legend.push_back({LegendEntry::Line, series_[i].label, seriesColor_[i], series_[i].dashed,
-                        series_[i].width, 1});
-  for (std::size_t i = 0; i < bands_.size(); ++i)
-    if (!bands_[i].label.empty())
+                        series_[i].width, 1, series_[i].markers});
+    } else if (kind == Kind::Band && !bands_[i].label.empty()) {
       legend.push_back({LegendEntry::Fill, bands_[i].label, bandColor_[i], false, 0,
-                        std::clamp(bands_[i].opacity, 0.0, 1.0)});
-  for (const Shade& s : shades_) {
-    if (s.label.empty()) continue;
-    const bool dup = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) {
-      return e.kind == LegendEntry::Fill && e.label == s.label && e.color == s.color;
-    });
-    if (!dup)
-      legend.push_back({LegendEntry::Fill, s.label, s.color, false, 0,
-                        std::clamp(s.opacity, 0.0, 1.0)});
+                        std::clamp(bands_[i].opacity, 0.0, 1.0), false, bands_[i].edges});
+    } else if (kind == Kind::Shade && !shades_[i].label.empty()) {
+      const Shade& s = shades_[i];
+      const bool dup = std::any_of(legend.begin(), legend.end(), [&](const LegendEntry& e) {
+        return e.kind == LegendEntry::Fill && e.label == s.label && e.color == s.color;
+      });
+      if (!dup)
+        legend.push_back({LegendEntry::Fill, s.label, s.color, false, 0,
+                          std::clamp(s.opacity, 0.0, 1.0)});
+    }
   }
   const double legendRow = kLegendSize + 6, legendSwatch = 26;
   double legendW = 0, legendH = 0;
@@ -392,6 +397,15 @@ std::string Plot::svg(int width, int height) const {
       d += " Z";
       o += "<path d=\"" + d + "\" fill=\"" + escape(bandColor_[bi]) + "\" fill-opacity=\"" +
            formatFixed(std::clamp(b.opacity, 0.0, 1.0), 3) + "\" stroke=\"none\"/>\n";
+      if (b.edges) {
+        std::string e;
+        for (const Run* r : {&upper, &lower})
+          for (std::size_t k = 0; k < r->size(); ++k)
+            e += (k == 0 ? (e.empty() ? "M" : " M") : " L") + num((*r)[k].first) + "," +
+                 num((*r)[k].second);
+        o += "<path d=\"" + e + "\" fill=\"none\" stroke=\"" + escape(bandColor_[bi]) +
+             "\" stroke-opacity=\"0.6\" stroke-width=\"0.8\"/>\n";
+      }
       i = j;
     }
   }
@@ -481,10 +495,17 @@ std::string Plot::svg(int width, int height) const {
                              formatFixed(2.5 * e.width, 2) + "\""
                        : std::string()) +
              "/>\n";
+        if (e.markers)
+          o += "<circle cx=\"" + num(sx + legendSwatch / 2) + "\" cy=\"" + num(cy) + "\" r=\"" +
+               formatFixed(e.width + 1.2, 2) + "\" fill=\"" + escape(e.color) + "\"/>\n";
       } else {
         o += "<rect x=\"" + num(sx) + "\" y=\"" + num(cy - 6) + "\" width=\"" + num(legendSwatch) +
              "\" height=\"12\" fill=\"" + escape(e.color) + "\" fill-opacity=\"" +
-             formatFixed(std::max(e.opacity, 0.15), 3) + "\"/>\n";
+             formatFixed(std::max(e.opacity, 0.15), 3) + "\"" +
+             (e.outline ? " stroke=\"" + escape(e.color) +
+                              "\" stroke-opacity=\"0.6\" stroke-width=\"0.8\""
+                        : std::string()) +
+             "/>\n";
       }
       o += "<text x=\"" + num(sx + legendSwatch + 8) + "\" y=\"" + num(cy + kLegendSize * 0.36) +
            "\" fill=\"#222\">" + escape(e.label) + "</text>\n";

@@ -26,6 +26,12 @@ struct Series {
   bool dashed = false;
   double width = 1.8;           ///< stroke width [px]
   bool markers = false;         ///< draw a dot at every point
+
+  Series() = default;
+  Series(std::string label_, std::vector<double> x_, std::vector<double> y_,
+         std::string color_ = "", bool dashed_ = false, double width_ = 1.8, bool markers_ = false)
+      : label(std::move(label_)), x(std::move(x_)), y(std::move(y_)), color(std::move(color_)),
+        dashed(dashed_), width(width_), markers(markers_) {}
 };
 
 /// A filled region between lo(x) and hi(x), e.g. a confidence band or a ±3σ envelope.
@@ -35,6 +41,14 @@ struct Band {
   std::vector<double> x, lo, hi;  ///< same length
   std::string color;              ///< empty = next colour of the palette
   double opacity = 0.22;          ///< fill opacity in [0, 1]
+  bool edges = true;              ///< thin lines along lo and hi (tells overlapping bands apart)
+
+  Band() = default;
+  Band(std::string label_, std::vector<double> x_, std::vector<double> lo_,
+       std::vector<double> hi_, std::string color_ = "", double opacity_ = 0.22,
+       bool edges_ = true)
+      : label(std::move(label_)), x(std::move(x_)), lo(std::move(lo_)), hi(std::move(hi_)),
+        color(std::move(color_)), opacity(opacity_), edges(edges_) {}
 };
 
 /// A vertical shaded x-range over the whole plot height, e.g. a τ-range where a test fails.
@@ -43,6 +57,11 @@ struct Shade {
   std::string color = "#d62728";
   std::string label;
   double opacity = 0.12;
+
+  Shade() = default;
+  Shade(double x0_, double x1_, std::string color_ = "#d62728", std::string label_ = "",
+        double opacity_ = 0.12)
+      : x0(x0_), x1(x1_), color(std::move(color_)), label(std::move(label_)), opacity(opacity_) {}
 };
 
 /// Axis ticks: positions (in data units) and the label of each major tick.
@@ -84,7 +103,8 @@ class Plot {
   Plot(std::string title_, std::string xLabel_, std::string yLabel_)
       : title(std::move(title_)), xLabel(std::move(xLabel_)), yLabel(std::move(yLabel_)) {}
 
-  /// Items are drawn in this order within their kind: shades, then bands, then series.
+  /// Drawing order: all shades, then all bands, then all series (each kind in the order added);
+  /// the legend lists labelled items in the order added (shades with equal label and colour once).
   Plot& add(Series s);
   Plot& add(Band b);
   Plot& add(Shade s);
@@ -103,6 +123,8 @@ class Plot {
   std::vector<Shade> shades_;
   std::vector<std::string> seriesColor_, bandColor_;  // resolved at add() time
   std::size_t nextColor_ = 0;
+  enum class Kind { Series, Band, Shade };
+  std::vector<std::pair<Kind, std::size_t>> order_;  // legend order
 };
 
 /// A table cell: text plus an optional CSS class. Built-in classes: "pass" (green), "fail" (red),
