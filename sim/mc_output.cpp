@@ -320,7 +320,11 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     j["measured"] = mj;
   }
 
-  j["files"] = {"stats.csv", "summary.json", "report.html"};
+  std::vector<std::string> names = files;
+  names.push_back("summary.json");
+  names.push_back("report.html");
+  names.push_back("runs/ (checkpoints)");
+  j["files"] = names;
   std::FILE* fs = out.open("summary.json");
   const std::string text = j.dump(2) + "\n";
   std::fputs(text.c_str(), fs);
