@@ -174,3 +174,23 @@ TEST_CASE("sinsim mc: checkpoints are protected: no silent overwrite, no resume 
   CHECK_FALSE(fs::exists(tmp / "y"));
   fs::remove_all(tmp);
 }
+
+TEST_CASE("sinsim mc: a progress bar on a terminal, none when stderr is a file") {
+  const fs::path tmp = tempDir("progress");
+  const fs::path sc = writeScenario(tmp);
+  const std::string args = "mc '" + sc.string() + "' --runs 16 --threads 1 --model '" + sourceDir() +
+                           "/scenarios/adis16355-gm.yaml'";
+  const Result plain = sinsim(args + " -o '" + (tmp / "a").string() + "'", tmp);
+  REQUIRE(plain.exitCode == 0);
+  CHECK(plain.err.find("runs/s") == std::string::npos);
+  // util-linux `script` gives the command a pseudo-terminal (part of every Debian base system).
+  REQUIRE(fs::exists("/usr/bin/script"));
+  const std::string cmd = "/usr/bin/script -qec \"'" + sinsimPath() + "' " + args + " -o '" +
+                          (tmp / "b").string() + "'\" /dev/null > '" + (tmp / "pty.out").string() + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string out = slurp(tmp / "pty.out");
+  CHECK(out.find("16/16 runs") != std::string::npos);  // runs done
+  CHECK(out.find("runs/s") != std::string::npos);      // rate
+  CHECK(out.find("s left") != std::string::npos);      // time left
+  fs::remove_all(tmp);
+}
