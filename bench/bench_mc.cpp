@@ -21,37 +21,6 @@ using namespace sinsim;
 
 namespace {
 
-// 10 min: 32 s at rest, then two laps of the car.yaml block (stops, turns, hills).
-const char* kScenario = R"(name: bench10
-start: {latitude: 48.137 deg, longitude: 11.575 deg, height: 520 m, heading: 90 deg}
-imu_rate: 100 Hz
-output_rate: 1 Hz
-vertical: {channel: damped, time_constant: 100 s}
-segments:
-  - {type: static, duration: 32 s}
-  - type: repeat
-    count: 2
-    segments:
-      - {type: accelerate, speed: 50 kph, duration: 12 s}
-      - {type: cruise, duration: 25 s}
-      - {type: climb, height_change: 12 m, duration: 40 s}
-      - {type: decelerate, speed: 20 kph, duration: 8 s}
-      - {type: turn, heading_change: 90 deg, duration: 8 s}
-      - {type: accelerate, speed: 40 kph, duration: 8 s}
-      - {type: descend, height_change: 12 m, duration: 30 s}
-      - {type: decelerate, speed: 0 kph, duration: 9 s}
-      - {type: static, duration: 20 s}
-      - {type: accelerate, speed: 30 kph, duration: 8 s}
-      - {type: turn, heading_change: -90 deg, duration: 9 s}
-      - {type: cruise, duration: 20 s}
-      - {type: turn, heading_change: 90 deg, duration: 9 s}
-      - {type: accelerate, speed: 45 kph, duration: 7 s}
-      - {type: cruise, duration: 30 s}
-      - {type: decelerate, speed: 25 kph, duration: 6 s}
-      - {type: turn, heading_change: 180 deg, duration: 14 s}
-      - {type: accelerate, speed: 0 kph, duration: 9 s}
-      - {type: static, duration: 12 s}
-)";
 
 double cpuTime() {
   timespec ts{};
@@ -60,7 +29,8 @@ double cpuTime() {
 }
 
 void runBatch(benchmark::State& state, std::uint64_t runs, unsigned threads) {
-  const sim::Scenario sc = sim::parseScenario(kScenario, "bench10.yaml");
+  const sim::Scenario sc =
+      sim::loadScenario(std::string(SINSIM_SOURCE_DIR) + "/bench/car-10min.yaml");  // 10 min
   const auto model = errormodels::ImuErrorModel::load(std::string(SINSIM_SOURCE_DIR) +
                                                       "/scenarios/adis16355-ar5.yaml");
   const std::string dir = (std::filesystem::temp_directory_path() /
