@@ -222,3 +222,32 @@ TEST_CASE("Bad AR input is refused with a clear message", "[fit][input]") {
   CHECK_THROWS_AS(burg(std::vector<double>{1.0, 2.0}, 1), sinsim::InputError);
   CHECK_THROWS_AS(arAutocovariance({1.0, -1.0}, 1.0, 5), sinsim::InputError);  // unit root
 }
+
+TEST_CASE("The stated coefficient uncertainty is calibrated (Monte Carlo)", "[fit][uncertainty]") {
+  // 400 independent Gx AR(5) records of 20 000 samples: if the covariance C is right,
+  // d' C^-1 d ~ chi^2_5, whose mean over 400 draws is 5 with standard error sqrt(10/400) = 0.16.
+  // Bound: 5 +/- 4 standard errors ([4.37, 5.63]); plus each coefficient's z-score standard
+  // deviation within 1 +/- 0.15 (the sample SD of 400 normal draws has SE 0.035; 4 SE + 1 %).
+  const auto& a = fit_test::paperTable()[0].a;
+  const int runs = 400;
+  double chi2Sum = 0.0;
+  std::vector<double> z2(5, 0.0);
+  for (int r = 0; r < runs; ++r) {
+    const auto x = fit_test::simulateAr(a, 1.0, 20000, 5000 + r, 2000);
+    const ArFit fit = burg(x, 5);
+    Eigen::VectorXd d(5);
+    for (int i = 0; i < 5; ++i) {
+      d(i) = fit.a[i + 1] - a[i + 1];
+      z2[i] += d(i) * d(i) / (fit.stdError[i] * fit.stdError[i]);
+    }
+    chi2Sum += d.dot(fit.covariance.ldlt().solve(d));
+  }
+  const double meanChi2 = chi2Sum / runs;
+  INFO("mean chi2 " << meanChi2);
+  CHECK(meanChi2 >= 5.0 - 4 * 0.16);
+  CHECK(meanChi2 <= 5.0 + 4 * 0.16);
+  for (int i = 0; i < 5; ++i) {
+    INFO("coefficient a" << i + 1 << " z sd " << std::sqrt(z2[i] / runs));
+    CHECK(std::abs(std::sqrt(z2[i] / runs) - 1.0) <= 0.15);
+  }
+}
