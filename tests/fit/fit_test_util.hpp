@@ -14,6 +14,21 @@
 
 namespace fit_test {
 
+/// Overlapping Allan variance of rate samples y at interval dt [s], averaging factor m, written
+/// independently of errormodels/stats (NIST SP 1065 eq. 14, from the phase x_k = dt·Σ_{i<k} y_i).
+inline double overlappingAvar(const std::vector<double>& y, double dt, std::size_t m) {
+  std::vector<double> x(y.size() + 1, 0.0);
+  for (std::size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + y[i] * dt;
+  const double tau = double(m) * dt;
+  double s = 0.0;
+  const std::size_t terms = x.size() - 2 * m;
+  for (std::size_t i = 0; i < terms; ++i) {
+    const double d = x[i + 2 * m] - 2 * x[i + m] + x[i];
+    s += d * d;
+  }
+  return s / (2.0 * tau * tau * double(terms));
+}
+
 inline std::string fixturePath(const std::string& name) {
   return std::string(SINSIM_FIT_FIXTURES) + "/" + name;
 }

@@ -9,27 +9,10 @@
 #include "common/error.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
+#include "fit_test_util.hpp"
 
 using namespace sinsim::errormodels::fit;
-
-namespace {
-
-// Overlapping Allan variance of rate samples y at interval dt, averaging factor m
-// (NIST SP 1065 eq. 14, from the phase x_k = dt * sum_{i<k} y_i).
-double overlappingAvar(const std::vector<double>& y, double dt, std::size_t m) {
-  std::vector<double> x(y.size() + 1, 0.0);
-  for (std::size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + y[i] * dt;
-  const double tau = double(m) * dt;
-  double s = 0.0;
-  const std::size_t terms = x.size() - 2 * m;
-  for (std::size_t i = 0; i < terms; ++i) {
-    const double d = x[i + 2 * m] - 2 * x[i + m] + x[i];
-    s += d * d;
-  }
-  return s / (2.0 * tau * tau * double(terms));
-}
-
-}  // namespace
+using fit_test::overlappingAvar;
 
 TEST_CASE("NNLS satisfies the Karush-Kuhn-Tucker conditions", "[fit][nnls]") {
   // For min ||Ax - b|| s.t. x >= 0 (convex), x is optimal iff x >= 0, w = A'(b - Ax) <= 0 where

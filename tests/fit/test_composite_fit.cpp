@@ -10,23 +10,7 @@
 #include "fit_test_util.hpp"
 
 using namespace sinsim::errormodels::fit;
-
-namespace {
-
-double overlappingAvar(const std::vector<double>& y, double dt, std::size_t m) {
-  std::vector<double> x(y.size() + 1, 0.0);
-  for (std::size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + y[i] * dt;
-  const double tau = double(m) * dt;
-  double s = 0.0;
-  const std::size_t terms = x.size() - 2 * m;
-  for (std::size_t i = 0; i < terms; ++i) {
-    const double d = x[i + 2 * m] - 2 * x[i + m] + x[i];
-    s += d * d;
-  }
-  return s / (2.0 * tau * tau * double(terms));
-}
-
-}  // namespace
+using fit_test::overlappingAvar;
 
 TEST_CASE("AR(5) + random walk: composite fit recovers both parts", "[fit][composite]") {
   // The paper's Gx AR(5) at 1 kHz, unit driving noise: at long tau it is white with density
