@@ -80,7 +80,7 @@ struct IdentifyOptions {
   double maxLag = 0.0;
   /// Auto: an AR is written when the AR's prediction gain r0 / E_p >= this (and MDL-type order
   /// >= 1): the predictable share of the short-term variance is >= 1 - 1/gain.
-  double autoMinPredictionGain = 1.05;
+  double autoMinPredictionGain = 1.02;
 };
 
 /// Results for one channel. Units: SI of the channel (rad/s for gyro, m/s^2 for accelerometer).
