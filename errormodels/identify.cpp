@@ -388,6 +388,12 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
                              "): AR screened on the record itself");
     }
   }
+  if (out.composite && !out.composite->randomWalkDetected) {
+    out.decision.push_back("composite fit did not confirm the random walk (tau >= " +
+                           fmt(out.composite->allan.tau.empty() ? 0.0 : out.composite->allan.tau.front(), 4) +
+                           " s): AR screened on the record itself");
+    out.composite.reset();
+  }
   if (out.composite) {
     screen = out.composite->ar;
     out.decision.push_back("random walk detected: AR screened on the record minus its RTS-smoothed "
