@@ -163,7 +163,7 @@ TEST_CASE("paper's AR(5): MDL picks 5 on 1 h at 1 kHz; coefficients and sigma wi
   CHECK(ida.axis("gx").written.ar->order == 5);
 
   // The model's predicted Allan curve against the measured one: ln ADEV has sd ~ 1/sqrt(2 edf);
-  // every octave point within 4 of those (4 sigma: 17 points, a joint false-alarm chance < 0.1 %).
+  // every octave point within 4 of those (4 sigma: 20 points, a joint false-alarm chance < 0.2 %).
   const auto pred = ax.modelAdev(ax.allan.tau);
   for (std::size_t i = 0; i < ax.allan.size(); ++i) {
     INFO("tau " << ax.allan.tau[i] << " measured " << ax.allan.dev[i] << " model " << pred[i]
