@@ -123,7 +123,19 @@ Eigen::MatrixXd allanEstimateCorrelation(const std::array<double, kAllanTermCoun
                                          std::size_t M) {
   const Eigen::MatrixXd C = allanEstimateCovariance(theta, m, dt, M);
   const Eigen::VectorXd d = C.diagonal().cwiseSqrt().cwiseInverse();
-  return d.asDiagonal() * C * d.asDiagonal();
+  Eigen::MatrixXd R = d.asDiagonal() * C * d.asDiagonal();
+  // The quadrature of the pair integrals is least accurate for random-walk-dominated points at
+  // the largest m (neighbour correlations of 1.01 seen at m = 65536 / 131072 of M = 720000), which
+  // makes R indefinite and the GLS impossible. Project onto the correlation matrices: eigenvalues
+  // floored at 1e-3, then rescaled to a unit diagonal (a no-op when R is already well inside).
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(R);
+  if (es.info() == Eigen::Success && es.eigenvalues().minCoeff() < 1e-3) {
+    const Eigen::VectorXd ev = es.eigenvalues().cwiseMax(1e-3);
+    R = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
+    const Eigen::VectorXd s = R.diagonal().cwiseSqrt().cwiseInverse();
+    R = s.asDiagonal() * R * s.asDiagonal();
+  }
+  return R;
 }
 
 namespace {
