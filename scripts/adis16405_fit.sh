@@ -1,7 +1,7 @@
 #!/bin/sh
 # Reproduces the ADIS16405 numbers of the README "Identify" section (data not in the repo:
 # ../shared/data/adis16405, SMAC-Group imudata, CC BY-NC-SA 4.0). Run from the repository root
-# after building: cmake --build build --target sinsim sinsim_errormodels
+# after building (scripts/setup.sh)
 set -e
 DATA=${DATA:-../shared/data/adis16405}
 OUT=${OUT:-out/adis16405}
@@ -17,8 +17,5 @@ build/sinsim fit "$DATA/run1.csv.gz" --rate 100 --gyro-unit deg/s --accel-unit g
 build/sinsim fit "$DATA/run1.csv.gz" --rate 100 --gyro-unit deg/s --accel-unit g --skip "10 min" \
   --denoise db5 --kind ar --order 5 -o "$OUT/run1-db5-ar5.yaml"
 # Run-1 model vs run-2 Allan curve (z and relative difference per octave tau):
-c++ -O2 -std=c++17 -I. -I/usr/include/eigen3 scripts/adis16405_predict.cpp \
-  build/errormodels/libsinsim_errormodels.a build/nav/libsinsim_nav.a build/common/libsinsim_common.a \
-  $(pkg-config --libs fftw3) -lz -lyaml-cpp -lGeographicLib -o "$OUT/adis16405_predict"
-"$OUT/adis16405_predict" "$DATA" 600 | grep -E '^(# tau|[ga][xyz]:)'
-SELF=1 "$OUT/adis16405_predict" "$DATA" 600 | grep -E '^(# tau|[ga][xyz]:)'
+build/examples/adis16405_predict "$DATA" 600 | grep -E '^(# tau|[ga][xyz]:)'
+SELF=1 build/examples/adis16405_predict "$DATA" 600 | grep -E '^(# tau|[ga][xyz]:)'
