@@ -34,10 +34,10 @@ std::string num(double v, int digits) {
 }
 
 namespace {
-
 constexpr double kMaxScore = 40.0;
+}  // namespace
 
-/// z with P(|Z| > z) = p (two-sided), by bisection on erfc; kMaxScore when p underflows.
+/// By bisection on erfc; kMaxScore when p underflows.
 double zFromTwoSidedP(double p) {
   if (!(p > 0)) return kMaxScore;
   if (p >= 1) return 0.0;
@@ -49,6 +49,18 @@ double zFromTwoSidedP(double p) {
   }
   return 0.5 * (lo + hi);
 }
+
+std::vector<double> modelAvarOf(const AllanProblem& p, const std::vector<const Candidate*>& set,
+                                const AllanSolution& sol) {
+  std::vector<double> M(p.mu.size());
+  for (std::size_t k = 0; k < M.size(); ++k) {
+    M[k] = sol.s * p.mu[k];
+    for (std::size_t j = 0; j < set.size(); ++j) M[k] += (set[j]->freeSize ? sol.theta[j] : 1.0) * set[j]->g[k];
+  }
+  return M;
+}
+
+namespace {
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -129,8 +141,23 @@ std::vector<std::string> modelEffectTypes(const std::string& modelText, int chan
 
 // ---- the Allan chi-square fit ------------------------------------------------------------------
 
+double zFromStudentT(double t, double nu) {
+  if (!(nu > 0)) return 0.0;
+  return std::sqrt(nu * std::log1p(t * t / nu)) * (8 * nu + 1) / (8 * nu + 3);
+}
+
+std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m) {
+  std::vector<double> out(y.size() / m);
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    double s = 0;
+    for (std::size_t k = j * m; k < (j + 1) * m; ++k) s += y[k];
+    out[j] = s / double(m);
+  }
+  return out;
+}
+
 AllanSolution solveAllan(const AllanProblem& p, const std::vector<const Candidate*>& set,
-                         const std::vector<double>& thetaStart) {
+                         const std::vector<double>& thetaStart, bool fixLevel) {
   const std::size_t K = p.L.size();
   std::vector<std::size_t> freeIdx;
   for (std::size_t j = 0; j < set.size(); ++j)
@@ -162,7 +189,7 @@ AllanSolution solveAllan(const AllanProblem& p, const std::vector<const Candidat
       M = std::max(M, 1e-300);
       r[k] = p.L[k] - p.bias[k] - std::log(M);
       if (J) {
-        (*J)(k, 0) = -s * p.mu[k] / M;
+        (*J)(k, 0) = fixLevel ? 0.0 : -s * p.mu[k] / M;
         for (std::size_t i = 0; i < freeIdx.size(); ++i)
           (*J)(k, 1 + i) = -scale[i] * set[freeIdx[i]]->g[k] / M;
       }
@@ -178,7 +205,7 @@ AllanSolution solveAllan(const AllanProblem& p, const std::vector<const Candidat
     for (int it = 0; it < 30; ++it) {
       const Eigen::VectorXd j0 = J.col(0);
       const double h = j0.dot(p.W * j0), g = j0.dot(p.W * r);
-      if (!(h > 0)) break;
+      if (fixLevel || !(h > 0)) break;
       Eigen::VectorXd xn = x;
       double step = -g / h;
       for (int half = 0; half < 30; ++half, step *= 0.5) {
@@ -229,6 +256,7 @@ AllanSolution solveAllan(const AllanProblem& p, const std::vector<const Candidat
     for (int tries = 0; tries < 12; ++tries) {
       Eigen::MatrixXd A = H;
       for (Eigen::Index d = 0; d < A.rows(); ++d) A(d, d) += lambda * std::max(H(d, d), 1e-12);
+      if (fixLevel) A(0, 0) = 1.0, A.row(0).tail(A.cols() - 1).setZero(), A.col(0).tail(A.rows() - 1).setZero();
       Eigen::VectorXd xn = x - A.ldlt().solve(g);
       for (Eigen::Index d = 1; d < xn.size(); ++d) xn[d] = std::max(0.0, xn[d]);
       Eigen::VectorXd rn;
@@ -284,8 +312,9 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
   };
 
   // quantization: the value lattice (exact evidence) or an Allan slope -1 at short tau.
+  const double lattice = latticeStep(y);
   if (!has("quantization")) {
-    const double q = latticeStep(y);
+    const double q = lattice;
     if (q > 0) {
       const double share = q * q / 12.0 / var;
       const std::string ev = "values on a lattice of " + quantity(q, u.level) + " (" +
@@ -368,8 +397,30 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     Candidate c;
     c.effect = "ramp";
     c.g = shape([](double t) { return t * t / 2.0; });
+    // Constant-slope test: the increments D_j = ybar_{j+1} - ybar_j of window means of m samples
+    // have mean R m dt for a ramp and 0 for any noise with stationary increments (random walk,
+    // flicker, white): t = mean(D) / (sd(D) / sqrt(n)), n - 1 dof (conservative for white noise,
+    // whose D_j are negatively correlated); windows with 8..4096 increments, Bonferroni.
+    double tBest = 0, zRamp = 0;
+    std::size_t tested = 0;
+    for (auto m : setup.factors) {
+      const auto wm = windowMeans(y, m);
+      if (wm.size() < 9 || wm.size() > 4097) continue;
+      const std::size_t n = wm.size() - 1;
+      double md = 0, sd = 0;
+      for (std::size_t j = 0; j < n; ++j) md += wm[j + 1] - wm[j];
+      md /= double(n);
+      for (std::size_t j = 0; j < n; ++j) sd += (wm[j + 1] - wm[j] - md) * (wm[j + 1] - wm[j] - md);
+      sd = std::sqrt(sd / double(n - 1));
+      ++tested;
+      if (!(sd > 0)) continue;
+      const double t = std::fabs(md) / (sd / std::sqrt(double(n)));
+      const double z = zFromStudentT(t, double(n - 1));
+      if (z > zRamp) zRamp = z, tBest = t;
+    }
+    if (tested) c.zSpecial = zFromTwoSidedP(double(tested) * std::erfc(zRamp / std::sqrt(2.0)));
     c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
-                 quantity(slope, u.slope);
+                 quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
     const double sign = slope < 0 ? -1.0 : 1.0;
     c.describe = [u, sign](double theta, Finding& f) {
       const double R = sign * std::sqrt(theta);
@@ -417,8 +468,31 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     c.effect = "warmup";
     c.freeSize = false;
     c.g = allanVariance(w, setup);
+    // Start test: the first increment of window means D_0 = ybar_1 - ybar_0 against the spread
+    // of the later increments D_j (j >= 1): t = |D_0| / rms(D_j), n - 1 dof. Stationary noise and
+    // a ramp make D_0 like the others; a settling transient makes it stand out. Windows >= 1 s
+    // with >= 16 increments, Bonferroni.
+    double zStart = 0, tStart = 0;
+    std::size_t testedW = 0;
+    for (auto m : setup.factors) {
+      if (double(m) * dt < 1.0) continue;
+      const auto wm = windowMeans(y, m);
+      if (wm.size() < 17) continue;
+      const std::size_t n = wm.size() - 2;
+      double ss = 0, md = 0;
+      for (std::size_t j = 1; j <= n; ++j) md += wm[j + 1] - wm[j];
+      md /= double(n);
+      for (std::size_t j = 1; j <= n; ++j) ss += (wm[j + 1] - wm[j] - md) * (wm[j + 1] - wm[j] - md);
+      ++testedW;
+      const double rms = std::sqrt(ss / double(n - 1));
+      if (!(rms > 0)) continue;
+      const double t = std::fabs(wm[1] - wm[0] - md) / rms;
+      const double z = zFromStudentT(t, double(n - 1));
+      if (z > zStart) zStart = z, tStart = t;
+    }
+    if (testedW) c.zSpecial = zFromTwoSidedP(double(testedW) * std::erfc(zStart / std::sqrt(2.0)));
     c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
-                 num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means)";
+                 num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
     c.describe = [A, tw, u](double, Finding& f) {
       f.size = "A = " + quantity(A, u.level) + ", tau = " + num(tw, 4) + " s";
       f.yaml = "{type: warmup, amplitude: " + quantity(A, u.level) + ", tau: " + num(tw, 6) + " s}";
@@ -573,7 +647,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
       std::vector<std::size_t> flagged;
       for (std::size_t k = 4; k < N; ++k) {
         const double z = std::fabs(e[k] - med) / sigma;
-        if (z <= zt) continue;
+        // On a lattice, rounding makes the residual discrete: ask for 4 LSB as well.
+        if (z <= zt || std::fabs(e[k] - med) <= 4 * lattice) continue;
         const double zl = std::fabs(e[k - 1] - med) / sigma;
         const double zr = k + 1 < N ? std::fabs(e[k + 1] - med) / sigma : 0;
         if (z >= zl && z >= zr) flagged.push_back(k);

@@ -60,7 +60,8 @@ AddRequest AddRequest::parse(const std::string& text) {
 bool AxisDiagnosis::fits(double threshold) const {
   for (const auto& f : findings)
     if (f.reported && f.score >= threshold) return false;
-  return fractionOutside < 0.1;
+  // and the Allan chi-square below its 0.999 quantile
+  return chi2Points == 0 || chi2 < chiSquareQuantile(0.999, double(chi2Points));
 }
 
 const AxisDiagnosis& Diagnosis::axis(const std::string& channel) const {
@@ -445,6 +446,7 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
       std::vector<const Candidate*> set;
       for (auto i : w.accepted) taken.insert(w.cands[i].effect), set.push_back(&w.cands[i]);
       std::ptrdiff_t best = -1;
+      const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
       for (std::size_t i = 0; i < w.cands.size(); ++i) {
         if (taken.count(w.cands[i].effect)) continue;
         auto trial = set;
@@ -453,7 +455,9 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
         start.push_back(-1.0);
         lastSol[i] = solveAllan(w.prob, trial, start);
         lastDchi[i] = w.sol.chi2 - lastSol[i].chi2;
-        lastScore[i] = std::min(40.0, std::max(std::sqrt(std::max(0.0, lastDchi[i])), w.cands[i].zSpecial));
+        double z = std::max(std::sqrt(std::max(0.0, lastDchi[i])), w.cands[i].zSpecial);
+        if (w.cands[i].zConditional) z = std::max(z, w.cands[i].zConditional(currentAvar));
+        lastScore[i] = std::min(40.0, z);
         if (best < 0 || lastScore[i] > lastScore[std::size_t(best)] ||
             (lastScore[i] == lastScore[std::size_t(best)] && lastDchi[i] > lastDchi[std::size_t(best)]))
           best = std::ptrdiff_t(i);
@@ -546,7 +550,7 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
       return score(x) > score(y);
     });
     std::vector<const Candidate*> set;
-    AllanSolution sol = solveAllan(w.prob, {});
+    AllanSolution sol = solveAllan(w.prob, {}, {}, true);
     for (const auto& e : wanted) {
       const Candidate* bestC = nullptr;
       AllanSolution bestS;
@@ -556,7 +560,7 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
         trial.push_back(&c);
         auto start = sol.theta;
         start.push_back(-1.0);
-        auto s = solveAllan(w.prob, trial, start);
+        auto s = solveAllan(w.prob, trial, start, true);
         if (!bestC || s.chi2 < bestS.chi2) bestC = &c, bestS = s;
       }
       if (!bestC) {
@@ -570,6 +574,14 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
       }
       set.push_back(bestC);
       sol = bestS;
+    }
+    // The base noise level is refitted only when the data ask for it: likelihood-ratio test of
+    // s = 1 against s free, chi2 difference > 9 (3 sigma, one parameter). A base fitted to the
+    // record usually has the right level, and the short-tau bands are too narrow for a level
+    // nudged by the long-tau points.
+    {
+      const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
+      if (sol.chi2 - freeLevel.chi2 > 9.0) sol = freeLevel;
     }
     for (std::size_t j = 0; j < set.size(); ++j) {
       if (set[j]->freeSize && !(sol.theta[j] > 0)) {

@@ -74,6 +74,8 @@ struct Candidate {
   bool freeSize = true;        // theta fitted >= 0 (g per unit theta) or fixed (g absolute AVAR)
   std::vector<double> g;       // AVAR contribution at each tau
   double zSpecial = 0.0;       // its own test, Gaussian-equivalent
+  /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.
+  std::function<double(const std::vector<double>& modelAvar)> zConditional;
   std::string evidence;
   /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
   std::function<void(double theta, Finding&)> describe;
@@ -91,8 +93,17 @@ struct AllanSolution {
   std::vector<double> theta;  // one per candidate in the set (1 for fixed ones)
   double chi2 = 0.0;
 };
+/// AVAR of the fitted model s mu + sum theta g at each tau.
+std::vector<double> modelAvarOf(const AllanProblem& p, const std::vector<const Candidate*>& set,
+                                const AllanSolution& sol);
+/// z with P(|Z| > z) = p (two-sided), capped at 40.
+double zFromTwoSidedP(double p);
+/// Least squares over the level s (unless fixLevel: s = 1) and the free sizes.
 AllanSolution solveAllan(const AllanProblem& p, const std::vector<const Candidate*>& set,
-                         const std::vector<double>& thetaStart = {});
+                         const std::vector<double>& thetaStart = {}, bool fixLevel = false);
+/// Student-t statistic with nu dof -> Gaussian-equivalent z (Wallace 1959):
+/// z = sqrt(nu ln(1 + t^2/nu)) (8 nu + 1) / (8 nu + 3).
+double zFromStudentT(double t, double nu);
 
 std::vector<Candidate> buildCandidates(const Record& record, int channel,
                                        const std::vector<double>& tau, const Setup& setup,
@@ -104,6 +115,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
 /// Lattice of values: step q [SI] when the record's increments are integer multiples of one
 /// step (>= 99 % of non-zero differences within 1 % of a multiple); 0 otherwise.
 double latticeStep(const std::vector<double>& y);
+/// Mean of y over consecutive windows of m samples.
+std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m);
 
 /// Effects of the model file on one channel (types), from its `all` and axis lists.
 std::vector<std::string> modelEffectTypes(const std::string& modelText, int channel);

@@ -59,7 +59,7 @@ Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o) {
     s.psdBandFreq.push_back(f / double(bins.size()) * rate / double(L));
   }
   s.acfLags = o.acfMaxLag ? o.acfMaxLag : std::min<std::size_t>(n / 20, 500);
-  s.acfLags = std::max<std::size_t>(1, std::min(s.acfLags, n - 1));
+  s.acfLags = std::max<std::size_t>(1, std::min(s.acfLags, L / 4));
   return s;
 }
 
@@ -84,13 +84,26 @@ SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
     for (auto k : bins) sum += p.psd[k];
     out.psd.push_back(sum / double(bins.size()));
   }
-  // A constant series (a model without noise on a channel) has no ACF: report zeros.
-  bool constant = std::all_of(y.begin(), y.end(), [&](double v) { return v == y.front(); });
-  if (constant) {
-    out.acf.assign(s.acfLags + 1, 0.0);
-  } else {
-    out.acf = autocorrelation(y, s.rate, s.acfLags, AcfScaling::Normalised, AcfMethod::Auto).r;
+  // ACF from the averaged Welch spectrum (Wiener-Khinchin): r(k) = df [P0 + P_{L/2} (-1)^k +
+  // sum_{j=1}^{L/2-1} P_j cos(2 pi j k / L)], divided by the window's normalised autocorrelation
+  // w2(k) = sum w_n w_{n+k} / sum w_n^2 (the taper's bias; Percival & Walden 1993 sec. 6.18), then
+  // by r(0). Costs O(L lags) instead of an FFT of the whole record, and treats the measurement
+  // and every realisation alike. Lags are limited to L/4, where w2 >= 0.6.
+  const std::size_t L = s.psdSegment, half = L / 2;
+  std::vector<double> w(L), w2(s.acfLags + 1, 0.0);
+  for (std::size_t n = 0; n < L; ++n) w[n] = 0.5 - 0.5 * std::cos(2 * M_PI * double(n) / double(L));
+  for (std::size_t k = 0; k <= s.acfLags; ++k)
+    for (std::size_t n = 0; n + k < L; ++n) w2[k] += w[n] * w[n + k];
+  std::vector<double> cosTable(L);
+  for (std::size_t m = 0; m < L; ++m) cosTable[m] = std::cos(2 * M_PI * double(m) / double(L));
+  out.acf.assign(s.acfLags + 1, 0.0);
+  for (std::size_t k = 0; k <= s.acfLags; ++k) {
+    double r = p.psd[0] + p.psd[half] * (k % 2 ? -1.0 : 1.0);
+    for (std::size_t j = 1; j < half; ++j) r += p.psd[j] * cosTable[(j * k) % L];
+    out.acf[k] = r / (w2[k] / w2[0]);
   }
+  const double r0 = out.acf[0];
+  for (double& v : out.acf) v = r0 > 0 ? v / r0 : 0.0;
   return out;
 }
 
