@@ -325,14 +325,17 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
       rateLsb.freeSize = false;
       rateLsb.g = shape([&](double t) { return q * q / 12.0 * dt / t; });  // white, var q^2/12
       rateLsb.zSpecial = kMaxScore;
+      rateLsb.lsbRate = q;
       rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
       rateLsb.describe = [q, u](double, Finding& f) {
         f.size = "LSB " + quantity(q, u.level) + " (rate output, each sample rounded)";
         f.yaml = "{type: quantization, lsb: " + quantity(q, u.level) + "}";
         f.params["lsb"] = q;
+        f.params["lattice"] = q;
       };
       out.push_back(rateLsb);
       Candidate carry = rateLsb;
+      carry.carry = true;
       // Increment output with carry: AVAR = 3 Q^2 / tau^2, Q = q dt / sqrt(12) (IEEE 952 C).
       carry.g = shape([&](double t) { return q * q * dt * dt / (4.0 * t * t); });
       carry.evidence = ev + "; remainder carried (Allan slope -1)";
@@ -340,6 +343,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
         f.size = "LSB " + quantity(q * dt, u.increment) + " (increment output, carried)";
         f.yaml = "{type: quantization, lsb: " + quantity(q * dt, u.increment) + "}";
         f.params["lsb"] = q * dt;
+        f.params["lattice"] = q;
       };
       out.push_back(carry);
     } else {
@@ -374,7 +378,38 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     Candidate c;
     c.effect = "bias_instability";
     const double lo = std::max(10 * dt, T / 1000), hi = T / 2;
-    c.g = shape([](double) { return 2.0 * std::log(2.0) / M_PI; });  // floor (0.664 B)^2
+    // The Allan variance per unit B^2 of the effect as the plug-in builds it (bias_instability.cpp:
+    // GM components, 2 per decade over tau_range widened 1.5 decades, each of variance
+    // B^2 ln10 / (2 pi)), each from the GM closed form (IEEE 952 Annex C; q^2 = 2 s^2 / T):
+    // AVAR = (2 s^2 T / tau) [1 - (T / 2 tau)(3 - 4 e^(-tau/T) + e^(-2 tau/T))]. Its floor is
+    // 0.664 B within -2.5 %/+1 % over tau_range.
+    {
+      const double wlo = lo * std::pow(10.0, -1.5), whi = hi * std::pow(10.0, 1.5);
+      const int n = int(std::ceil(2 * std::log10(whi / wlo) - 1e-9));
+      const double s2 = std::log(10.0) / (M_PI * 2);
+      // Interval averages of a GM (variance s2, time T) over dt: lag 0 (2 s2 T^2/dt^2)(dt/T - 1 +
+      // e^(-dt/T)), lag k >= 1 s2 T^2/dt^2 (1 - e^(-dt/T))^2 e^(-(k-1) dt/T).
+      c.acov = [wlo, n, s2, dt](std::size_t maxLag) {
+        std::vector<double> r(maxLag + 1, 0.0);
+        for (int j = 0; j < n; ++j) {
+          const double Tc = wlo * std::pow(10.0, (j + 0.5) / 2), x = dt / Tc;
+          const double c2 = s2 / (x * x);
+          r[0] += 2 * c2 * (x - 1 + std::exp(-x));
+          for (std::size_t k = 1; k <= maxLag; ++k)
+            r[k] += c2 * std::pow(1 - std::exp(-x), 2) * std::exp(-double(k - 1) * x);
+        }
+        return r;
+      };
+      c.g = shape([&](double t) {
+        double v = 0;
+        for (int j = 0; j < n; ++j) {
+          const double Tc = wlo * std::pow(10.0, (j + 0.5) / 2), x = t / Tc;
+          v += x < 1e-4 ? 2 * s2 * t / (3 * Tc)
+                        : 2 * s2 * Tc / t * (1 - (3 - 4 * std::exp(-x) + std::exp(-2 * x)) / (2 * x));
+        }
+        return v;
+      });
+    }
     c.evidence = "a flat Allan floor the model falls below (0.664 B)";
     c.describe = [u, lo, hi](double theta, Finding& f) {
       const double B = std::sqrt(theta);
@@ -396,6 +431,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     const double slope = (double(N) * sty - st * sy) / (double(N) * stt - st * st);
     Candidate c;
     c.effect = "ramp";
+    c.signal.resize(N);
+    for (std::size_t k = 0; k < N; ++k) c.signal[k] = slope * ((double(k) + 0.5) * dt - 0.5 * T);
     c.g = shape([](double t) { return t * t / 2.0; });
     // Constant-slope test: the increments D_j = ybar_{j+1} - ybar_j of window means of m samples
     // have mean R m dt for a ramp and 0 for any noise with stationary increments (random walk,
@@ -422,8 +459,11 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                  quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
     const double sign = slope < 0 ? -1.0 : 1.0;
-    c.describe = [u, sign](double theta, Finding& f) {
-      const double R = sign * std::sqrt(theta);
+    // The size written is the least-squares slope: the realised trend of this record, which the
+    // long-tau Allan points (deterministic, no scatter) must meet; the Allan fit's R scored it.
+    (void)sign;
+    c.describe = [u, slope](double, Finding& f) {
+      const double R = slope;
       f.size = "R = " + quantity(R, u.slope);
       f.yaml = "{type: ramp, slope: " + quantity(R, u.slope) + "}";
       f.params["slope"] = R;
@@ -468,6 +508,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     c.effect = "warmup";
     c.freeSize = false;
     c.g = allanVariance(w, setup);
+    c.signal = w;
     // Start test: the first increment of window means D_0 = ybar_1 - ybar_0 against the spread
     // of the later increments D_j (j >= 1): t = |D_0| / rms(D_j), n - 1 dof. Stationary noise and
     // a ramp make D_0 like the others; a settling transient makes it stand out. Windows >= 1 s
@@ -533,6 +574,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
         c.effect = "temperature";
         c.freeSize = false;
         c.g = allanVariance(sig, setup);
+        c.signal = sig;
         c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
                      num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
                      " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance";
@@ -603,6 +645,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     c.effect = "sinusoid";
     c.freeSize = false;
     c.g = allanVariance(sig, setup);
+    c.signal = sig;
     c.zSpecial = psdLineZ;
     c.evidence = "a narrow line in the PSD at " + num(f0, 6) + " Hz (" + num(psdLineZ, 3) +
                  " sigma above its neighbourhood, look-elsewhere corrected)";
@@ -674,6 +717,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
         c.effect = "outliers";
         c.freeSize = false;
         c.g = allanVariance(sig, setup);
+        c.signal = sig;
         // p of the largest |z| among N Gaussian residuals (Bonferroni).
         c.zSpecial = zFromTwoSidedP(double(N) * std::erfc(zmax / std::sqrt(2.0)));
         c.evidence = std::to_string(iso.size()) + " isolated samples beyond " + num(zt, 3) +

@@ -17,6 +17,8 @@
 #include "common/units.hpp"
 #include "errormodels/diagnose/internal.hpp"
 #include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/fit/composite_fit.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -269,7 +271,34 @@ LjungBox ljungBox(const std::vector<double>& y, const std::vector<double>& a, st
   return lb;
 }
 
+/// Base AR refitted with a lattice quantization taken out of its autocovariance: Yule-Walker on
+/// r_y(k) - r_q(k), r_q the rounding noise's autocovariance [SI^2]: per-sample rounding
+/// r_q(0) = q^2/12; carried remainder (rate error (d_{k-1} - d_k)/dt, d uniform) r_q(0) = q^2/6,
+/// r_q(1) = -q^2/12 (q the rate LSB). Returns a = [1, a1..ap] and the driving variance.
+bool arWithoutQuantization(const std::vector<double>& y, std::size_t order, double q, bool carry,
+                           std::vector<double>& a, double& E) {
+  double m = 0;
+  for (double v : y) m += v;
+  m /= double(y.size());
+  std::vector<double> x(y.size());
+  for (std::size_t k = 0; k < y.size(); ++k) x[k] = y[k] - m;
+  auto r = fit::biasedAutocovariance(x, order);
+  r[0] -= carry ? q * q / 6 : q * q / 12;
+  if (carry && r.size() > 1) r[1] += q * q / 12;
+  if (!(r[0] > 0)) return false;
+  try {
+    const auto f = fit::yuleWalkerFromAutocovariance(r, order, y.size());
+    if (!(f.drivingVariance > 0) || fit::arMaxPoleMagnitude(f.a) >= 1) return false;
+    a = f.a;
+    E = f.drivingVariance;
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 struct ChannelWork {
+  std::vector<std::size_t> factors;
   int channel = 0;
   AxisDiagnosis d;
   AllanProblem prob;
@@ -282,6 +311,8 @@ struct Run {
   Diagnosis d;
   std::vector<ChannelWork> work;
 };
+
+const std::vector<std::size_t>& setupFactors(const ChannelWork& w) { return w.factors; }
 
 Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOptions& o) {
   if (o.realisations < 8) throw InputError("at least 8 Monte Carlo realisations are needed");
@@ -322,6 +353,7 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
     const auto& real = mc.perChannel[ci];
     ChannelWork w;
     w.channel = c;
+    w.factors = setup.factors;
     AxisDiagnosis& d = w.d;
     d.channel = kChannels[c];
     d.unit = unitsFor(c).level;
@@ -362,7 +394,17 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
       w.prob.mu[k] = mu;
       w.prob.bias[k] = lm - std::log(mu);
     }
-    d.misfit = std::sqrt(sumsq / double(K));
+    d.misfitRaw = std::sqrt(sumsq / double(K));
+    {
+      double fl = 0;
+      for (std::size_t r = 0; r < R; ++r)
+        for (std::size_t k = 0; k < K; ++k) {
+          const double l10 = (logs(Eigen::Index(r), Eigen::Index(k)) - std::log(w.prob.mu[k])) / (2 * std::log(10.0));
+          fl += l10 * l10;
+        }
+      d.misfitFloor = std::sqrt(fl / double(R * K));
+      d.misfit = std::sqrt(std::max(0.0, sumsq / double(K) - d.misfitFloor * d.misfitFloor));
+    }
     d.fractionOutside = double(out) / double(K);
     // Covariance of ln AVAR: per-tau variances, correlation averaged along the octave diagonals
     // (the estimates at tau_i, tau_j depend mostly on tau_j / tau_i), eigenvalues floored, times
@@ -527,6 +569,7 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
   std::array<std::vector<std::string>, 6> addYaml;
   std::array<double, 6> scale;
   scale.fill(1.0);
+  std::array<std::vector<double>, 6> arReplace;
   std::vector<AxisChange> changes;
   for (auto& w : run.work) {
     // The requested effects of this channel, in the order of their diagnosis score.
@@ -583,6 +626,102 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
       const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
       if (sol.chi2 - freeLevel.chi2 > 9.0) sol = freeLevel;
     }
+    // A base AR at the record's rate is refitted (Burg, same order) on the record with the added
+    // effects taken out: the fitted deterministic signals subtracted, a random walk's level
+    // removed by the steady-state RTS smoother of the local-level model (q = K^2 dt, r = the
+    // record's variance; fit/composite_fit.hpp). The AR fitted to the raw record had absorbed
+    // part of them (e.g. its low-frequency gain). Other bases keep their parameters; then the
+    // level refit above applies.
+    const auto arBase = arOfChannel(model.text, w.channel, record.rate_hz);
+    bool arRefitted = false;
+    if (arBase) {
+      std::vector<double> x = channelData(record, w.channel);
+      bool any = false;
+      for (std::size_t j = 0; j < set.size(); ++j) {
+        if (!set[j]->signal.empty()) {
+          for (std::size_t k = 0; k < x.size(); ++k) x[k] -= set[j]->signal[k];
+          any = true;
+        } else if (set[j]->effect == "random_walk" && sol.theta[j] > 0) {
+          double m = 0, v = 0;
+          for (double xv : x) m += xv;
+          m /= double(x.size());
+          for (double xv : x) v += (xv - m) * (xv - m);
+          v /= double(x.size());
+          const auto level = fit::localLevelSmoother(x, sol.theta[j] / record.rate_hz, v);
+          for (std::size_t k = 0; k < x.size(); ++k) x[k] -= level[k];
+          any = true;
+        }
+      }
+      // A lattice quantization (no signal to subtract): Yule-Walker on the autocovariance with
+      // the rounding noise's taken out; the variant (carried or not) that fits the Allan curve
+      // better with its refitted AR is kept.
+      const Candidate* lat = nullptr;
+      for (auto* c : set)
+        if (c->lsbRate > 0) lat = c;
+      if (lat) {
+        std::vector<double> bestA;
+        double bestE = 0, bestChi = INFINITY;
+        const Candidate* bestC = nullptr;
+        for (const auto& c : w.cands) {
+          if (!(c.lsbRate > 0)) continue;
+          std::vector<double> a;
+          double E = 0;
+          if (!arWithoutQuantization(x, arBase->size() - 1, c.lsbRate, c.carry, a, E)) continue;
+          const auto av = fit::arAllanVariance(a, E, setupFactors(w));
+          AllanProblem p2 = w.prob;
+          for (std::size_t k = 0; k < av.size(); ++k) p2.mu[k] = av[k];
+          std::vector<const Candidate*> s2;
+          for (auto* c2 : set) s2.push_back(c2 == lat ? &c : c2);
+          const auto sol2 = solveAllan(p2, s2, sol.theta, true);
+          if (sol2.chi2 < bestChi) bestChi = sol2.chi2, bestA = a, bestE = E, bestC = &c;
+        }
+        if (bestC) {
+          std::replace(set.begin(), set.end(), lat, bestC);
+          arReplace[std::size_t(w.channel)].assign(bestA.begin() + 1, bestA.end());
+          arReplace[std::size_t(w.channel)].push_back(std::sqrt(bestE));
+          arRefitted = true;
+          sol.s = 1.0;
+          any = false;  // the signals (if any) are refitted below only without a lattice
+        }
+      }
+      // Stochastic terms with a known autocovariance (bias instability): Yule-Walker on the
+      // record's autocovariance minus theirs.
+      std::vector<double> rSub;
+      const std::size_t order = arBase->size() - 1;
+      for (std::size_t j = 0; j < set.size(); ++j)
+        if (set[j]->acov && sol.theta[j] > 0) {
+          const auto r = set[j]->acov(order);
+          rSub.resize(order + 1, 0.0);
+          for (std::size_t k = 0; k <= order; ++k) rSub[k] += sol.theta[j] * r[k];
+        }
+      if (!rSub.empty() && !arRefitted) {
+        double m = 0;
+        for (double v : x) m += v;
+        m /= double(x.size());
+        std::vector<double> xc(x.size());
+        for (std::size_t k = 0; k < x.size(); ++k) xc[k] = x[k] - m;
+        auto r = fit::biasedAutocovariance(xc, order);
+        for (std::size_t k = 0; k <= order; ++k) r[k] -= rSub[k];
+        try {
+          const auto f = fit::yuleWalkerFromAutocovariance(r, order, x.size());
+          if (f.drivingVariance > 0 && fit::arMaxPoleMagnitude(f.a) < 1) {
+            arReplace[std::size_t(w.channel)].assign(f.a.begin() + 1, f.a.end());
+            arReplace[std::size_t(w.channel)].push_back(std::sqrt(f.drivingVariance));
+            arRefitted = true;
+            sol.s = 1.0;
+            any = false;
+          }
+        } catch (const Error&) {
+        }
+      }
+      if (any) {
+        const auto refit = fit::burg(x, arBase->size() - 1);
+        arReplace[std::size_t(w.channel)].assign(refit.a.begin() + 1, refit.a.end());
+        arReplace[std::size_t(w.channel)].push_back(std::sqrt(refit.drivingVariance));
+        arRefitted = true;
+        sol.s = 1.0;
+      }
+    }
     for (std::size_t j = 0; j < set.size(); ++j) {
       if (set[j]->freeSize && !(sol.theta[j] > 0)) {
         imp.notes.push_back(set[j]->effect + " on " + w.d.channel +
@@ -594,10 +733,13 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
       addYaml[std::size_t(w.channel)].push_back(f.yaml);
       ch.added.push_back(f.yaml);
     }
-    if (!ch.added.empty()) {
+    if (!ch.added.empty() && !arRefitted) {
       scale[std::size_t(w.channel)] = sol.s;
       ch.noiseScale = sol.s;
     }
+    if (arRefitted) imp.notes.push_back(w.d.channel + ": base AR refitted (Burg, order " +
+                                        std::to_string(arBase->size() - 1) +
+                                        ") on the record with the added effects taken out");
     changes.push_back(ch);
   }
   std::string header = "Improved by sinsim diagnose from " + model.name + " and " + record.source + ":";
@@ -607,7 +749,7 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
     if (!ch.added.empty() && std::fabs(ch.noiseScale - 1) > 1e-9)
       header += "\n  " + ch.channel + ": base noise scaled by sqrt(" + num(ch.noiseScale, 6) + ")";
   imp.model.name = model.name + " (improved)";
-  imp.model.text = editModel(model.text, addYaml, scale, header);
+  imp.model.text = editModel(model.text, addYaml, scale, header, arReplace);
   imp.after = diagnose(record, imp.model, options);
   for (auto& ch : changes) {
     const auto& b = imp.before.axis(ch.channel);
@@ -671,7 +813,8 @@ namespace detail {
 
 std::string editModel(const std::string& modelText,
                       const std::array<std::vector<std::string>, 6>& addYaml,
-                      const std::array<double, 6>& varianceScale, const std::string& header) {
+                      const std::array<double, 6>& varianceScale, const std::string& header,
+                      const std::array<std::vector<double>, 6>& arReplace) {
   YAML::Node root = YAML::Load(modelText);
   if (!root.IsMap()) root = YAML::Node(YAML::NodeType::Map);
   for (int sensor = 0; sensor < 2; ++sensor) {
@@ -679,8 +822,9 @@ std::string editModel(const std::string& modelText,
     bool any = false, differs = false;
     for (int a = 0; a < 3; ++a) {
       const int c = sensor * 3 + a;
-      any = any || !addYaml[std::size_t(c)].empty() || varianceScale[std::size_t(c)] != 1.0;
-      differs = differs || varianceScale[std::size_t(c)] != 1.0;
+      any = any || !addYaml[std::size_t(c)].empty() || varianceScale[std::size_t(c)] != 1.0 ||
+            !arReplace[std::size_t(c)].empty();
+      differs = differs || varianceScale[std::size_t(c)] != 1.0 || !arReplace[std::size_t(c)].empty();
     }
     if (!any) continue;
     YAML::Node s = root[sname];
@@ -703,18 +847,26 @@ std::string editModel(const std::string& modelText,
       const int c = sensor * 3 + a;
       const double f = std::sqrt(varianceScale[std::size_t(c)]);
       YAML::Node list(YAML::NodeType::Sequence);
-      for (const auto& e : moved) {
+      const auto& rep = arReplace[std::size_t(c)];
+      auto edit = [&](const YAML::Node& e) {
         YAML::Node copy = YAML::Clone(e);
-        scaleEffect(copy, f);
-        list.push_back(copy);
-      }
+        const bool isAr = copy.IsMap() && copy["type"] && copy["type"].as<std::string>() == "ar";
+        if (isAr && !rep.empty()) {
+          YAML::Node a(YAML::NodeType::Sequence);
+          for (std::size_t i = 0; i + 1 < rep.size(); ++i) a.push_back(num(rep[i], 10));
+          a.SetStyle(YAML::EmitterStyle::Flow);
+          copy["a"] = a;
+          copy.remove("output_sigma");
+          copy["sigma"] = quantity(rep.back(), unitsFor(c).level);
+        } else if (scalable(copy) && f != 1.0) {
+          scaleEffect(copy, f);
+        }
+        return copy;
+      };
+      for (const auto& e : moved) list.push_back(edit(e));
       const char* an = axisName(c);
       if (s[an] && s[an].IsSequence())
-        for (const auto& e : s[an]) {
-          YAML::Node copy = YAML::Clone(e);
-          if (scalable(copy) && f != 1.0) scaleEffect(copy, f);
-          list.push_back(copy);
-        }
+        for (const auto& e : s[an]) list.push_back(edit(e));
       for (const auto& y : addYaml[std::size_t(c)]) list.push_back(YAML::Load(y));
       if (list.size() > 0 || (s[an] && s[an].IsDefined())) s[an] = list;
     }
@@ -752,6 +904,8 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   nlohmann::json j;
   j["channel"] = a.channel;
   j["misfit"] = a.misfit;
+  j["misfit_raw"] = a.misfitRaw;
+  j["misfit_floor"] = a.misfitFloor;
   j["fraction_outside"] = a.fractionOutside;
   j["chi2"] = a.chi2;
   j["chi2_points"] = a.chi2Points;

@@ -14,8 +14,11 @@
 //   band      the central `bandLevel` interval of a record's ADEV (PSD band) estimate under the
 //             model: model * sqrt(chi2_q(nu) / nu), nu = 2 mean^2 / var of the Monte Carlo
 //             AVAR (PSD) estimates (the chi-square law of a variance estimate, SP 1065 eq. 45).
-//   misfit    RMS over the octave tau of log10(ADEV_meas / ADEV_model); 0 is perfect, 0.3 is a
-//             factor 2 on average. Reported with the fraction of tau outside the band.
+//   misfit    RMS over the tau grid of log10(ADEV_meas / ADEV_model), with the part a perfect
+//             model would show taken out: misfit = sqrt(max(0, rms^2 - floor^2)), floor^2 the
+//             mean of the same mean square over the model's own realisations (the estimation
+//             noise, dominated by the long tau). In decades: 0.3 is a factor 2 on average.
+//             Reported with the raw RMS, the floor and the fraction of tau outside the band.
 //   chi2      r' C^-1 r, r = ln AVAR_meas - ln AVAR_model, C the covariance of ln AVAR estimates
 //             from the realisations (per-tau variances, correlation averaged along the octave
 //             diagonals, times 1 + 1/R for the Monte Carlo mean's own error).
@@ -52,7 +55,9 @@ struct DiagnoseOptions {
   std::size_t realisations = 32;
   std::uint64_t seed = 20240505;  ///< StreamKey seed; realisation r is run r
   unsigned threads = 0;           ///< 0: std::thread::hardware_concurrency()
-  double bandLevel = 0.95;        ///< two-sided level of the bands
+  /// Two-sided level of the bands. 0.99: with ~30 tau points a perfect model leaves on average
+  /// 0.3 outside (P(>= 3 outside) = 0.3 %), so "outside" means something.
+  double bandLevel = 0.99;
   /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 5.
   double threshold = 5.0;
   /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
@@ -99,7 +104,9 @@ struct AxisDiagnosis {
   std::string unit;     ///< display unit of the signal ("deg/s" or "m/s^2")
   double unitFactor = 1.0;  ///< SI per display unit
   Comparison adev, psd, acf;
-  double misfit = 0.0;           ///< RMS log10(ADEV_meas / ADEV_model) over tau
+  double misfit = 0.0;           ///< beyond the noise floor (header comment) [decades]
+  double misfitRaw = 0.0;        ///< RMS log10(ADEV_meas / ADEV_model) over tau [decades]
+  double misfitFloor = 0.0;      ///< the same RMS expected of a perfect model [decades]
   double fractionOutside = 0.0;  ///< of the ADEV tau outside the band
   double chi2 = 0.0;             ///< see the header comment
   std::size_t chi2Points = 0;

@@ -77,6 +77,16 @@ struct Candidate {
   /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.
   std::function<double(const std::vector<double>& modelAvar)> zConditional;
   std::string evidence;
+  /// The fitted deterministic signal [SI] per sample (ramp, warm-up, sinusoid, temperature,
+  /// outliers): removed from the record before the base AR is refitted. Empty otherwise.
+  std::vector<double> signal;
+  /// Quantization from the value lattice: the rate LSB [SI] and whether the remainder is carried
+  /// (its autocovariance is subtracted when the base AR is refitted).
+  double lsbRate = 0.0;
+  bool carry = false;
+  /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
+  /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
+  std::function<std::vector<double>(std::size_t maxLag)> acov;
   /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
   std::function<void(double theta, Finding&)> describe;
 };
@@ -123,8 +133,11 @@ std::vector<std::string> modelEffectTypes(const std::string& modelText, int chan
 
 /// Model text with effects appended per channel and the base noise of each channel scaled by
 /// sqrt(variance factor).
+/// arReplace[c]: when non-empty, the channel's `ar` effect gets these coefficients a1..ap and
+/// driving sigma (last element, SI) instead of its own.
 std::string editModel(const std::string& modelText,
                       const std::array<std::vector<std::string>, 6>& addYaml,
-                      const std::array<double, 6>& varianceScale, const std::string& header);
+                      const std::array<double, 6>& varianceScale, const std::string& header,
+                      const std::array<std::vector<double>, 6>& arReplace = {});
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -29,7 +29,13 @@ Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o) {
   s.rate = rate;
   s.n = n;
   const auto maxM = std::max<std::size_t>(1, std::size_t(double(n) * o.maxFactorFraction));
-  for (std::size_t m = 1; m <= maxM; m *= 2) s.factors.push_back(m);
+  // Half-octave grid m = round(2^(j/2)): twice the points of the octave grid, so that "the
+  // fraction of tau outside a 95 % band" is not decided by one or two points.
+  for (int j = 0;; ++j) {
+    const auto m = std::size_t(std::llround(std::pow(2.0, 0.5 * j)));
+    if (m > maxM) break;
+    if (s.factors.empty() || m != s.factors.back()) s.factors.push_back(m);
+  }
   std::size_t L = o.psdSegment;
   if (L == 0) {
     L = 16;
