@@ -104,7 +104,7 @@ Outcome diagnoseHidden(const std::string& name, const Record& r,
 
 TEST_CASE("hidden quantization is found from the value lattice and added", "[diagnose][hidden]") {
   // Increment LSB 0.0005 deg (rate lattice 0.05 deg/s, the ADIS16405 gyro LSB) carried: white-PM noise q^2/(4 tau^2).
-  const auto r = record("    - {type: ramp, slope: 300 deg/h^2}\n", 103);
+  const auto r = record("    - {type: quantization, lsb: 0.0005 deg}\n", 101);
   auto o = diagnoseHidden("quantization", r, {"quantization"});
   const auto& f = o.imp.before.axis("gx").findings.front();
   // The lattice gives the LSB exactly (rate lattice = increment LSB / dt; the doubles' rounding
@@ -174,15 +174,4 @@ TEST_CASE("nothing hidden gives no reported finding", "[diagnose][null]") {
       CHECK_FALSE(f.reported);
     }
   }
-}
-TEST_CASE("debug curves", "[.debug]") {
-  const auto r = record("    - {type: ramp, slope: 300 deg/h^2}\n", 103);
-  auto imp = dg::improve(r, fitBase(r), {dg::AddRequest::parse("ramp:gx")}, options());
-  for (auto* d : {&imp.before, &imp.after}) {
-    const auto& a = d->axis("gx").adev;
-    for (std::size_t k = 0; k < a.x.size(); ++k)
-      std::cout << a.x[k] << " " << a.meas[k] << " " << a.model[k] << " " << a.lo[k] << " " << a.hi[k] << " " << a.outside[k] << "\n";
-    std::cout << "--\n";
-  }
-  std::cout << imp.model.text;
 }
