@@ -19,6 +19,7 @@
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/internal.hpp"
 #include "errormodels/identify.hpp"
 
 namespace dg = sinsim::errormodels::diagnose;
@@ -174,4 +175,57 @@ TEST_CASE("nothing hidden gives no reported finding", "[diagnose][null]") {
       CHECK_FALSE(f.reported);
     }
   }
+}
+
+TEST_CASE("the same seed gives identical diagnoses and threads do not matter", "[diagnose]") {
+  const auto r = record("    - {type: random_walk, K: 0.0005 deg/s/sqrt(s)}\n", 102);
+  const auto base = fitBase(r);
+  auto o1 = options();
+  o1.threads = 1;
+  auto o2 = options();
+  o2.threads = 2;
+  // Realisation r is StreamKey (seed, r) whatever thread runs it: bit-identical output.
+  CHECK(dg::toJson(dg::diagnose(r, base, o1)) == dg::toJson(dg::diagnose(r, base, o2)));
+}
+
+TEST_CASE("the improved model file loads and its JSON carries before and after", "[diagnose]") {
+  const auto r = record("    - {type: warmup, amplitude: 0.1 deg/s, tau: 60 s}\n", 107);
+  const auto imp = dg::improve(r, fitBase(r), {dg::AddRequest::parse("warmup")}, options());
+  // The written model is an ordinary model file: it loads and names the added effect.
+  const auto m = sinsim::errormodels::ImuErrorModel::fromString(imp.model.text, "improved.yaml");
+  bool hasWarmup = false;
+  for (const auto& n : m.effectNames()) hasWarmup = hasWarmup || n.find("warmup") != std::string::npos;
+  CHECK(hasWarmup);
+  const auto j = dg::toJson(imp);
+  for (const char* key : {"\"misfit_before\"", "\"misfit_after\"", "\"findings\"", "\"fails\"",
+                          "\"evidence\"", "\"score\"", "\"size\""})
+    CHECK(j.find(key) != std::string::npos);
+  CHECK(imp.changes.at(0).misfitAfter < imp.changes.at(0).misfitBefore);
+  const auto table = dg::summaryTable(imp);
+  CHECK(table.find("warmup") != std::string::npos);
+}
+
+TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
+  CHECK_THROWS_WITH(dg::AddRequest::parse("jitter"), Catch::Contains("can add: quantization"));
+  CHECK_THROWS_WITH(dg::AddRequest::parse("ramp:gq"), Catch::Contains("unknown channel"));
+  const auto r = record("", 201);
+  auto o = options();
+  o.realisations = 4;
+  CHECK_THROWS_WITH(dg::diagnose(r, fitBase(r), o), Catch::Contains("at least 8"));
+  // A temperature model on a record without temperature.
+  const dg::ModelText temp{"gyro:\n  x:\n    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}\n",
+                           "t.yaml"};
+  CHECK_THROWS_WITH(dg::diagnose(r, temp, options()), Catch::Contains("temperature"));
+}
+
+TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
+  using sinsim::errormodels::diagnose::detail::latticeStep;
+  std::vector<double> y, z;
+  for (int k = 0; k < 5000; ++k) {
+    const double v = std::sin(0.37 * k) * 3 + std::cos(1.1 * k);  // continuous values
+    z.push_back(v);
+    y.push_back(0.00333 * std::nearbyint(v / 0.00333) + 0.001);  // on a lattice with an offset
+  }
+  CHECK(latticeStep(y) == Approx(0.00333).epsilon(1e-9));
+  CHECK(latticeStep(z) == 0.0);
 }
