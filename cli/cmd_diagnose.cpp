@@ -86,7 +86,8 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   c->add_option("--model", a->model, "error model file (YAML)")->required();
   c->add_option("--add", a->add,
                 "add an effect (quantization, random_walk, ramp, bias_instability, sinusoid, "
-                "temperature, warmup, outliers), optionally on one channel: ramp:gz")
+                "temperature, warmup, outliers, or found = every reported finding), optionally on one "
+                "channel: ramp:gz")
       ->take_all();
   c->add_option("--edited", a->edited, "compare with a second (user-edited) model file: before -> after");
   c->add_option("-o,--output", a->output, "improved model file (default MODEL.improved.yaml)");

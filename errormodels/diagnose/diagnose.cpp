@@ -50,11 +50,11 @@ AddRequest AddRequest::parse(const std::string& text) {
     channelIndex(r.channel);
   }
   const auto& known = detectableEffects();
-  if (std::find(known.begin(), known.end(), r.effect) == known.end()) {
+  if (r.effect != "found" && std::find(known.begin(), known.end(), r.effect) == known.end()) {
     std::string list;
     for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
     throw InputError("--add " + text + ": unknown effect \"" + r.effect + "\" (the diagnosis can add: " +
-                     list + ")");
+                     list + "; or \"found\": every reported finding)");
   }
   return r;
 }
@@ -574,10 +574,17 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
   for (auto& w : run.work) {
     // The requested effects of this channel, in the order of their diagnosis score.
     std::vector<std::string> wanted;
-    for (const auto& a : adds)
-      if ((a.channel.empty() || a.channel == w.d.channel) &&
-          std::find(wanted.begin(), wanted.end(), a.effect) == wanted.end())
-        wanted.push_back(a.effect);
+    for (const auto& a : adds) {
+      if (!(a.channel.empty() || a.channel == w.d.channel)) continue;
+      std::vector<std::string> effects{a.effect};
+      if (a.effect == "found") {  // every reported finding of this channel
+        effects.clear();
+        for (const auto& f : w.d.findings)
+          if (f.reported) effects.push_back(f.effect);
+      }
+      for (const auto& e : effects)
+        if (std::find(wanted.begin(), wanted.end(), e) == wanted.end()) wanted.push_back(e);
+    }
     AxisChange ch;
     ch.channel = w.d.channel;
     if (wanted.empty()) {

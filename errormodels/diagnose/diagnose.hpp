@@ -133,7 +133,8 @@ struct Diagnosis {
 /// fewer than 8 realisations; ConfigError for a bad model file.
 Diagnosis diagnose(const Record& record, const ModelText& model, const DiagnoseOptions& options = {});
 
-/// One request of --add: an effect type and a channel ("" = every diagnosed channel).
+/// One request of --add: an effect type (or "found": every reported finding) and a channel
+/// ("" = every diagnosed channel).
 struct AddRequest {
   std::string effect;
   std::string channel;
