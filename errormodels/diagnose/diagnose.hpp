@@ -27,7 +27,7 @@
 //             too), or the look-elsewhere-corrected z of its own test (lattice of values, a PSD
 //             line, isolated samples), whichever is larger; capped at 40.
 //   findings  forward selection: the candidate with the largest score is accepted when its score
-//             >= threshold (default 5), the others are re-scored given it, and so on.
+//             >= threshold (default 8), the others are re-scored given it, and so on.
 #pragma once
 
 #include <cstddef>
@@ -58,8 +58,8 @@ struct DiagnoseOptions {
   /// Two-sided level of the bands. 0.99: with ~30 tau points a perfect model leaves on average
   /// 0.3 outside (P(>= 3 outside) = 0.3 %), so "outside" means something.
   double bandLevel = 0.99;
-  /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 5.
-  double threshold = 5.0;
+  /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 8.
+  double threshold = 8.0;
   /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
   double maxFactorFraction = 0.125;
   std::size_t psdSegment = 0;  ///< 0: min(4096, largest power of two <= N/8)
@@ -115,14 +115,14 @@ struct AxisDiagnosis {
   /// Every candidate considered: reported ones first in acceptance order, then the rest by score.
   std::vector<Finding> findings;
   double noiseScale = 1.0;  ///< variance factor s fitted with the reported findings
-  bool fits(double threshold) const;  ///< no reported finding and fewer than 10 % outside
+  bool fits(double threshold) const;  ///< no reported finding and chi2 below its 0.999 quantile
 };
 
 struct Diagnosis {
   std::string data, model;
   double rate = 0.0;
   std::size_t samples = 0, realisations = 0;
-  double threshold = 5.0;
+  double threshold = 8.0;
   double bandLevel = 0.95;
   std::vector<AxisDiagnosis> axes;
   const AxisDiagnosis& axis(const std::string& channel) const;  ///< InputError if absent

@@ -95,6 +95,10 @@ Outcome diagnoseHidden(const std::string& name, const Record& r,
     CHECK(before.findings[i].reported);
     CHECK(before.findings[i].score >= before.findings[i].score);
   }
+  // No false alarm beside them: nothing else reported (threshold 8, see the README).
+  std::size_t reported = 0;
+  for (const auto& f : before.findings) reported += f.reported;
+  CHECK(reported == hidden.size());
   if (requireHalving) CHECK(after.misfit <= 0.5 * before.misfit);
   // >= 90 % of the tau inside the 95 % band after the effect is added.
   CHECK(after.fractionOutside <= 0.10);
