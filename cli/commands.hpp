@@ -12,6 +12,8 @@ using Action = std::function<int()>;
 
 // One line per subcommand (add yours here and in main.cpp).
 void addAnalyzeCommand(CLI::App& app, Action& action);
+void addDiagnoseCommand(CLI::App& app, Action& action);
+void addFitCommand(CLI::App& app, Action& action);
 void addRunCommand(CLI::App& app, Action& action);
 void addMcCommand(CLI::App& app, Action& action);
 void addSynthCommand(CLI::App& app, Action& action);

@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
   sinsim::cli::Action action;
   // Subcommand registrations go here.
   sinsim::cli::addAnalyzeCommand(app, action);
+  sinsim::cli::addDiagnoseCommand(app, action);
+  sinsim::cli::addFitCommand(app, action);
   sinsim::cli::addRunCommand(app, action);
   sinsim::cli::addMcCommand(app, action);
   sinsim::cli::addSynthCommand(app, action);

@@ -40,7 +40,7 @@ Vec3 Earth::omega_en_n(double lat, double h, const Vec3& v_n) const {
 double Earth::schulerFrequency(double lat) const {
   double M = 0.0, N = 0.0;
   radii(lat, M, N);
-  return std::sqrt(-gravity_n(lat, 0.0).z() / std::sqrt(M * N));
+  return std::sqrt(gravity_n(lat, 0.0).z() / std::sqrt(M * N));  // g_n.z() > 0: NED down
 }
 
 }  // namespace sinsim::nav

@@ -5,6 +5,7 @@
 
 #include "errormodels/effect.hpp"
 #include "errormodels/imu_model.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 using namespace sinsim::errormodels;
@@ -23,11 +24,7 @@ std::vector<Diagnostic> diagnosticsOf(const std::string& text) {
 
 bool hasDiagnostic(const std::vector<Diagnostic>& ds, int line, const std::string& key,
                    const std::string& fragment) {
-  for (const auto& d : ds)
-    if (d.file == "bad.yaml" && d.line == line && d.key == key &&
-        d.message.find(fragment) != std::string::npos)
-      return true;
-  return false;
+  return test::hasDiagnostic(ds, "bad.yaml", line, key, fragment);
 }
 
 nav::ImuSample staticSample(double t, double dt) {

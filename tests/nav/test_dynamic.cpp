@@ -221,9 +221,9 @@ TEST_CASE("error-free aircraft flight of 30 min at 100 Hz: horizontal error belo
 TEST_CASE("the mechanization's truncation error is second order in the IMU interval") {
   // Local truncation O(h³) per step (midpoint Earth terms, first-order nav-frame rotation,
   // trapezoidal position) gives a global O(h²) error: halving the interval must divide the error
-  // by 4. Measured on this profile: 25 Hz 3.08 cm, 50 Hz 7.62 mm, 100 Hz 1.90 mm, 200 Hz
-  // 0.47 mm. Asserted: ratio 50 → 100 Hz within 4 ± 10 % (a first- or third-order term would
-  // give 2 or 8).
+  // by 4. Measured on this profile: 50 Hz 0.72 mm, 100 Hz 0.176 mm (before the second-order
+  // rotation compensation term: 7.62 mm and 1.90 mm, also ratio 4). Asserted: ratio 50 → 100 Hz
+  // within 4 ± 10 % (a first- or third-order term would give 2 or 8).
   const DynResult r50 = fly(aircraftProfile(), -33.0 * kDeg, 3000.0, 1800.0, 50.0);
   const DynResult r100 = fly(aircraftProfile(), -33.0 * kDeg, 3000.0, 1800.0, 100.0);
   const double ratio = r50.horizontal / r100.horizontal;

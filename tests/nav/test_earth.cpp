@@ -68,3 +68,14 @@ TEST_CASE("LocalEarth matches GeographicLib over its validity box") {
   CHECK(worstR < 1e-6);
   CHECK(worstT < 1e-15);
 }
+
+TEST_CASE("Schuler frequency matches the textbook 84.4-minute period at 45 deg") {
+  // Titterton & Weston 2004, sec. 12.3: T_s = 2π sqrt(R/g) ≈ 84.4 min. With g(45°) = 9.8062 m/s²
+  // and R = sqrt(MN) = 6.3675e6 m the period is 5063 s = 84.38 min; the textbook figure is quoted
+  // to 0.1 min, so ±0.1 min (0.12 %) is the tightest honest bound.
+  const sinsim::nav::Earth earth;
+  const double lat = 45.0 * 3.14159265358979323846 / 180.0;
+  const double ws = earth.schulerFrequency(lat);
+  REQUIRE(std::isfinite(ws));
+  CHECK(2.0 * 3.14159265358979323846 / ws / 60.0 == Approx(84.4).margin(0.1));
+}

@@ -115,11 +115,7 @@ segments: [{type: static, duration: 90 min}]
 )", "foucault.yaml");
   const nav::Earth earth;
   const double lat = 45.0 * kPi / 180.0;
-  // ωs from GeographicLib's normal gravity and radii (not Earth::schulerFrequency: at the time of
-  // writing it takes the root of a negative number, see the report of the sim branch)
-  double M = 0.0, N = 0.0;
-  earth.radii(lat, M, N);
-  const double ws = std::sqrt(earth.gravity_n(lat, 0.0).norm() / std::sqrt(M * N));
+  const double ws = earth.schulerFrequency(lat);  // sqrt(g/R), R = sqrt(MN)
   const double wf = earth.rate() * std::sin(lat);
   const double w = std::sqrt(ws * ws + wf * wf);
   const double bias = 100e-6 * 9.80665;  // [m/s^2]

@@ -6,6 +6,7 @@
 
 #include "common/error.hpp"
 #include "sim/scenario.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 
@@ -25,11 +26,7 @@ std::vector<Diagnostic> problems(const std::string& text) {
 
 bool has(const std::vector<Diagnostic>& ds, int line, const std::string& key,
          const std::string& fragment) {
-  for (const auto& d : ds)
-    if (d.file == "bad.yaml" && d.line == line && d.key == key &&
-        d.message.find(fragment) != std::string::npos)
-      return true;
-  return false;
+  return test::hasDiagnostic(ds, "bad.yaml", line, key, fragment);
 }
 
 std::string listing(const std::vector<Diagnostic>& ds) {

@@ -1,0 +1,107 @@
+// `sinsim diagnose DATA --model MODEL [--add EFFECT[:AXIS] ...] [--json OUT] [--html OUT]`:
+// compares an error model with a measured static record, says where it fails and which effect is
+// missing, and with --add (or --edited MODEL2) refits the model with the effect and shows the
+// misfit before -> after (errormodels/diagnose).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "common/error.hpp"
+#include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/stats/record.hpp"
+#include "sim/diagnose_report.hpp"
+
+namespace sinsim::cli {
+namespace {
+
+namespace dg = errormodels::diagnose;
+
+struct DiagnoseArgs {
+  std::string data, model, edited, json, html, output;
+  std::vector<std::string> add, channels;
+  std::string gyroUnit, accelUnit;
+  double rate = 0;
+  std::size_t realisations = 32;
+  std::uint64_t seed = 20240505;
+  unsigned threads = 0;
+  double threshold = 8.0;
+};
+
+std::string defaultOutput(const std::string& model) {
+  auto dot = model.rfind('.');
+  auto slash = model.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return model + ".improved.yaml";
+  return model.substr(0, dot) + ".improved" + model.substr(dot);
+}
+
+int runDiagnose(const DiagnoseArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  errormodels::RecordOptions ro;
+  if (!a.gyroUnit.empty()) ro.gyro_unit = a.gyroUnit;
+  if (!a.accelUnit.empty()) ro.accel_unit = a.accelUnit;
+  if (a.rate > 0) ro.rate_hz = a.rate;
+  const auto record = errormodels::loadRecord(a.data, ro);
+  const auto model = dg::ModelText::load(a.model);
+  dg::DiagnoseOptions o;
+  o.channels = a.channels;
+  o.realisations = a.realisations;
+  o.seed = a.seed;
+  o.threads = a.threads;
+  o.threshold = a.threshold;
+  std::vector<dg::AddRequest> adds;
+  for (const auto& s : a.add) adds.push_back(dg::AddRequest::parse(s));
+  if (!adds.empty() && !a.edited.empty()) throw InputError("give either --add or --edited, not both");
+
+  if (adds.empty() && a.edited.empty()) {
+    const auto d = dg::diagnose(record, model, o);
+    std::cout << dg::summaryTable(d);
+    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(d));
+    if (!a.html.empty()) writeDiagnoseReport(a.html, d);
+  } else {
+    const auto imp = adds.empty() ? dg::compareModels(record, model, dg::ModelText::load(a.edited), o)
+                                  : dg::improve(record, model, adds, o);
+    std::cout << dg::summaryTable(imp);
+    if (!adds.empty()) {
+      const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
+      dg::writeFileAtomic(out, imp.model.text);
+      std::cout << "wrote the improved model " << out << "\n";
+    }
+    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(imp));
+    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp);
+  }
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::fprintf(stderr, "diagnose: %.2f s wall\n", s);
+  return 0;
+}
+
+}  // namespace
+
+void addDiagnoseCommand(CLI::App& app, Action& action) {
+  auto a = std::make_shared<DiagnoseArgs>();
+  CLI::App* c = app.add_subcommand(
+      "diagnose", "compare an error model with a measured record: where it fails, which effect is "
+                  "missing; --add EFFECT[:AXIS] refits the model with it");
+  c->add_option("DATA", a->data, "record: CSV or CSV.gz (t, gx gy gz, ax ay az, temp)")->required();
+  c->add_option("--model", a->model, "error model file (YAML)")->required();
+  c->add_option("--add", a->add,
+                "add an effect (quantization, random_walk, ramp, bias_instability, sinusoid, "
+                "temperature, warmup, outliers, or found = every reported finding), optionally on one "
+                "channel: ramp:gz")
+      ->take_all();
+  c->add_option("--edited", a->edited, "compare with a second (user-edited) model file: before -> after");
+  c->add_option("-o,--output", a->output, "improved model file (default MODEL.improved.yaml)");
+  c->add_option("--json", a->json, "write the diagnosis as JSON");
+  c->add_option("--html", a->html, "write a self-contained HTML report");
+  c->add_option("--channels", a->channels, "channels to diagnose (gx gy gz ax ay az; default all)");
+  c->add_option("--gyro-unit", a->gyroUnit, "unit of gx/gy/gz, e.g. deg/s (default: header or rad/s)");
+  c->add_option("--accel-unit", a->accelUnit, "unit of ax/ay/az, e.g. g (default: header or m/s^2)");
+  c->add_option("--rate", a->rate, "sample rate [Hz] (required without a t column)");
+  c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
+  c->add_option("--seed", a->seed, "seed of the realisations");
+  c->add_option("--threads", a->threads, "worker threads (default: all cores)");
+  c->add_option("--threshold", a->threshold, "reporting threshold on the score (default 8)");
+  c->callback([a, &action] { action = [a] { return runDiagnose(*a); }; });
+}
+
+}  // namespace sinsim::cli

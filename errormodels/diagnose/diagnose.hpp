@@ -1,0 +1,190 @@
+// Diagnosis: compare an error model with a measured static record, say where it fails, name the
+// missing effect, add it and measure the misfit fall (issue 5).
+//
+//   record + model -> Monte Carlo realisations of the model at the record's length and rate
+//   (ImuErrorModel, one StreamKey per realisation, worker threads) -> per channel:
+//     1. compare   overlapping ADEV (octave tau), Welch PSD (log-frequency bands) and normalised
+//                  ACF of the measurement against the model's mean with a band; misfit number;
+//                  Ljung-Box whiteness of the one-step prediction residuals (AR models)
+//     2. fails     tau ranges / frequency bands where the measurement leaves the band
+//     3. findings  candidate effects ranked by a score (forward selection, see below)
+//   and, with improve(), the model file with the effects added and the comparison redone.
+//
+// Definitions (docs: README "Diagnose"):
+//   band      the central `bandLevel` interval of a record's ADEV (PSD band) estimate under the
+//             model: model * sqrt(chi2_q(nu) / nu), nu = 2 mean^2 / var of the Monte Carlo
+//             AVAR (PSD) estimates (the chi-square law of a variance estimate, SP 1065 eq. 45).
+//   misfit    RMS over the tau grid of log10(ADEV_meas / ADEV_model), with the part a perfect
+//             model would show taken out: misfit = sqrt(max(0, rms^2 - floor^2)), floor^2 the
+//             mean of the same mean square over the model's own realisations (the estimation
+//             noise, dominated by the long tau). In decades: 0.3 is a factor 2 on average.
+//             Reported with the raw RMS, the floor and the fraction of tau outside the band.
+//   chi2      r' C^-1 r, r = ln AVAR_meas - ln AVAR_model, C the covariance of ln AVAR estimates
+//             from the realisations (per-tau variances, correlation averaged along the octave
+//             diagonals, times 1 + 1/R for the Monte Carlo mean's own error).
+//   score     Gaussian-equivalent significance of a candidate: sqrt(chi2 reduction) when the
+//             candidate's Allan contribution is added to the model (overall noise level s refitted
+//             too), or the look-elsewhere-corrected z of its own test (lattice of values, a PSD
+//             line, isolated samples), whichever is larger; capped at 40.
+//   findings  forward selection: the candidate with the largest score is accepted when its score
+//             >= threshold (default 8), the others are re-scored given it, and so on.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "errormodels/stats/record.hpp"
+
+namespace sinsim::errormodels::diagnose {
+
+/// A model file's text (YAML, the error-model format) and the name it is known by.
+struct ModelText {
+  std::string text;
+  std::string name;
+  static ModelText load(const std::string& path);  ///< InputError if unreadable
+};
+
+struct DiagnoseOptions {
+  /// Channels "gx".."az" to diagnose; empty: every channel the record has.
+  std::vector<std::string> channels;
+  /// Monte Carlo realisations of the model (>= 8).
+  std::size_t realisations = 32;
+  std::uint64_t seed = 20240505;  ///< StreamKey seed; realisation r is run r
+  unsigned threads = 0;           ///< 0: std::thread::hardware_concurrency()
+  /// Two-sided level of the bands. 0.99: with ~30 tau points a perfect model leaves on average
+  /// 0.3 outside (P(>= 3 outside) = 0.3 %), so "outside" means something.
+  double bandLevel = 0.99;
+  /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 8.
+  double threshold = 8.0;
+  /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
+  double maxFactorFraction = 0.125;
+  std::size_t psdSegment = 0;  ///< 0: min(4096, largest power of two <= N/8)
+  std::size_t psdBands = 40;   ///< log-spaced frequency bands of the PSD comparison
+  std::size_t acfMaxLag = 0;   ///< 0: min(N/20, 500) samples
+  std::size_t ljungBoxLags = 20;
+};
+
+/// One statistic of the measurement against the model. x: tau [s], f [Hz] or lag [s].
+struct Comparison {
+  std::vector<double> x;
+  std::vector<double> meas, model, lo, hi;  ///< SI (ADEV [U], PSD [U^2/Hz], ACF [1])
+  std::vector<int> outside;                 ///< +1 above the band, -1 below, 0 inside
+};
+
+/// A contiguous range where the measurement leaves the band on one side.
+struct FailRange {
+  std::string statistic;  ///< "adev" or "psd"
+  double from = 0, to = 0;  ///< [s] tau or [Hz] frequency
+  int direction = 0;        ///< +1 measurement above the model's band, -1 below
+  double worstRatio = 1.0;  ///< meas / model at the point farthest outside
+  std::size_t points = 0;
+};
+
+struct Finding {
+  std::string effect;    ///< catalogue type, e.g. "random_walk"
+  std::string evidence;  ///< why, in words with numbers
+  std::string size;      ///< fitted size in words, e.g. "K = 0.012 deg/h/sqrt(h)"
+  std::string yaml;      ///< the effect in model-file syntax, e.g. "{type: ramp, slope: ...}"
+  std::map<std::string, double> params;  ///< fitted parameters, SI
+  double score = 0.0;
+  bool reported = false;  ///< score >= threshold (accepted by the forward selection)
+};
+
+struct LjungBox {
+  std::size_t lags = 0, dof = 0;
+  double Q = 0.0, pValue = 1.0;
+};
+
+struct AxisDiagnosis {
+  std::string channel;  ///< "gx"
+  std::string unit;     ///< display unit of the signal ("deg/s" or "m/s^2")
+  double unitFactor = 1.0;  ///< SI per display unit
+  Comparison adev, psd, acf;
+  double misfit = 0.0;           ///< beyond the noise floor (header comment) [decades]
+  double misfitRaw = 0.0;        ///< RMS log10(ADEV_meas / ADEV_model) over tau [decades]
+  double misfitFloor = 0.0;      ///< the same RMS expected of a perfect model [decades]
+  double fractionOutside = 0.0;  ///< of the ADEV tau outside the band
+  double chi2 = 0.0;             ///< see the header comment
+  std::size_t chi2Points = 0;
+  std::optional<LjungBox> ljungBox;  ///< when the model of this channel is one AR at the rate
+  std::vector<FailRange> fails;
+  /// Every candidate considered: reported ones first in acceptance order, then the rest by score.
+  std::vector<Finding> findings;
+  double noiseScale = 1.0;  ///< variance factor s fitted with the reported findings
+  bool fits(double threshold) const;  ///< no reported finding and chi2 below its 0.999 quantile
+};
+
+struct Diagnosis {
+  std::string data, model;
+  double rate = 0.0;
+  std::size_t samples = 0, realisations = 0;
+  double threshold = 8.0;
+  double bandLevel = 0.95;
+  std::vector<AxisDiagnosis> axes;
+  const AxisDiagnosis& axis(const std::string& channel) const;  ///< InputError if absent
+};
+
+/// Compares the model with the record, per channel. Throws InputError for a channel the record
+/// lacks, a model that needs temperature when the record has none, too few samples (< 256),
+/// fewer than 8 realisations; ConfigError for a bad model file.
+Diagnosis diagnose(const Record& record, const ModelText& model, const DiagnoseOptions& options = {});
+
+/// One request of --add: an effect type (or "found": every reported finding) and a channel
+/// ("" = every diagnosed channel).
+struct AddRequest {
+  std::string effect;
+  std::string channel;
+  static AddRequest parse(const std::string& text);  ///< "ramp", "quantization:ax"
+};
+
+struct AxisChange {
+  std::string channel;
+  std::vector<std::string> added;  ///< effect YAML added to this channel
+  double noiseScale = 1.0;         ///< variance factor applied to the base noise
+  double misfitBefore = 0, misfitAfter = 0;
+  double fractionOutsideBefore = 0, fractionOutsideAfter = 0;
+};
+
+struct Improvement {
+  Diagnosis before, after;
+  ModelText model;  ///< the improved model file
+  std::vector<AxisChange> changes;
+  std::vector<std::string> notes;  ///< requests that could not be honoured, and why
+};
+
+/// Diagnoses, refits the requested effects (sizes from the data with the base noise level
+/// refitted, as in the findings), writes them into the model text and diagnoses again.
+Improvement improve(const Record& record, const ModelText& model,
+                    const std::vector<AddRequest>& adds, const DiagnoseOptions& options = {});
+
+/// Compares the record with a second model file (e.g. one the user edited) as before -> after.
+Improvement compareModels(const Record& record, const ModelText& before, const ModelText& after,
+                          const DiagnoseOptions& options = {});
+
+/// The catalogue effects the diagnosis can detect and add.
+const std::vector<std::string>& detectableEffects();
+
+/// A static record of `samples` samples at rate [Hz] produced by `model` (the machinery of
+/// `sinsim synth`: ImuErrorModel realisation `key`, ideal rates `ideal` [rad/s x3, m/s^2 x3]
+/// held constant, temperature [K] per sample or empty). Writes gx..az (and temperature).
+Record simulateRecord(const ModelText& model, double rate, std::size_t samples,
+                      std::uint64_t seed, std::uint64_t run, const std::vector<double>& ideal,
+                      const std::vector<double>& temperatureK = {});
+
+/// JSON text of a diagnosis (per channel: misfit, fraction_outside, chi2, ljung_box, fails,
+/// findings best first, curves) and, for an improvement, misfit_before / misfit_after.
+std::string toJson(const Diagnosis& d);
+std::string toJson(const Improvement& imp);
+
+/// The terminal table.
+std::string summaryTable(const Diagnosis& d);
+std::string summaryTable(const Improvement& imp);
+
+/// Writes text to path through a temporary renamed into place (never half-written).
+void writeFileAtomic(const std::string& path, const std::string& text);
+
+}  // namespace sinsim::errormodels::diagnose

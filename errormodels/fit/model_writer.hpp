@@ -1,0 +1,67 @@
+// Writes fitted results as an error-model YAML file (the format of the error-model section of the
+// README: per sensor and axis, a list of effects with unit-bearing values), with the fit's
+// provenance and uncertainties as comments. The writer knows the fit results, not the simulator:
+// the file is read back by ImuErrorModel::load like any hand-written model.
+//
+// What is written, per axis (SI inside, friendly units in the file):
+//   ar               a: [a1..ap], sigma = sqrt(E) (driving-noise STANDARD DEVIATION), rate
+//   gauss_markov     sigma, tau
+//   white            density = N                     (Allan term)
+//   random_walk      K                               (Allan term or composite fit)
+//   bias_instability B, tau_range = the tau span of the Allan points used
+//   quantization     lsb = sqrt(12) Q as an increment LSB (angle / velocity): uniform rounding of
+//                    the integrated signal with step q gives AVAR 3 (q^2/12) / tau^2 (IEEE Std
+//                    952-1997 Annex C, quantization noise: Q = q / sqrt(12))
+//   ramp             slope = R
+// Allan terms are written only when detected; the others appear as comments with their upper
+// bounds. Gyro values are in rad/s-based SI inside and written in deg-based units; accelerometer
+// values in m/s^2-based SI, written in m/s-based units (mg / ug for levels).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/composite_fit.hpp"
+#include "errormodels/fit/gauss_markov_fit.hpp"
+#include "errormodels/fit/order_selection.hpp"
+
+namespace sinsim::errormodels::fit {
+
+enum class SensorSignal { Gyro, Accel };
+
+/// The fits to write for one axis of one sensor; any subset.
+struct AxisFitResult {
+  SensorSignal sensor = SensorSignal::Gyro;
+  std::string axis = "x";  ///< "x", "y", "z" (or "all")
+  std::optional<ArFit> ar;
+  double arRate = 0.0;  ///< [Hz] the rate the AR was fitted at (required with ar)
+  std::optional<OrderSelection> arOrders;  ///< criteria table, for the provenance comment
+  std::optional<GaussMarkovFit> gaussMarkov;
+  std::optional<AllanFit> allan;
+  /// Allan terms to consider (Q, N, B, K, R); detected ones among them are written. Turn the
+  /// white term off when an AR model already carries the short-term noise.
+  std::array<bool, kAllanTermCount> allanWrite{true, true, true, true, true};
+  std::optional<ArRandomWalkFit> composite;  ///< writes its AR and (if detected) its K
+  std::vector<std::string> notes;            ///< extra comment lines for this axis
+};
+
+struct ModelProvenance {
+  std::string description;  ///< the file's `description:` value
+  std::string dataFile;
+  double rate = 0.0;         ///< [Hz] of the record
+  double duration = 0.0;     ///< [s]
+  std::string method;        ///< e.g. "db5 denoise + Burg AR(5), MDL"
+  std::vector<std::string> notes;
+};
+
+/// The YAML text. Throws InputError when an axis entry is unusable (AR without rate, bad axis).
+std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvenance& provenance);
+
+/// Writes modelYaml(...) to `path` via a temporary file renamed into place, so a failure never
+/// leaves a half-written model. Throws sinsim::Error on I/O failure.
+void writeModelFile(const std::string& path, const std::vector<AxisFitResult>& axes,
+                    const ModelProvenance& provenance);
+
+}  // namespace sinsim::errormodels::fit

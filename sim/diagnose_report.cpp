@@ -1,0 +1,172 @@
+// The diagnosis report (diagnose_report.hpp).
+#include "sim/diagnose_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "sim/report/report.hpp"
+
+namespace sinsim {
+
+namespace dg = errormodels::diagnose;
+using namespace report;
+
+namespace {
+
+const char* kMeas = "#1f77b4";    // measurement
+const char* kModel = "#ff7f0e";   // model (before)
+const char* kAfter = "#2ca02c";   // improved model
+const char* kFail = "#d62728";    // failing ranges
+
+std::string fmt(double v, int digits = 3) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+std::vector<double> scaled(const std::vector<double>& v, double f) {
+  std::vector<double> o(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) o[i] = v[i] / f;
+  return o;
+}
+
+/// Half the geometric step between neighbouring points (shades cover whole points).
+double halfStep(const std::vector<double>& x) {
+  return x.size() > 1 ? std::sqrt(x[1] / x[0]) : 1.5;
+}
+
+Plot adevPlot(const dg::AxisDiagnosis& a, const std::string& title, bool shades) {
+  Plot p(title, "averaging time τ [s]", "σ(τ) [" + a.unit + "]");
+  p.xLog = p.yLog = true;
+  const double f = a.unitFactor;
+  if (shades) {
+    const double h = halfStep(a.adev.x);
+    bool first = true;
+    for (const auto& r : a.fails)
+      if (r.statistic == "adev") {
+        p.add(Shade(r.from / h, r.to * h, kFail, first ? "measurement outside the band" : ""));
+        first = false;
+      }
+  }
+  p.add(Band("model band", a.adev.x, scaled(a.adev.lo, f), scaled(a.adev.hi, f), kModel));
+  p.add(Series("model", a.adev.x, scaled(a.adev.model, f), kModel));
+  p.add(Series("measurement", a.adev.x, scaled(a.adev.meas, f), kMeas, false, 1.6, true));
+  return p;
+}
+
+Plot psdPlot(const dg::AxisDiagnosis& a) {
+  Plot p("PSD — " + a.channel, "frequency [Hz]", "PSD [(" + a.unit + ")²/Hz]");
+  p.xLog = p.yLog = true;
+  const double f2 = a.unitFactor * a.unitFactor;
+  const double h = halfStep(a.psd.x);
+  bool first = true;
+  for (const auto& r : a.fails)
+    if (r.statistic == "psd") {
+      p.add(Shade(r.from / h, r.to * h, kFail, first ? "outside the band" : ""));
+      first = false;
+    }
+  p.add(Band("model band", a.psd.x, scaled(a.psd.lo, f2), scaled(a.psd.hi, f2), kModel));
+  p.add(Series("model", a.psd.x, scaled(a.psd.model, f2), kModel));
+  p.add(Series("measurement", a.psd.x, scaled(a.psd.meas, f2), kMeas, false, 1.6, true));
+  return p;
+}
+
+Plot acfPlot(const dg::AxisDiagnosis& a) {
+  Plot p("ACF — " + a.channel, "lag [s]", "normalised autocorrelation");
+  p.add(Band("model band", a.acf.x, a.acf.lo, a.acf.hi, kModel));
+  p.add(Series("model", a.acf.x, a.acf.model, kModel));
+  p.add(Series("measurement", a.acf.x, a.acf.meas, kMeas));
+  return p;
+}
+
+Table findingsTable(const dg::AxisDiagnosis& a, double threshold) {
+  Table t;
+  t.header = {"effect", "score", "fitted size", "evidence", "model-file line"};
+  t.caption = "Candidate effects for " + a.channel + " (reported when score ≥ " + fmt(threshold) + ")";
+  for (const auto& f : a.findings) {
+    const bool rep = f.reported;
+    t.rows.push_back({Cell(f.effect, rep ? "fail" : "muted"), Cell(fmt(f.score, 3), rep ? "num fail" : "num muted"),
+                      Cell(f.size, rep ? "" : "muted"), Cell(f.evidence, rep ? "" : "muted"),
+                      Cell(rep ? f.yaml : "", "muted")});
+  }
+  return t;
+}
+
+std::string verdict(const dg::AxisDiagnosis& a, double threshold) {
+  if (a.fits(threshold)) return "fits";
+  std::string s;
+  for (const auto& f : a.findings)
+    if (f.reported) s += (s.empty() ? "missing: " : ", ") + f.effect;
+  return s.empty() ? "misfit, no catalogue effect explains it" : s;
+}
+
+}  // namespace
+
+std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* imp) {
+  HtmlPage page("Diagnosis: " + d.model + " against " + d.data);
+  page.paragraph(std::to_string(d.samples) + " samples at " + fmt(d.rate, 6) + " Hz; model bands from " +
+                 std::to_string(d.realisations) + " Monte Carlo realisations of the model at the record's length and rate (" +
+                 fmt(100 * d.bandLevel, 3) + " % central intervals). Misfit = RMS over τ of log10(ADEV_meas / ADEV_model) beyond the RMS a perfect model shows (its estimation-noise floor). "
+                 "Score = Gaussian-equivalent significance of a candidate effect (see the README, \"Diagnose\").");
+  Table overview;
+  overview.header = {"channel", "misfit", "τ outside band", "χ² / points", "Ljung-Box p", "verdict"};
+  for (const auto& a : d.axes) {
+    const bool ok = a.fits(d.threshold);
+    overview.rows.push_back({Cell(a.channel), Cell(fmt(a.misfit), "num"),
+                             Cell(fmt(100 * a.fractionOutside, 3) + " %", ok ? "num pass" : "num fail"),
+                             Cell(fmt(a.chi2, 4) + " / " + std::to_string(a.chi2Points), "num"),
+                             Cell(a.ljungBox ? fmt(a.ljungBox->pValue, 2) : "–", "num"),
+                             Cell(verdict(a, d.threshold), ok ? "pass" : "fail")});
+  }
+  page.table(overview);
+  if (imp) {
+    Table t;
+    t.caption = "After adding the effects";
+    t.header = {"channel", "misfit before", "misfit after", "τ outside before", "after", "added"};
+    for (const auto& ch : imp->changes) {
+      std::string added;
+      for (const auto& x : ch.added) added += (added.empty() ? "" : "; ") + x;
+      t.rows.push_back({Cell(ch.channel), Cell(fmt(ch.misfitBefore), "num"),
+                        Cell(fmt(ch.misfitAfter), ch.misfitAfter <= 0.5 * ch.misfitBefore ? "num pass" : "num"),
+                        Cell(fmt(100 * ch.fractionOutsideBefore, 3) + " %", "num"),
+                        Cell(fmt(100 * ch.fractionOutsideAfter, 3) + " %",
+                             ch.fractionOutsideAfter <= 0.1 ? "num pass" : "num warn"),
+                        Cell(added.empty() ? "–" : added)});
+    }
+    page.table(t);
+    for (const auto& n : imp->notes) page.paragraph("Note: " + n);
+  }
+  for (const auto& a : d.axes) {
+    page.heading(a.channel + " — " + verdict(a, d.threshold) + " (misfit " + fmt(a.misfit) + ")", 2);
+    std::string fails;
+    for (const auto& r : a.fails)
+      fails += (fails.empty() ? "" : "; ") + r.statistic + " " + fmt(r.from) + "–" + fmt(r.to) +
+               (r.statistic == "adev" ? " s " : " Hz ") + (r.direction > 0 ? "above" : "below") +
+               " the band (×" + fmt(r.worstRatio) + ")";
+    page.paragraph(fails.empty() ? "The measurement stays inside the model's band everywhere."
+                                 : "Where it fails: " + fails + ".");
+    page.plotRow({adevPlot(a, "Allan deviation — " + a.channel, true), psdPlot(a)});
+    page.plotRow({acfPlot(a)});
+    page.table(findingsTable(a, d.threshold));
+    if (imp) {
+      const auto& after = imp->after.axis(a.channel);
+      Plot p("Before → after — " + a.channel, "averaging time τ [s]", "σ(τ) [" + a.unit + "]");
+      p.xLog = p.yLog = true;
+      const double f = a.unitFactor;
+      p.add(Band("improved model band", after.adev.x, scaled(after.adev.lo, f), scaled(after.adev.hi, f), kAfter));
+      p.add(Series("model before", a.adev.x, scaled(a.adev.model, f), kModel, true));
+      p.add(Series("improved model", after.adev.x, scaled(after.adev.model, f), kAfter));
+      p.add(Series("measurement", a.adev.x, scaled(a.adev.meas, f), kMeas, false, 1.6, true));
+      page.plot(p, "misfit " + fmt(a.misfit) + " → " + fmt(after.misfit) + ", τ outside the band " +
+                       fmt(100 * a.fractionOutside, 3) + " % → " + fmt(100 * after.fractionOutside, 3) + " %");
+    }
+  }
+  return page.html();
+}
+
+void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp) {
+  const std::string html = diagnoseReportHtml(d, imp);
+  dg::writeFileAtomic(path, html);
+}
+
+}  // namespace sinsim

@@ -1,0 +1,20 @@
+// The diagnosis as a self-contained HTML page (sim/report): per channel the Allan deviation,
+// PSD and ACF of the measurement over the model's band with the failing ranges shaded, the
+// findings table, and — after an improvement — the before/after curves and misfits.
+#pragma once
+
+#include <string>
+
+#include "errormodels/diagnose/diagnose.hpp"
+
+namespace sinsim {
+
+/// The page's HTML text. Values are shown in deg/s (gyro) and mg (accelerometer).
+std::string diagnoseReportHtml(const errormodels::diagnose::Diagnosis& d,
+                               const errormodels::diagnose::Improvement* improvement = nullptr);
+
+/// Writes it atomically (report::HtmlPage::write).
+void writeDiagnoseReport(const std::string& path, const errormodels::diagnose::Diagnosis& d,
+                         const errormodels::diagnose::Improvement* improvement = nullptr);
+
+}  // namespace sinsim

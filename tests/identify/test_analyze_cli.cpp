@@ -1,0 +1,97 @@
+// `sinsim analyze` end to end on a record with known statistics: white noise of per-sample σ at
+// rate fs has Allan deviation σ/sqrt(fs·τ) (IEEE Std 952-1997 Annex C: N/sqrt(τ), N = σ/sqrt(fs))
+// and a flat one-sided PSD 2σ²/fs. Bad input: exit 1, message with file and line, no output.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSinsim = std::string(SINSIM_BINARY_DIR) + "/sinsim";
+
+int run(const std::string& args, const fs::path& errFile) {
+  const std::string cmd = kSinsim + " " + args + " > /dev/null 2> " + errFile.string();
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and PSD", "[cli]") {
+  const fs::path dir = fs::temp_directory_path() / "sinsim_test_analyze_cli";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const double fs_hz = 100.0, sigma = 0.1;  // [Hz], [rad/s] per sample
+  const int n = 60000;                      // 10 min
+  {
+    std::ofstream f(dir / "white.csv");
+    f << "gx\n";
+    std::mt19937_64 rng(11);
+    std::normal_distribution<double> g(0.0, sigma);
+    f.precision(17);
+    for (int i = 0; i < n; ++i) f << g(rng) << "\n";
+  }
+  const fs::path err = dir / "stderr.txt";
+  const fs::path js = dir / "a.json", html = dir / "a.html";
+  REQUIRE(run("analyze " + (dir / "white.csv").string() + " --rate 100 --json " + js.string() +
+                  " --html " + html.string(),
+              err) == 0);
+  const nlohmann::json j = nlohmann::json::parse(slurp(js));
+  const auto& allan = j["channels"]["gx"]["allan"];
+  bool sawOneSecond = false;
+  for (std::size_t i = 0; i < allan["tau_s"].size(); ++i) {
+    const double tau = allan["tau_s"][i];
+    if (std::abs(tau - 1.28) > 1e-9) continue;  // octave grid: m = 128
+    sawOneSecond = true;
+    const double truth = sigma / std::sqrt(fs_hz * tau);
+    const double edf = allan["edf"][i];
+    // The estimate's relative sd is ≈ 1/sqrt(2·edf) (χ² with edf dof); 5 sd cannot fail by chance
+    // (p < 1e-6) and still catches a wrong √τ or rate scaling (a factor ≥ 1.4).
+    CHECK(std::abs(double(allan["adev"][i]) / truth - 1.0) < 5.0 / std::sqrt(2.0 * edf));
+  }
+  CHECK(sawOneSecond);
+  const auto& psd = j["channels"]["gx"]["psd"];
+  double mean = 0.0;
+  std::size_t bins = 0;
+  for (std::size_t k = 1; k + 1 < psd["psd"].size(); ++k, ++bins) mean += double(psd["psd"][k]);
+  mean /= double(bins);
+  // Mean over ~2000 bins of ~28 averaged segments: relative sd well under 1 %; 3 % is > 5 sd.
+  CHECK(mean == Approx(2.0 * sigma * sigma / fs_hz).epsilon(0.03));
+  const std::string page = slurp(html);
+  CHECK(page.find("<svg") != std::string::npos);
+  CHECK(page.find("Allan deviation gx") != std::string::npos);
+
+  // Bad input: text in data line 3 (file line 4) -> exit 1, file:line named, no output written.
+  {
+    std::ofstream f(dir / "bad.csv");
+    f << "gx\n0.1\n0.2\nabc\n0.3\n";
+  }
+  const fs::path js2 = dir / "b.json", html2 = dir / "b.html";
+  CHECK(run("analyze " + (dir / "bad.csv").string() + " --rate 100 --json " + js2.string() +
+                " --html " + html2.string(),
+            err) == 1);
+  CHECK(slurp(err).find("bad.csv:4") != std::string::npos);
+  CHECK_FALSE(fs::exists(js2));
+  CHECK_FALSE(fs::exists(html2));
+  // No output asked for: a clear error, not a silent no-op.
+  CHECK(run("analyze " + (dir / "white.csv").string() + " --rate 100", err) == 1);
+  CHECK(slurp(err).find("--json") != std::string::npos);
+  fs::remove_all(dir);
+}

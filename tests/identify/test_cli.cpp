@@ -1,0 +1,75 @@
+// `sinsim fit` end to end: a record written by `sinsim synth` -> model file -> read back by
+// ImuErrorModel::load, used by `sinsim synth` and `sinsim run --model`; bad input -> exit 1 with
+// file and line, and no model file.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "errormodels/imu_model.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSinsim = std::string(SINSIM_BINARY_DIR) + "/sinsim";
+
+int run(const std::string& args, const fs::path& errFile) {
+  const std::string cmd = kSinsim + " " + args + " > /dev/null 2> " + errFile.string();
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[identify][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "sinsim_test_identify_cli";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path err = dir / "stderr.txt";
+  const std::string preset = std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml";
+  REQUIRE(run("synth " + preset + " --rate 1000 --duration 120 --seed 3 -o " + (dir / "s.csv").string(), err) == 0);
+  const fs::path model = dir / "m.yaml";
+  INFO(slurp(err));
+  REQUIRE(run("fit " + (dir / "s.csv").string() + " --axes gx,ax --max-order 8 -o " + model.string(), err) == 0);
+  REQUIRE(fs::exists(model));
+  const std::string text = slurp(model);
+  CHECK(text.find("# data: ") != std::string::npos);        // provenance
+  CHECK(text.find("order criteria: AIC") != std::string::npos);
+  CHECK(text.find("type: ar") != std::string::npos);
+  const auto m = sinsim::errormodels::ImuErrorModel::load(model.string());
+  CHECK_FALSE(m.empty());
+  CHECK(run("synth " + model.string() + " --rate 1000 --duration 2 -o " + (dir / "s2.csv").string(), err) == 0);
+  CHECK(run("run " + std::string(SINSIM_SOURCE_DIR) + "/scenarios/static.yaml --model " +
+                model.string() + " -o " + (dir / "run").string(), err) == 0);
+  CHECK(fs::exists(dir / "run" / "summary.json"));
+
+  // Bad input: a NaN in data line 5 (file line 6 after the header) -> exit 1, message with
+  // file:line, no model file (and no temporary left).
+  {
+    std::ofstream f(dir / "bad.csv");
+    f << "t,gx\n0.01,1\n0.02,2\n0.03,3\n0.04,4\n0.05,nan\n0.06,6\n";
+  }
+  const fs::path badModel = dir / "bad.yaml";
+  CHECK(run("fit " + (dir / "bad.csv").string() + " -o " + badModel.string(), err) == 1);
+  const std::string msg = slurp(err);
+  INFO(msg);
+  CHECK(msg.find("bad.csv:6") != std::string::npos);
+  CHECK_FALSE(fs::exists(badModel));
+  CHECK_FALSE(fs::exists(badModel.string() + ".tmp"));
+  // Bad options -> exit 1 before anything is read or written.
+  CHECK(run("fit " + (dir / "s.csv").string() + " --kind arma -o " + badModel.string(), err) == 1);
+  CHECK(slurp(err).find("known: ar, gm, allan, auto") != std::string::npos);
+  CHECK_FALSE(fs::exists(badModel));
+  fs::remove_all(dir);
+}
