@@ -112,6 +112,7 @@ struct Args {
   std::string attitude, heading = "0 deg";
   std::string biasWindow;
   std::string duration;
+  std::string skip;
   std::string vertical = "held";
   double outputRate = 1.0;
   bool noProgress = false;
@@ -188,6 +189,22 @@ int runMc(const Args& a) {
         if (!record->hasGyro(ax) || !record->hasAccel(ax))
           throw InputError(a.measured + ": the record needs the columns gx, gy, gz, ax, ay, az");
       const double rate = record->rate_hz;
+      if (!a.skip.empty()) {  // drop a warm-up: the navigation starts after it
+        const double s = parseTime(a.skip, "--skip");
+        const auto k = std::size_t(std::llround(std::max(0.0, s) * rate));
+        if (k >= record->size())
+          throw InputError("--skip " + a.skip + " leaves nothing of " + a.measured);
+        auto drop = [k](std::vector<double>& v) {
+          if (!v.empty()) v.erase(v.begin(), v.begin() + long(k));
+        };
+        for (int ax = 0; ax < 3; ++ax) {
+          drop(record->gyro[ax]);
+          drop(record->accel[ax]);
+        }
+        drop(record->t);
+        drop(record->temperature);
+        record->rows -= k;
+      }
       std::size_t n = record->size();
       if (!a.duration.empty()) {
         const double d = parseTime(a.duration, "--duration");
@@ -393,7 +410,9 @@ void addMcCommand(CLI::App& app, Action& action) {
   c->add_option("--bias-window", a->biasWindow,
                 "Remove the mean error of the first T seconds (record and every model run alike; "
                 "default with --measured: min(60 s, 10 % of the record), else 0)");
-  c->add_option("--duration", a->duration, "Use only the first part of the record (e.g. 10 min)");
+  c->add_option("--skip", a->skip, "Drop the start of the record (e.g. a warm-up: \"10 min\")");
+  c->add_option("--duration", a->duration,
+                "Use only this much of the record (after --skip; e.g. 10 min)");
   c->add_option("--vertical", a->vertical,
                 "Vertical channel for --measured: held (default), free or damped");
   c->add_option("--output-rate", a->outputRate, "Statistics epochs per second for --measured (1)");

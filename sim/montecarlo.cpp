@@ -3,6 +3,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -304,9 +305,8 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
 
   // ---- workers ------------------------------------------------------------------------------------
   unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, pending.size())));
+  threads = unsigned(std::max<std::uint64_t>(1, std::min<std::uint64_t>(threads, pendingRuns)));
   result.threads = threads;
-  std::atomic<std::size_t> next{0};
   std::atomic<std::uint64_t> runsDone{0};
   std::atomic<bool> stop{false};
   std::atomic<unsigned> running{threads};
@@ -315,29 +315,53 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   std::exception_ptr failure;
   const std::size_t perRun = ref.epochs() * kErrorFields;
 
+  // Runs are handed out one at a time, so the threads stay busy to the last run whatever the
+  // chunk size; a chunk's buffer lives while any of its runs is in flight, and the thread that
+  // finishes its last run writes the chunk file. Unfinished chunks (interruption) are dropped.
+  std::vector<std::uint64_t> chunkStart(pending.size() + 1, 0);  // first pending-run index
+  for (std::size_t i = 0; i < pending.size(); ++i)
+    chunkStart[i + 1] = chunkStart[i] + pending[i].count;
+  struct OpenChunk {
+    std::vector<float> buf;
+    std::atomic<std::uint64_t> remaining{0};
+  };
+  std::vector<std::unique_ptr<OpenChunk>> open(pending.size());
+  std::atomic<std::uint64_t> nextRun{0};
+
   auto worker = [&]() {
     try {
-      std::vector<float> buf;
       for (;;) {
         if (stop.load() || (opt.interrupt && opt.interrupt->load())) break;
-        const std::size_t i = next.fetch_add(1);
-        if (i >= pending.size()) break;
-        const Work& wk = pending[i];
-        buf.assign(std::size_t(wk.count) * perRun, 0.0f);
-        bool ok = true;
-        for (std::uint64_t r = 0; r < wk.count && ok; ++r) {
-          const McModel& m = models[wk.model];
-          std::unique_ptr<errormodels::ImuCorruptor> c;
-          if (!m.model.empty()) c = m.model.instantiate(ref.imuRate, {opt.seed, wk.first + r});
-          ok = navigateRealisation(ref, c.get(), opt.navigate, buf.data() + r * perRun, opt.interrupt);
-          if (!ok) break;
-          const std::uint64_t done = runsDone.fetch_add(1) + 1;
-          if (opt.stopAfterRuns && done >= opt.stopAfterRuns) stop.store(true);
-          if (opt.interrupt && opt.interrupt->load()) ok = r + 1 == wk.count;
+        const std::uint64_t g = nextRun.fetch_add(1);
+        if (g >= pendingRuns) break;
+        const auto ci = std::size_t(
+            std::upper_bound(chunkStart.begin(), chunkStart.end(), g) - chunkStart.begin() - 1);
+        const Work& wk = pending[ci];
+        const std::uint64_t r = g - chunkStart[ci];
+        OpenChunk* oc = nullptr;
+        {
+          std::lock_guard<std::mutex> lock(mu);
+          if (!open[ci]) {
+            open[ci] = std::make_unique<OpenChunk>();
+            open[ci]->buf.assign(std::size_t(wk.count) * perRun, 0.0f);
+            open[ci]->remaining = wk.count;
+          }
+          oc = open[ci].get();
         }
-        if (!ok) break;  // an unfinished chunk is dropped; --resume recomputes it
-        writeChunk(chunkPath(opt.outDir, dirs[wk.model], wk.first), fps[wk.model], wk,
-                   ref.epochs(), buf.data());
+        const McModel& m = models[wk.model];
+        std::unique_ptr<errormodels::ImuCorruptor> c;
+        if (!m.model.empty()) c = m.model.instantiate(ref.imuRate, {opt.seed, wk.first + r});
+        if (!navigateRealisation(ref, c.get(), opt.navigate, oc->buf.data() + r * perRun,
+                                 opt.interrupt))
+          break;  // interrupted mid-run: the chunk stays unfinished
+        const std::uint64_t done = runsDone.fetch_add(1) + 1;
+        if (opt.stopAfterRuns && done >= opt.stopAfterRuns) stop.store(true);
+        if (oc->remaining.fetch_sub(1) == 1) {  // the chunk's last run: every other is stored
+          writeChunk(chunkPath(opt.outDir, dirs[wk.model], wk.first), fps[wk.model], wk,
+                     ref.epochs(), oc->buf.data());
+          std::lock_guard<std::mutex> lock(mu);
+          open[ci].reset();
+        }
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mu);
