@@ -13,6 +13,7 @@
 // finished chunk is written to DIR/runs/ as a binary file via a temporary + rename, so a chunk file
 // is either complete or absent. An interrupted batch (Ctrl-C, kill, power cut between chunks)
 // resumes from the chunks present; a chunk is recomputed when its file is missing or damaged.
+// Threads take single runs (not chunks), so they stay busy to the end of a batch.
 #pragma once
 
 #include <atomic>
