@@ -15,6 +15,7 @@ void addAnalyzeCommand(CLI::App& app, Action& action);
 void addDiagnoseCommand(CLI::App& app, Action& action);
 void addFitCommand(CLI::App& app, Action& action);
 void addRunCommand(CLI::App& app, Action& action);
+void addMcCommand(CLI::App& app, Action& action);
 void addSynthCommand(CLI::App& app, Action& action);
 
 }  // namespace sinsim::cli

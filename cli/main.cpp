@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   sinsim::cli::addDiagnoseCommand(app, action);
   sinsim::cli::addFitCommand(app, action);
   sinsim::cli::addRunCommand(app, action);
+  sinsim::cli::addMcCommand(app, action);
   sinsim::cli::addSynthCommand(app, action);
   try {
     app.parse(argc, argv);

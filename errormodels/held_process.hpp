@@ -18,7 +18,7 @@ class HeldProcessState : public AxisErrorState {
   double integral(const Interval& iv) final {
     if (!started_) {
       start_ = iv.t0;
-      y_ = next();
+      y_ = take();
       started_ = true;
     }
     // Times relative to the first interval's start; sample k holds over [k h, (k+1) h).
@@ -32,26 +32,42 @@ class HeldProcessState : public AxisErrorState {
       if (edge >= b - eps) {
         acc += y_ * (b - t);
         ++k_;
-        y_ = next();
+        y_ = take();
         return acc;
       }
       acc += y_ * (edge - t);
       t = edge;
       ++k_;
-      y_ = next();
+      y_ = take();
     }
   }
 
  protected:
   /// The next process sample [signal units, SI].
   virtual double next() = 0;
+  /// The next n samples, in order (the same values n calls of next() give). Processes override it
+  /// with a tight loop: one virtual call per block instead of per sample.
+  virtual void generate(double* y, int n) {
+    for (int i = 0; i < n; ++i) y[i] = next();
+  }
 
  private:
+  static constexpr int kBuffer = 64;
+  double take() {
+    if (pos_ == kBuffer) {
+      generate(buf_, kBuffer);
+      pos_ = 0;
+    }
+    return buf_[pos_++];
+  }
+
   double h_;
   double start_ = 0.0;
   std::uint64_t k_ = 0;
   double y_ = 0.0;
   bool started_ = false;
+  int pos_ = kBuffer;
+  double buf_[kBuffer];
 };
 
 }  // namespace sinsim::errormodels

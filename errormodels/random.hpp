@@ -1,10 +1,15 @@
-// Counter-based Gaussian streams (Random123 Philox4x64-10 + Box-Muller; Salmon et al., "Parallel
-// random numbers: as easy as 1, 2, 3", SC'11). There is no global generator and nothing is seeded
-// from time: a stream is a pure function of (seed, run, stream id) and the position in it, so run k
-// of a Monte Carlo batch can be regenerated alone, and results do not depend on thread count.
+// Counter-based Gaussian streams (Random123 Philox4x64-10; Salmon et al., "Parallel random
+// numbers: as easy as 1, 2, 3", SC'11) turned into normals by the ziggurat method (Marsaglia &
+// Tsang, "The ziggurat method for generating random variables", J. Stat. Softw. 5(8), 2000).
+// There is no global generator and nothing is seeded from time: a stream is a pure function of
+// (seed, run, stream id) and the position in it, so run k of a Monte Carlo batch can be
+// regenerated alone, and results do not depend on thread count.
 //
 // Key   = {seed, run}                        (128 bits)
-// Count = {block, stream id, 0, 0}           (block = index of the 4-normal block in the stream)
+// Count = {block, stream id, j, 0}           (block = index of the kBlock-normal block in the
+//                                             stream, j = 0, 1, ... the Philox calls of that block)
+// Each block of normals has its own counter space, so block b is a pure function of (key, stream,
+// b) however many 64-bit words its rejections consumed: random access (at()) stays cheap.
 // stream id packs (sensor, axis, effect index, sub-stream) — see streamId().
 #pragma once
 
@@ -45,9 +50,8 @@ class NormalStream {
  private:
   using Philox = r123::Philox4x64;
 
-  /// Fills buf_ with the next kBlock normals. Compiled in random.cpp with the vector math library
-  /// (log, sin, cos four at a time): the Box-Muller transform dominates the cost of the error
-  /// models. The result depends only on (key, stream, block), never on the caller.
+  /// Fills buf_ with the next kBlock normals (random.cpp). The result depends only on (key,
+  /// stream, block), never on the caller.
   void refill();
 
   Philox::key_type key_ = {{0, 0}};

@@ -43,6 +43,16 @@ class DiscreteGm final : public HeldProcessState {
     }
     return x_ = phi_ * x_ + q_ * s_.next();
   }
+  void generate(double* out, int n) override {
+    int i = 0;
+    if (first_ && n > 0) {
+      first_ = false;
+      out[i++] = x_;
+    }
+    double x = x_;
+    for (; i < n; ++i) out[i] = x = phi_ * x + q_ * s_.next();
+    x_ = x;
+  }
 
  private:
   NormalStream s_;

@@ -1,0 +1,425 @@
+// sinsim mc SCENARIO --runs N [--model FILE ...] [--threads T] [--seed S] [--resume] -o DIR
+//           [--times LIST] [--budget] [--measured DATA.csv ...]
+// Monte Carlo batches (sim/montecarlo.hpp). With the MPI build (-DSINSIM_MPI=ON) the same command
+// under mpirun splits the runs across ranks.
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#ifdef SINSIM_HAVE_MPI
+#include <mpi.h>
+#endif
+
+#include "cli/commands.hpp"
+#include "common/error.hpp"
+#include "common/units.hpp"
+#include "errormodels/stats/record.hpp"
+#include "sim/mc_output.hpp"
+#include "sim/measured.hpp"
+#include "sim/montecarlo.hpp"
+#include "sim/scenario.hpp"
+
+namespace sinsim::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> gInterrupted{false};
+
+extern "C" void onSigint(int) {
+  gInterrupted.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills at once (chunks on disk stay valid)
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> r;
+  std::string cur;
+  for (char c : s) {
+    if (c == ',') {
+      r.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  r.push_back(cur);
+  return r;
+}
+
+// "60", "60 s", "10 min": a plain number is seconds.
+double parseTime(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end && end != text.c_str() && std::string(end).find_first_not_of(" \t") == std::string::npos)
+    return v;
+  try {
+    return parseQuantityAs(text, Dimension::time());
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
+}
+
+double parseAngle(const std::string& text, const std::string& what) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end && end != text.c_str() && std::string(end).find_first_not_of(" \t") == std::string::npos)
+    return v * M_PI / 180.0;
+  try {
+    return parseQuantityAs(text, Dimension::angle());
+  } catch (const InputError& e) {
+    throw InputError(what + ": " + e.what());
+  }
+}
+
+std::string fmt(double v, const char* f = "%.6g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+struct Args {
+  std::string scenario;
+  std::uint64_t runs = 100;
+  std::vector<std::string> models;
+  unsigned threads = 0;
+  std::optional<std::uint64_t> seed;
+  bool resume = false;
+  std::string outDir;
+  std::string times;
+  bool budget = false;
+  std::string measured;
+  std::string gyroUnit, accelUnit;
+  double rate = 0;
+  std::string latitude = "51.08 deg", longitude = "-114.13 deg", height = "1100 m";
+  std::string attitude, heading = "0 deg";
+  std::string biasWindow;
+  std::string duration;
+  std::string skip;
+  std::string vertical = "held";
+  double outputRate = 1.0;
+  bool noProgress = false;
+  std::uint64_t stopAfter = 0;
+};
+
+#ifdef SINSIM_HAVE_MPI
+// MPI is started only when the process was launched by an MPI launcher (mpirun/srun set these
+// variables); a plain `sinsim mc` of the MPI build behaves exactly like the ordinary build.
+bool launchedByMpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+struct MpiSession {
+  int rank = 0, size = 1;
+  MpiSession() {
+    int inited = 0;
+    MPI_Initialized(&inited);
+    if (!inited) {
+      int provided = 0;
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+    }
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+  }
+  ~MpiSession() { MPI_Finalize(); }
+};
+#endif
+
+int runMc(const Args& a) {
+  int rank = 0, size = 1;
+  sim::McPartition partition;
+#ifdef SINSIM_HAVE_MPI
+  if (launchedByMpi()) {
+    static MpiSession mpi;  // finalised at exit
+    rank = mpi.rank;
+    size = mpi.size;
+  }
+  if (size > 1) {
+    partition.rank = rank;
+    partition.size = size;
+    partition.barrier = [] { MPI_Barrier(MPI_COMM_WORLD); };
+    partition.anyOf = [](bool v) {
+      int in = v ? 1 : 0, out = 0;
+      MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+      return out != 0;
+    };
+    partition.sum = [](std::uint64_t v) {
+      unsigned long long in = v, out = 0;
+      MPI_Allreduce(&in, &out, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+      return std::uint64_t(out);
+    };
+  }
+#endif
+  try {
+    // ---- the reference: a scenario, or a static one matching a measured record ------------------
+    sim::Scenario sc;
+    std::string scenarioIdentity;
+    std::optional<errormodels::Record> record;
+    double biasWindow = a.biasWindow.empty() ? 0.0 : parseTime(a.biasWindow, "--bias-window");
+    if (!a.measured.empty()) {
+      if (!a.scenario.empty())
+        throw InputError("give either a scenario or --measured (the measured record defines a "
+                         "static scenario), not both");
+      if (a.models.empty()) throw InputError("--measured needs at least one --model to compare with");
+      errormodels::RecordOptions ro;
+      if (!a.gyroUnit.empty()) ro.gyro_unit = a.gyroUnit;
+      if (!a.accelUnit.empty()) ro.accel_unit = a.accelUnit;
+      if (a.rate > 0) ro.rate_hz = a.rate;
+      record = errormodels::loadRecord(a.measured, ro);
+      for (int ax = 0; ax < 3; ++ax)
+        if (!record->hasGyro(ax) || !record->hasAccel(ax))
+          throw InputError(a.measured + ": the record needs the columns gx, gy, gz, ax, ay, az");
+      const double rate = record->rate_hz;
+      if (!a.skip.empty()) {  // drop a warm-up: the navigation starts after it
+        const double s = parseTime(a.skip, "--skip");
+        const auto k = std::size_t(std::llround(std::max(0.0, s) * rate));
+        if (k >= record->size())
+          throw InputError("--skip " + a.skip + " leaves nothing of " + a.measured);
+        auto drop = [k](std::vector<double>& v) {
+          if (!v.empty()) v.erase(v.begin(), v.begin() + long(k));
+        };
+        for (int ax = 0; ax < 3; ++ax) {
+          drop(record->gyro[ax]);
+          drop(record->accel[ax]);
+        }
+        drop(record->t);
+        drop(record->temperature);
+        record->rows -= k;
+      }
+      std::size_t n = record->size();
+      if (!a.duration.empty()) {
+        const double d = parseTime(a.duration, "--duration");
+        if (!(d > 0)) throw InputError("--duration must be positive");
+        n = std::min(n, std::size_t(std::llround(d * rate)));
+      }
+      const auto perOut = std::llround(rate / a.outputRate);
+      n -= n % std::size_t(perOut);  // whole output epochs
+      if (n == 0) throw InputError(a.measured + ": the record is shorter than one output epoch");
+      if (a.biasWindow.empty()) biasWindow = std::min(60.0, 0.1 * double(n) / rate);
+      // Attitude: stated, or levelled from the mean specific force over the bias window.
+      nav::Vec3 rpy;
+      if (!a.attitude.empty()) {
+        const auto parts = splitList(a.attitude);
+        if (parts.size() != 3) throw InputError("--attitude: expected roll,pitch,yaw");
+        rpy = nav::Vec3(parseAngle(parts[0], "--attitude"), parseAngle(parts[1], "--attitude"),
+                        parseAngle(parts[2], "--attitude"));
+      } else {
+        rpy = sim::levelAttitude(*record, std::size_t(std::llround(std::max(biasWindow, 1.0) * rate)),
+                                 parseAngle(a.heading, "--heading"));
+      }
+      const std::string yaml = sim::staticScenarioYaml(
+          "measured-" + fs::path(a.measured).stem().stem().string(),
+          parseAngle(a.latitude, "--latitude"), parseAngle(a.longitude, "--longitude"),
+          parseQuantityAs(a.height, Dimension::length()), rpy, rate, a.outputRate, a.vertical,
+          double(n) / rate);
+      sc = sim::parseScenario(yaml, "(static scenario of " + a.measured + ")");
+      scenarioIdentity = yaml;
+    } else {
+      if (a.scenario.empty()) throw InputError("name a scenario file (or give --measured DATA.csv)");
+      sc = sim::loadScenario(a.scenario);
+      scenarioIdentity = slurp(a.scenario);
+    }
+
+    // ---- models ------------------------------------------------------------------------------------
+    std::vector<sim::McModel> models;
+    auto addModel = [&](sim::McModel m) {
+      std::string base = m.label;
+      for (int k = 2;; ++k) {
+        bool clash = false;
+        for (const auto& o : models) clash = clash || o.label == m.label;
+        if (!clash) break;
+        m.label = base + "-" + std::to_string(k);
+      }
+      models.push_back(std::move(m));
+    };
+    if (a.models.empty()) {
+      addModel({"scenario-errors", sc.errors, "inline/scenario:" + scenarioIdentity});
+    }
+    for (const auto& f : a.models) {
+      if (f == "none") {
+        addModel({"none", errormodels::ImuErrorModel::none(), "none"});
+        continue;
+      }
+      sim::McModel m{fs::path(f).stem().string(), errormodels::ImuErrorModel::load(f), slurp(f)};
+      if (!m.model.empty() && m.model.needsTemperature() && !sc.temperature.present)
+        throw InputError("the error model " + f + " has temperature-dependent effects but the "
+                         "scenario has no temperature profile");
+      addModel(std::move(m));
+    }
+    for (const auto& m : models)  // refuse a model that cannot run at the IMU rate, before any file
+      if (!m.model.empty()) m.model.instantiate(sc.imuRate, {0, 0});
+
+    sim::McOptions opt;
+    opt.runs = a.runs;
+    opt.seed = a.seed ? *a.seed : sc.seed.value_or(0);
+    opt.threads = a.threads;
+    if (opt.threads == 0 && size > 1) {
+      // Ranks sharing a machine share its cores.
+      const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+      const unsigned ranksHere = local ? unsigned(std::max(1, std::atoi(local))) : 1u;
+      opt.threads = std::max(1u, std::thread::hardware_concurrency() / ranksHere);
+    }
+    if (!a.times.empty())
+      for (const auto& t : splitList(a.times)) opt.times.push_back(parseTime(t, "--times"));
+    opt.budget = a.budget;
+    opt.navigate.biasWindow = biasWindow;
+    opt.resume = a.resume;
+    opt.outDir = a.outDir.empty() ? (fs::path("out") / ("mc-" + sc.name)).string() : a.outDir;
+    opt.scenarioIdentity = scenarioIdentity;
+    opt.interrupt = &gInterrupted;
+    opt.stopAfterRuns = a.stopAfter;
+    opt.partition = partition;
+
+    const sim::Reference ref = sim::buildReference(sc);
+
+    sim::McMeasured measured;
+    if (record) {
+      measured.source = a.measured;
+      measured.errors.resize(ref.epochs() * sim::kErrorFields);
+      sim::RecordReplay replay(*record, ref.imuRate);
+      sim::navigateRealisation(ref, &replay, opt.navigate, measured.errors.data());
+      opt.measured = &measured;
+    }
+
+    const bool tty = rank == 0 && !a.noProgress && ::isatty(2);
+    if (tty) {
+      opt.onProgress = [](const sim::McProgress& p) {
+        const double rate = p.elapsed > 0 ? double(p.runsDone) / p.elapsed : 0.0;
+        const double left = rate > 0 ? double(p.runsTotal - p.runsDone) / rate : 0.0;
+        const int width = 30;
+        const int fill = p.runsTotal ? int(width * double(p.runsDone) / double(p.runsTotal)) : width;
+        std::fprintf(stderr, "\r[%-*s] %llu/%llu runs  %.1f runs/s  %.0f s left   ", width,
+                     std::string(std::size_t(fill), '=').c_str(),
+                     static_cast<unsigned long long>(p.runsDone),
+                     static_cast<unsigned long long>(p.runsTotal), rate, left);
+        std::fflush(stderr);
+      };
+    }
+    std::signal(SIGINT, onSigint);
+    const sim::McResult r = sim::runMonteCarlo(ref, models, opt);
+    std::signal(SIGINT, SIG_DFL);
+    if (tty) std::fputs("\n", stderr);
+
+    if (rank != 0) return r.complete ? 0 : 130;
+    const double steps = double(r.runsComputedAll) * double(ref.samples.size());
+    if (!r.complete) {
+      std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
+                << ") after " << r.runsComputed << " runs this session; "
+                << r.runsResumed + r.runsComputed << " of " << r.runsTotal
+                << " runs may be saved in " << opt.outDir
+                << "/runs. Continue with the same command and --resume.\n";
+      return 130;
+    }
+    std::cout << "sinsim mc: " << sc.name << ", " << models.size() << " model(s) x " << opt.runs
+              << " runs" << (opt.budget ? " (+ budget variants)" : "") << " -> " << opt.outDir
+              << " (";
+    for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
+    std::cout << ")\n  " << r.runsComputedAll << " runs computed";
+    if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
+    std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
+              << " s CPU, " << r.threads << " thread(s)"
+              << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
+              << "; " << fmt(steps / std::max(r.wallTime, 1e-9) / 1e6, "%.2f")
+              << " M IMU steps/s\n";
+    // One line per model at the last report time.
+    sim::McBatch batch(ref);
+    batch.runs = opt.runs;
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      batch.entries.push_back({models[m].label, "", -1, ""});
+    }
+    batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models.size()));
+    const std::size_t eLast = ref.epochs() - 1;
+    for (std::size_t m = 0; m < models.size(); ++m) {
+      auto v = sim::metricAcrossRuns(batch, m, eLast, sim::kHorizontal);
+      std::sort(v.begin(), v.end());
+      const double n = double(v.size());
+      auto pct = [&](double p) {
+        const double h = (n - 1) * p / 100;
+        const std::size_t i = std::size_t(h);
+        return i + 1 < v.size() ? v[i] + (h - double(i)) * (v[i + 1] - v[i]) : v.back();
+      };
+      std::cout << "  " << models[m].label << ": horizontal error at " << ref.epochTime(eLast)
+                << " s: CEP " << fmt(pct(50), "%.4g") << " m, R95 " << fmt(pct(95), "%.4g")
+                << " m\n";
+    }
+    return 0;
+  } catch (...) {
+#ifdef SINSIM_HAVE_MPI
+    if (size > 1) {
+      try {
+        throw;
+      } catch (const std::exception& e) {
+        std::cerr << "sinsim: error (rank " << rank << "): " << e.what() << "\n";
+      }
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
+#endif
+    throw;
+  }
+}
+
+}  // namespace
+
+void addMcCommand(CLI::App& app, Action& action) {
+  auto a = std::make_shared<Args>();
+  CLI::App* c = app.add_subcommand(
+      "mc", "Monte Carlo: N realisations per error model, drift statistics, paired comparison");
+  c->add_option("scenario", a->scenario, "Scenario YAML file");
+  c->add_option("--runs", a->runs, "Realisations per model (default 100)");
+  c->add_option("--model", a->models,
+                "Error model file (repeat for a comparison; none: perfect IMU). Default: the "
+                "scenario's errors:");
+  c->add_option("--threads", a->threads, "Worker threads (default: all cores)");
+  c->add_option("--seed", a->seed, "Seed; run k uses StreamKey{seed, k} (default: the scenario's)");
+  c->add_flag("--resume", a->resume, "Continue an interrupted batch in DIR from its checkpoints");
+  c->add_option("-o,--output", a->outDir, "Output folder (default out/mc-<scenario name>)");
+  c->add_option("--times", a->times,
+                "Report times, comma-separated (\"60,300\" s or \"5 min,10 min\"; default: the end)");
+  c->add_flag("--budget", a->budget, "Error budget: switch each effect off in turn");
+  c->add_option("--measured", a->measured,
+                "A static record (CSV, .gz) to navigate and place in each model's envelope");
+  c->add_option("--gyro-unit", a->gyroUnit, "Unit of the record's gyro columns (e.g. deg/s)");
+  c->add_option("--accel-unit", a->accelUnit, "Unit of the record's accelerometer columns (e.g. g)");
+  c->add_option("--rate", a->rate, "Sample rate of the record [Hz] when it has no time column");
+  c->add_option("--latitude", a->latitude, "Where the record was taken (default 51.08 deg: Calgary)");
+  c->add_option("--longitude", a->longitude, "(default -114.13 deg)");
+  c->add_option("--height", a->height, "(default 1100 m)");
+  c->add_option("--attitude", a->attitude,
+                "roll,pitch,yaw of the record's IMU (plain numbers: deg); default: levelled "
+                "from the mean specific force, yaw = --heading");
+  c->add_option("--heading", a->heading, "Yaw when levelling from the data (default 0 deg)");
+  c->add_option("--bias-window", a->biasWindow,
+                "Remove the mean error of the first T seconds (record and every model run alike; "
+                "default with --measured: min(60 s, 10 % of the record), else 0)");
+  c->add_option("--skip", a->skip, "Drop the start of the record (e.g. a warm-up: \"10 min\")");
+  c->add_option("--duration", a->duration,
+                "Use only this much of the record (after --skip; e.g. 10 min)");
+  c->add_option("--vertical", a->vertical,
+                "Vertical channel for --measured: held (default), free or damped");
+  c->add_option("--output-rate", a->outputRate, "Statistics epochs per second for --measured (1)");
+  c->add_flag("--no-progress", a->noProgress, "No progress bar even on a terminal");
+  c->add_option("--stop-after", a->stopAfter, "Stop after N runs as if interrupted (testing)")
+      ->group("");
+  c->callback([&action, a]() { action = [a]() { return runMc(*a); }; });
+}
+
+}  // namespace sinsim::cli

@@ -1,0 +1,69 @@
+// The part of a simulation that is the same for every realisation of the sensor errors: the ideal
+// IMU samples and the truth. A Monte Carlo batch computes it once and shares it read-only across
+// runs and threads (the trajectory generator makes ~0.8 M samples/s, far too slow to redo per
+// run), then navigates each realisation along it.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <vector>
+
+#include "errormodels/imu_model.hpp"
+#include "nav/earth.hpp"
+#include "nav/strapdown.hpp"
+#include "nav/types.hpp"
+#include "sim/scenario.hpp"
+
+namespace sinsim::sim {
+
+/// Fields of one output epoch of a realisation, nav − truth (see navError in run.hpp).
+enum ErrorField : int {
+  kNorth = 0, kEast, kDown,  // [m]
+  kVn, kVe, kVd,             // [m/s]
+  kRoll, kPitch, kYaw,       // wrapped Euler differences [rad]
+  kErrorFields
+};
+
+struct Reference {
+  std::string name;                  // scenario name
+  double imuRate = 0.0;              // [Hz]
+  double outputRate = 0.0;           // [Hz]
+  long long decimation = 1;          // IMU samples per output epoch
+  nav::StrapdownOptions strapdown;
+  TemperatureProfile temperature;
+  nav::NavState initial;             // truth at t = 0 (the navigation starts from it)
+  std::vector<nav::ImuSample> samples;  // ideal increments, interval k = (t_k − dt, t_k]
+  std::vector<double> hRef;             // true height at the end of interval k [m]
+  std::vector<nav::NavState> truth;     // truth at output epoch e (sample e·decimation; e = 0: t = 0)
+
+  std::size_t epochs() const { return truth.size(); }
+  double epochTime(std::size_t e) const { return truth[e].t; }  // [s]
+  /// Bytes held (the samples dominate: 72 per IMU sample).
+  std::size_t bytes() const;
+};
+
+/// The WGS-84 Earth shared by every run (GeographicLib objects are immutable once built).
+const nav::Earth& sharedEarth();
+
+/// Generates the ideal IMU and truth of a scenario (sim/ideal_imu.hpp) once.
+Reference buildReference(const Scenario& scenario);
+
+/// How a realisation's increments are prepared before the strapdown.
+struct NavigateOptions {
+  /// > 0: remove the initial bias as a user does with a static record: the mean of
+  /// (measured − ideal) increments over the first biasWindow seconds [s], per axis, divided by its
+  /// duration, is subtracted from every sample (the ideal signal holds the known Earth rate and
+  /// gravity). 0: nothing removed.
+  double biasWindow = 0.0;
+};
+
+/// Navigates one realisation along the reference: `corruptor` (nullptr: the perfect IMU) turns
+/// each ideal sample into a measured one, the strapdown integrates it from the true initial
+/// state, and the error at every output epoch is written to out[e · kErrorFields + field]
+/// (epochs() × kErrorFields floats). Returns false, leaving out partly written, when `cancel`
+/// becomes true (checked every 65536 samples).
+bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corruptor,
+                         const NavigateOptions& options, float* out,
+                         const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace sinsim::sim

@@ -1,0 +1,196 @@
+// `sinsim mc` output files: bit-identical for any thread count, after a run-limited stop, after
+// SIGKILL and after Ctrl-C (SIGINT) followed by --resume; refusals that protect checkpoints.
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include "helpers.hpp"
+
+using namespace mctest;
+
+namespace {
+
+// 30 s with motion (speed-up, turn, climb), 100 Hz IMU: every part of the mechanization works.
+const char* kScenario = R"(name: mc-short
+start: {latitude: 48 deg, longitude: 11 deg, height: 500 m, heading: 90 deg}
+imu_rate: 100 Hz
+output_rate: 1 Hz
+vertical: {channel: damped, time_constant: 100 s}
+segments:
+  - {type: static, duration: 5 s}
+  - {type: accelerate, speed: 15 m/s, duration: 8 s}
+  - {type: turn, heading_change: 90 deg, duration: 8 s}
+  - {type: climb, height_change: 5 m, duration: 9 s}
+)";
+
+fs::path writeScenario(const fs::path& dir) {
+  const fs::path p = dir / "short.yaml";
+  std::ofstream(p) << kScenario;
+  return p;
+}
+
+std::string models() {
+  return " --model '" + sourceDir() + "/scenarios/adis16355-ar5.yaml' --model '" + sourceDir() +
+         "/scenarios/adis16355-gm.yaml'";
+}
+
+// Same set of files with the same bytes.
+void requireSameFolders(const fs::path& a, const fs::path& b) {
+  const auto fa = listFiles(a), fb = listFiles(b);
+  REQUIRE(fa == fb);
+  REQUIRE(!fa.empty());
+  for (const auto& f : fa) {
+    INFO(f);
+    CHECK(slurp(a / f) == slurp(b / f));
+  }
+}
+
+bool anyChunk(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir / "runs", ec)) return false;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "runs", ec))
+    if (e.path().extension() == ".bin") return true;
+  return false;
+}
+
+// Starts sinsim in the background (stdout/stderr to files in tmp); returns its pid.
+pid_t spawn(const std::string& args, const fs::path& tmp) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string cmd = "exec '" + sinsimPath() + "' " + args + " > '" +
+                            (tmp / "bg.out").string() + "' 2> '" + (tmp / "bg.err").string() + "'";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Waits until the first checkpoint chunk appears (or the child ends), then sends sig.
+int interruptAfterFirstChunk(pid_t pid, const fs::path& out, int sig) {
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  while (!anyChunk(out)) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return status;
+    if (std::chrono::steady_clock::now() - start > std::chrono::seconds(60)) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, sig);
+  ::waitpid(pid, &status, 0);
+  return status;
+}
+
+}  // namespace
+
+TEST_CASE("sinsim mc: threads 1 and 2 write identical files; a stopped batch resumes to the same files") {
+  const fs::path tmp = tempDir("threads");
+  const fs::path sc = writeScenario(tmp);
+  const std::string common = "mc '" + sc.string() + "' --runs 20 --seed 5 --budget --times 10,30" + models();
+
+  const Result r1 = sinsim(common + " --threads 1 -o '" + (tmp / "t1").string() + "'", tmp);
+  INFO(r1.err);
+  REQUIRE(r1.exitCode == 0);
+  CHECK(r1.out.find("adis16355-ar5: horizontal error at 30 s") != std::string::npos);
+  const Result r2 = sinsim(common + " --threads 2 -o '" + (tmp / "t2").string() + "'", tmp);
+  REQUIRE(r2.exitCode == 0);
+  for (const char* f : {"stats.csv", "summary.json", "report.html"})
+    REQUIRE(fs::file_size(tmp / "t1" / f) > 0);
+  requireSameFolders(tmp / "t1", tmp / "t2");
+
+  // A batch stopped after 30 of the 280 runs (2 models + 12 budget variants, 20 runs each) leaves
+  // checkpoints and no outputs; --resume (with another thread count) finishes it identically.
+  const fs::path part = tmp / "part";
+  const Result s = sinsim(common + " --threads 2 --stop-after 30 -o '" + part.string() + "'", tmp);
+  CHECK(s.exitCode == 130);
+  CHECK(s.err.find("--resume") != std::string::npos);
+  CHECK_FALSE(fs::exists(part / "stats.csv"));
+  CHECK(anyChunk(part));
+  const Result res = sinsim(common + " --threads 1 --resume -o '" + part.string() + "'", tmp);
+  INFO(res.err);
+  REQUIRE(res.exitCode == 0);
+  CHECK(res.out.find("resumed from checkpoints") != std::string::npos);
+  requireSameFolders(tmp / "t1", part);
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: killed (SIGKILL) or interrupted (SIGINT) mid-way, --resume gives identical files") {
+  const fs::path tmp = tempDir("kill");
+  const fs::path sc = writeScenario(tmp);
+  // One thread and 160 runs of the AR(5) model (~1 s): the first chunk of 8 runs appears long
+  // before the end.
+  const std::string common = "mc '" + sc.string() + "' --runs 160 --seed 9 --threads 1 --model '" +
+                             sourceDir() + "/scenarios/adis16355-ar5.yaml'";
+  const Result full = sinsim(common + " -o '" + (tmp / "full").string() + "'", tmp);
+  REQUIRE(full.exitCode == 0);
+
+  for (int sig : {SIGKILL, SIGINT}) {
+    const fs::path out = tmp / (sig == SIGKILL ? "killed" : "interrupted");
+    const pid_t pid = spawn(common + " -o '" + out.string() + "'", tmp);
+    const int status = interruptAfterFirstChunk(pid, out, sig);
+    INFO("signal " << sig << ", stderr: " << slurp(tmp / "bg.err"));
+    if (sig == SIGKILL) {
+      REQUIRE(WIFSIGNALED(status));
+    } else {
+      // Ctrl-C: the running chunk is dropped, the process says how to continue and exits 130.
+      REQUIRE(WIFEXITED(status));
+      CHECK(WEXITSTATUS(status) == 130);
+      CHECK(slurp(tmp / "bg.err").find("--resume") != std::string::npos);
+    }
+    REQUIRE_FALSE(fs::exists(out / "stats.csv"));  // really stopped mid-way
+    REQUIRE(anyChunk(out));
+    const Result res = sinsim(common + " --resume -o '" + out.string() + "'", tmp);
+    INFO(res.err);
+    REQUIRE(res.exitCode == 0);
+    requireSameFolders(tmp / "full", out);
+  }
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: checkpoints are protected: no silent overwrite, no resume of another batch") {
+  const fs::path tmp = tempDir("refuse");
+  const fs::path sc = writeScenario(tmp);
+  const std::string out = " -o '" + (tmp / "o").string() + "'";
+  const std::string base = "mc '" + sc.string() + "' --runs 8 --model '" + sourceDir() +
+                           "/scenarios/adis16355-gm.yaml'";
+  REQUIRE(sinsim(base + " --seed 1" + out, tmp).exitCode == 0);
+  const Result again = sinsim(base + " --seed 1" + out, tmp);
+  CHECK(again.exitCode == 1);
+  CHECK(again.err.find("pass --resume") != std::string::npos);
+  const Result other = sinsim(base + " --seed 2 --resume" + out, tmp);
+  CHECK(other.exitCode == 1);
+  CHECK(other.err.find("other inputs") != std::string::npos);
+  // Bad input: nothing is created.
+  const Result bad = sinsim("mc '" + sc.string() + "' --runs 0 -o '" + (tmp / "x").string() + "'", tmp);
+  CHECK(bad.exitCode == 1);
+  CHECK_FALSE(fs::exists(tmp / "x"));
+  const Result badTime = sinsim(base + " --times 999 -o '" + (tmp / "y").string() + "'", tmp);
+  CHECK(badTime.exitCode == 1);
+  CHECK(badTime.err.find("outside the run") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "y"));
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: a progress bar on a terminal, none when stderr is a file") {
+  const fs::path tmp = tempDir("progress");
+  const fs::path sc = writeScenario(tmp);
+  const std::string args = "mc '" + sc.string() + "' --runs 16 --threads 1 --model '" + sourceDir() +
+                           "/scenarios/adis16355-gm.yaml'";
+  const Result plain = sinsim(args + " -o '" + (tmp / "a").string() + "'", tmp);
+  REQUIRE(plain.exitCode == 0);
+  CHECK(plain.err.find("runs/s") == std::string::npos);
+  // util-linux `script` gives the command a pseudo-terminal (part of every Debian base system).
+  REQUIRE(fs::exists("/usr/bin/script"));
+  const std::string cmd = "/usr/bin/script -qec \"'" + sinsimPath() + "' " + args + " -o '" +
+                          (tmp / "b").string() + "'\" /dev/null > '" + (tmp / "pty.out").string() + "'";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string out = slurp(tmp / "pty.out");
+  CHECK(out.find("16/16 runs") != std::string::npos);  // runs done
+  CHECK(out.find("runs/s") != std::string::npos);      // rate
+  CHECK(out.find("s left") != std::string::npos);      // time left
+  fs::remove_all(tmp);
+}
