@@ -311,7 +311,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
     return g;
   };
 
-  // quantization: the value lattice (exact evidence) or an Allan slope -1 at short tau.
+  // quantization: only on a value lattice (exact evidence); its Allan slope then tells rounding
+  // of each sample (white) from an increment output with the remainder carried (slope -1).
   const double lattice = latticeStep(y);
   if (!has("quantization")) {
     const double q = lattice;
@@ -346,19 +347,11 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
         f.params["lattice"] = q;
       };
       out.push_back(carry);
-    } else {
-      Candidate c;
-      c.effect = "quantization";
-      c.g = shape([](double t) { return 3.0 / (t * t); });
-      c.evidence = "Allan deviation above the model at short tau with slope -1 (IEEE 952 3Q^2/tau^2)";
-      c.describe = [u](double theta, Finding& f) {
-        const double lsb = std::sqrt(12.0 * theta);  // Q = lsb / sqrt(12)
-        f.size = "LSB " + quantity(lsb, u.increment) + " (Q = " + quantity(std::sqrt(theta), u.increment) + ")";
-        f.yaml = "{type: quantization, lsb: " + quantity(lsb, u.increment) + "}";
-        f.params["lsb"] = lsb;
-      };
-      out.push_back(c);
     }
+    // Without a value lattice there is no quantization candidate: the signature is the lattice
+    // AND the short-tau excess (issue 5). A short-tau excess alone is what a base model fitted to
+    // a record with a trend or a transient shows (the fit bends its short-tau level), and scoring
+    // it as quantization was a false alarm that grew with the hidden ramp.
   }
 
   if (!has("random_walk")) {

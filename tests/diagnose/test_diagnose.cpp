@@ -93,7 +93,7 @@ Outcome diagnoseHidden(const std::string& name, const Record& r,
     INFO("finding " << i << ": " << before.findings[i].effect);
     CHECK(std::find(hidden.begin(), hidden.end(), before.findings[i].effect) != hidden.end());
     CHECK(before.findings[i].reported);
-    CHECK(before.findings[i].score >= before.findings[i].score);
+    CHECK(before.findings[i].score >= options().threshold);
   }
   // No false alarm beside them: nothing else reported (threshold 8, see the README).
   std::size_t reported = 0;
@@ -123,7 +123,12 @@ TEST_CASE("hidden random walk is found and added", "[diagnose][hidden]") {
 }
 
 TEST_CASE("hidden ramp is found and added", "[diagnose][hidden]") {
-  diagnoseHidden("ramp", record("    - {type: ramp, slope: 300 deg/h^2}\n", 113), {"ramp"});
+  // 900 deg/h^2 (0.5 deg/s over the 2000 s record, ~7x the base ADEV at tau = 1000 s). At
+  // 300 deg/h^2 the ramp scores 7.4-8.4 against the threshold 8 (64 realisations, 6 comparison
+  // seeds): a detection-limit case, pass or fail by the draw. At 600 deg/h^2 one comparison seed
+  // in three ranks a slow warm-up above the ramp (over 2000 s the two shapes are close); at 900
+  // the ramp comes first with score >= 13 for 3 records x 3 comparison seeds.
+  diagnoseHidden("ramp", record("    - {type: ramp, slope: 900 deg/h^2}\n", 113), {"ramp"});
 }
 
 TEST_CASE("hidden bias instability is found and added", "[diagnose][hidden]") {
