@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Installs what sinsim needs from Debian packages (when missing), configures and builds into
-# build/. Safe to re-run: it only installs what is absent and rebuilds what changed.
+# build/ (Release, with MPI). Safe to re-run: it only installs what is absent and rebuilds what
+# changed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libeigen3-dev libgeographiclib-dev libyaml-cpp-dev
           catch2 libcli11-dev librandom123-dev libfftw3-dev nlohmann-json3-dev zlib1g-dev
-          libbenchmark-dev)
+          libbenchmark-dev libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -19,5 +20,6 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# SINSIM_MPI: `sinsim mc` also runs under mpirun (runs split across ranks, same bytes).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSINSIM_MPI=ON >/dev/null
 cmake --build build -j "$(nproc)"
