@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/record_options.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/allan.hpp"
@@ -54,10 +55,7 @@ struct AnalyzeArgs {
   std::string data;
   std::string json_out;
   std::string html_out;
-  std::string gyro_unit;
-  std::string accel_unit;
-  double rate_hz = 0;
-  bool allow_irregular = false;
+  RecordArgs record;
   double max_lag_s = 0;
   std::size_t segment = 0;
   std::string tau = "octave";
@@ -183,11 +181,7 @@ void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const Analy
 }
 
 int runAnalyze(const AnalyzeArgs& a) {
-  errormodels::RecordOptions ro;
-  if (!a.gyro_unit.empty()) ro.gyro_unit = a.gyro_unit;
-  if (!a.accel_unit.empty()) ro.accel_unit = a.accel_unit;
-  if (a.rate_hz > 0) ro.rate_hz = a.rate_hz;
-  ro.allow_irregular_time = a.allow_irregular;
+  const errormodels::RecordOptions ro = recordOptions(a.record);
   if (a.json_out.empty() && a.html_out.empty())
     throw InputError("analyze: give --json OUT and/or --html OUT");
   if (a.denoise != "none" && a.denoise != "db5")
@@ -250,11 +244,7 @@ void addAnalyzeCommand(CLI::App& app, Action& action) {
   cmd->add_option("--json", args->json_out, "output JSON file (SI units)");
   cmd->add_option("--html", args->html_out,
                   "output HTML report: Allan deviation with bounds, PSD and ACF per axis");
-  cmd->add_option("--gyro-unit", args->gyro_unit, "unit of gx/gy/gz, e.g. deg/s (default: header or rad/s)");
-  cmd->add_option("--accel-unit", args->accel_unit, "unit of ax/ay/az, e.g. g (default: header or m/s^2)");
-  cmd->add_option("--rate", args->rate_hz, "sample rate [Hz] (required without a t column)");
-  cmd->add_flag("--allow-irregular-time", args->allow_irregular,
-                "accept irregular/gapped time stamps (reported, never resampled)");
+  addRecordOptions(cmd, args->record);
   cmd->add_option("--max-lag", args->max_lag_s, "largest ACF lag [s] (default min(duration/10, 1000 s))");
   cmd->add_option("--segment", args->segment, "Welch segment length [samples] (default: power of 2 <= N/8)");
   cmd->add_option("--tau", args->tau, "Allan tau grid: octave | decade (10 per decade)");

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/record_options.hpp"
 #include "common/error.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/stats/record.hpp"
@@ -20,8 +21,7 @@ namespace dg = errormodels::diagnose;
 struct DiagnoseArgs {
   std::string data, model, edited, json, html, output;
   std::vector<std::string> add, channels;
-  std::string gyroUnit, accelUnit;
-  double rate = 0;
+  RecordArgs record;
   std::size_t realisations = 32;
   std::uint64_t seed = 20240505;
   unsigned threads = 0;
@@ -37,11 +37,7 @@ std::string defaultOutput(const std::string& model) {
 
 int runDiagnose(const DiagnoseArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  errormodels::RecordOptions ro;
-  if (!a.gyroUnit.empty()) ro.gyro_unit = a.gyroUnit;
-  if (!a.accelUnit.empty()) ro.accel_unit = a.accelUnit;
-  if (a.rate > 0) ro.rate_hz = a.rate;
-  const auto record = errormodels::loadRecord(a.data, ro);
+  const auto record = errormodels::loadRecord(a.data, recordOptions(a.record));
   const auto model = dg::ModelText::load(a.model);
   dg::DiagnoseOptions o;
   o.channels = a.channels;
@@ -94,9 +90,7 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   c->add_option("--json", a->json, "write the diagnosis as JSON");
   c->add_option("--html", a->html, "write a self-contained HTML report");
   c->add_option("--channels", a->channels, "channels to diagnose (gx gy gz ax ay az; default all)");
-  c->add_option("--gyro-unit", a->gyroUnit, "unit of gx/gy/gz, e.g. deg/s (default: header or rad/s)");
-  c->add_option("--accel-unit", a->accelUnit, "unit of ax/ay/az, e.g. g (default: header or m/s^2)");
-  c->add_option("--rate", a->rate, "sample rate [Hz] (required without a t column)");
+  addRecordOptions(c, a->record);
   c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
   c->add_option("--seed", a->seed, "seed of the realisations");
   c->add_option("--threads", a->threads, "worker threads (default: all cores)");

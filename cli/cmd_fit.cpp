@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/record_options.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/identify.hpp"
@@ -25,9 +26,7 @@ struct FitArgs {
   std::string denoise_rule = "universal", denoise_mode = "soft";
   int denoise_level = -1;
   bool ar_on_denoised = false;
-  std::string gyro_unit, accel_unit;
-  double rate_hz = 0;
-  bool allow_irregular = false;
+  RecordArgs record;
   std::size_t max_order = 20;
   std::string nav_step = "10 ms";
   std::string skip = "0 s";
@@ -105,13 +104,7 @@ int runFit(const FitArgs& a) {
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
 
-  errormodels::RecordOptions ro;
-  if (!a.gyro_unit.empty()) ro.gyro_unit = a.gyro_unit;
-  if (!a.accel_unit.empty()) ro.accel_unit = a.accel_unit;
-  if (a.rate_hz > 0) ro.rate_hz = a.rate_hz;
-  else if (a.rate_hz < 0 || !std::isfinite(a.rate_hz))
-    throw InputError("--rate: expected a positive frequency [Hz]");
-  ro.allow_irregular_time = a.allow_irregular;
+  const errormodels::RecordOptions ro = recordOptions(a.record);
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
   if (rec.irregular_count > 0)
     std::fprintf(stderr, "fit: warning: %zu irregular time steps in %s (fitted as uniform)\n",
@@ -147,11 +140,7 @@ void addFitCommand(CLI::App& app, Action& action) {
   c->add_flag("--ar-on-denoised", a->ar_on_denoised,
               "write the AR fitted on the denoised record (the paper's pipeline; too little white noise)");
   c->add_option("--skip", a->skip, "discard the start of the record, e.g. \"10 min\" (warm-up)");
-  c->add_option("--gyro-unit", a->gyro_unit, "unit of gx/gy/gz, e.g. deg/s (default: header or rad/s)");
-  c->add_option("--accel-unit", a->accel_unit, "unit of ax/ay/az, e.g. g (default: header or m/s^2)");
-  c->add_option("--rate", a->rate_hz, "sample rate [Hz] (required without a t column)");
-  c->add_flag("--allow-irregular-time", a->allow_irregular,
-              "accept irregular/gapped time stamps (reported, never resampled)");
+  addRecordOptions(c, a->record);
   c->add_flag("-q,--quiet", a->quiet, "print only the output file name");
   c->callback([a, &action] { action = [a] { return runFit(*a); }; });
 }

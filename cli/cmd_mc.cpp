@@ -22,6 +22,7 @@
 #endif
 
 #include "cli/commands.hpp"
+#include "cli/record_options.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
@@ -106,8 +107,7 @@ struct Args {
   std::string times;
   bool budget = false;
   std::string measured;
-  std::string gyroUnit, accelUnit;
-  double rate = 0;
+  RecordArgs record;  // of --measured
   std::string latitude = "51.08 deg", longitude = "-114.13 deg", height = "1100 m";
   std::string attitude, heading = "0 deg";
   std::string biasWindow;
@@ -180,11 +180,7 @@ int runMc(const Args& a) {
         throw InputError("give either a scenario or --measured (the measured record defines a "
                          "static scenario), not both");
       if (a.models.empty()) throw InputError("--measured needs at least one --model to compare with");
-      errormodels::RecordOptions ro;
-      if (!a.gyroUnit.empty()) ro.gyro_unit = a.gyroUnit;
-      if (!a.accelUnit.empty()) ro.accel_unit = a.accelUnit;
-      if (a.rate > 0) ro.rate_hz = a.rate;
-      record = errormodels::loadRecord(a.measured, ro);
+      record = errormodels::loadRecord(a.measured, recordOptions(a.record));
       for (int ax = 0; ax < 3; ++ax)
         if (!record->hasGyro(ax) || !record->hasAccel(ax))
           throw InputError(a.measured + ": the record needs the columns gx, gy, gz, ax, ay, az");
@@ -397,9 +393,7 @@ void addMcCommand(CLI::App& app, Action& action) {
   c->add_flag("--budget", a->budget, "Error budget: switch each effect off in turn");
   c->add_option("--measured", a->measured,
                 "A static record (CSV, .gz) to navigate and place in each model's envelope");
-  c->add_option("--gyro-unit", a->gyroUnit, "Unit of the record's gyro columns (e.g. deg/s)");
-  c->add_option("--accel-unit", a->accelUnit, "Unit of the record's accelerometer columns (e.g. g)");
-  c->add_option("--rate", a->rate, "Sample rate of the record [Hz] when it has no time column");
+  addRecordOptions(c, a->record);  // of the --measured record
   c->add_option("--latitude", a->latitude, "Where the record was taken (default 51.08 deg: Calgary)");
   c->add_option("--longitude", a->longitude, "(default -114.13 deg)");
   c->add_option("--height", a->height, "(default 1100 m)");

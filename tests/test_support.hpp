@@ -1,6 +1,11 @@
 // Helpers shared by several test suites.
 #pragma once
 
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +21,23 @@ inline bool hasDiagnostic(const std::vector<Diagnostic>& ds, const std::string& 
         d.message.find(fragment) != std::string::npos)
       return true;
   return false;
+}
+
+/// Runs the built `sinsim` with `args` (stdout discarded, stderr to errFile); its exit code, or
+/// -1 when it did not exit normally.
+inline int runSinsim(const std::string& args, const std::string& errFile) {
+  const std::string cmd =
+      std::string(SINSIM_BINARY_DIR) + "/sinsim " + args + " > /dev/null 2> " + errFile;
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The whole content of a text file ("" when it cannot be read).
+inline std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
 }
 
 }  // namespace sinsim::test

@@ -11,24 +11,17 @@
 
 #include "errormodels/imu_model.hpp"
 
+#include "test_support.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kSinsim = std::string(SINSIM_BINARY_DIR) + "/sinsim";
-
 int run(const std::string& args, const fs::path& errFile) {
-  const std::string cmd = kSinsim + " " + args + " > /dev/null 2> " + errFile.string();
-  const int status = std::system(cmd.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return sinsim::test::runSinsim(args, errFile.string());
 }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+std::string slurp(const fs::path& p) { return sinsim::test::slurp(p.string()); }
 
 }  // namespace
 

@@ -1,0 +1,43 @@
+// The options every command that reads a measured record shares (analyze, fit, diagnose, mc
+// --measured): the units of its columns, its rate when it has no time column, and whether
+// irregular time stamps are accepted. One place, so the commands read records alike.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "common/error.hpp"
+#include "errormodels/stats/record.hpp"
+
+namespace sinsim::cli {
+
+struct RecordArgs {
+  std::string gyroUnit;   // e.g. "deg/s"; empty: from the header, else rad/s
+  std::string accelUnit;  // e.g. "g"; empty: from the header, else m/s^2
+  double rate = 0.0;      // [Hz]; 0: from the t column
+  bool allowIrregular = false;
+};
+
+inline void addRecordOptions(CLI::App* c, RecordArgs& r) {
+  c->add_option("--gyro-unit", r.gyroUnit, "unit of gx/gy/gz, e.g. deg/s (default: header or rad/s)");
+  c->add_option("--accel-unit", r.accelUnit, "unit of ax/ay/az, e.g. g (default: header or m/s^2)");
+  c->add_option("--rate", r.rate, "sample rate [Hz] (required without a t column)");
+  c->add_flag("--allow-irregular-time", r.allowIrregular,
+              "accept irregular/gapped time stamps (reported, never resampled)");
+}
+
+/// The loader's options; a negative or non-finite --rate is refused here.
+inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
+  if (!(std::isfinite(r.rate) && r.rate >= 0.0))
+    throw InputError("--rate: expected a positive sample rate in Hz, got " + std::to_string(r.rate));
+  errormodels::RecordOptions ro;
+  if (!r.gyroUnit.empty()) ro.gyro_unit = r.gyroUnit;
+  if (!r.accelUnit.empty()) ro.accel_unit = r.accelUnit;
+  if (r.rate > 0.0) ro.rate_hz = r.rate;
+  ro.allow_irregular_time = r.allowIrregular;
+  return ro;
+}
+
+}  // namespace sinsim::cli
