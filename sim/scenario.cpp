@@ -69,6 +69,16 @@ double readDuration(const ConfigNode& n) {
   return *v;
 }
 
+// accelerate / decelerate: a target speed ≥ 0 over the duration (decelerate refuses to speed up).
+void readSpeedChange(const ConfigNode& n, SegmentSpec& s, bool decelerate) {
+  s.seg.duration = readDuration(n);
+  const double v = n.quantity("speed", D::speed());
+  if (std::isfinite(v) && !n["speed"].check(v >= 0.0, "expected a speed ≥ 0")) return;
+  s.target = Target::Absolute;
+  s.value = v;
+  s.decelerate = decelerate;
+}
+
 // Exactly one of `absKey` (a target) and `changeKey` (a change) must be given.
 void readTarget(const ConfigNode& n, SegmentSpec& sp, const std::string& absKey,
                 const std::string& changeKey, Dimension dim) {
@@ -93,23 +103,10 @@ const std::map<std::string, SegmentType>& registry() {
                   }}},
       {"accelerate",
        {SegmentKind::Accelerate, {"duration", "speed"},
-        [](const ConfigNode& n, SegmentSpec& s) {
-          s.seg.duration = readDuration(n);
-          const double v = n.quantity("speed", D::speed());
-          if (std::isfinite(v) && !n["speed"].check(v >= 0.0, "expected a speed ≥ 0")) return;
-          s.target = Target::Absolute;
-          s.value = v;
-        }}},
+        [](const ConfigNode& n, SegmentSpec& s) { readSpeedChange(n, s, false); }}},
       {"decelerate",
        {SegmentKind::Accelerate, {"duration", "speed"},
-        [](const ConfigNode& n, SegmentSpec& s) {
-          s.seg.duration = readDuration(n);
-          const double v = n.quantity("speed", D::speed());
-          if (std::isfinite(v) && !n["speed"].check(v >= 0.0, "expected a speed ≥ 0")) return;
-          s.target = Target::Absolute;
-          s.value = v;
-          s.decelerate = true;
-        }}},
+        [](const ConfigNode& n, SegmentSpec& s) { readSpeedChange(n, s, true); }}},
       {"turn",
        {SegmentKind::Turn, {"duration", "heading", "heading_change", "bank"},
         [](const ConfigNode& n, SegmentSpec& s) {

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -25,15 +26,15 @@ inline bool hasDiagnostic(const std::vector<Diagnostic>& ds, const std::string& 
 
 /// Runs the built `sinsim` with `args` (stdout discarded, stderr to errFile); its exit code, or
 /// -1 when it did not exit normally.
-inline int runSinsim(const std::string& args, const std::string& errFile) {
+inline int runSinsim(const std::string& args, const std::filesystem::path& errFile) {
   const std::string cmd =
-      std::string(SINSIM_BINARY_DIR) + "/sinsim " + args + " > /dev/null 2> " + errFile;
+      std::string(SINSIM_BINARY_DIR) + "/sinsim " + args + " > /dev/null 2> " + errFile.string();
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 /// The whole content of a text file ("" when it cannot be read).
-inline std::string slurp(const std::string& path) {
+inline std::string slurp(const std::filesystem::path& path) {
   std::ifstream f(path);
   std::stringstream s;
   s << f.rdbuf();

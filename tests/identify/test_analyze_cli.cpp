@@ -17,15 +17,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
-
-int run(const std::string& args, const fs::path& errFile) {
-  return sinsim::test::runSinsim(args, errFile.string());
-}
-
-std::string slurp(const fs::path& p) { return sinsim::test::slurp(p.string()); }
-
-}  // namespace
+using sinsim::test::slurp;
 
 TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and PSD", "[cli]") {
   const fs::path dir = fs::temp_directory_path() / "sinsim_test_analyze_cli";
@@ -43,7 +35,7 @@ TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and
   }
   const fs::path err = dir / "stderr.txt";
   const fs::path js = dir / "a.json", html = dir / "a.html";
-  REQUIRE(run("analyze " + (dir / "white.csv").string() + " --rate 100 --json " + js.string() +
+  REQUIRE(sinsim::test::runSinsim("analyze " + (dir / "white.csv").string() + " --rate 100 --json " + js.string() +
                   " --html " + html.string(),
               err) == 0);
   const nlohmann::json j = nlohmann::json::parse(slurp(js));
@@ -77,14 +69,14 @@ TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and
     f << "gx\n0.1\n0.2\nabc\n0.3\n";
   }
   const fs::path js2 = dir / "b.json", html2 = dir / "b.html";
-  CHECK(run("analyze " + (dir / "bad.csv").string() + " --rate 100 --json " + js2.string() +
+  CHECK(sinsim::test::runSinsim("analyze " + (dir / "bad.csv").string() + " --rate 100 --json " + js2.string() +
                 " --html " + html2.string(),
             err) == 1);
   CHECK(slurp(err).find("bad.csv:4") != std::string::npos);
   CHECK_FALSE(fs::exists(js2));
   CHECK_FALSE(fs::exists(html2));
   // No output asked for: a clear error, not a silent no-op.
-  CHECK(run("analyze " + (dir / "white.csv").string() + " --rate 100", err) == 1);
+  CHECK(sinsim::test::runSinsim("analyze " + (dir / "white.csv").string() + " --rate 100", err) == 1);
   CHECK(slurp(err).find("--json") != std::string::npos);
   fs::remove_all(dir);
 }

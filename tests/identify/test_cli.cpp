@@ -15,15 +15,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
-
-int run(const std::string& args, const fs::path& errFile) {
-  return sinsim::test::runSinsim(args, errFile.string());
-}
-
-std::string slurp(const fs::path& p) { return sinsim::test::slurp(p.string()); }
-
-}  // namespace
+using sinsim::test::slurp;
 
 TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[identify][cli]") {
   const fs::path dir = fs::temp_directory_path() / "sinsim_test_identify_cli";
@@ -31,10 +23,10 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
   fs::create_directories(dir);
   const fs::path err = dir / "stderr.txt";
   const std::string preset = std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml";
-  REQUIRE(run("synth " + preset + " --rate 1000 --duration 120 --seed 3 -o " + (dir / "s.csv").string(), err) == 0);
+  REQUIRE(sinsim::test::runSinsim("synth " + preset + " --rate 1000 --duration 120 --seed 3 -o " + (dir / "s.csv").string(), err) == 0);
   const fs::path model = dir / "m.yaml";
   INFO(slurp(err));
-  REQUIRE(run("fit " + (dir / "s.csv").string() + " --axes gx,ax --max-order 8 -o " + model.string(), err) == 0);
+  REQUIRE(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --axes gx,ax --max-order 8 -o " + model.string(), err) == 0);
   REQUIRE(fs::exists(model));
   const std::string text = slurp(model);
   CHECK(text.find("# data: ") != std::string::npos);        // provenance
@@ -42,8 +34,8 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
   CHECK(text.find("type: ar") != std::string::npos);
   const auto m = sinsim::errormodels::ImuErrorModel::load(model.string());
   CHECK_FALSE(m.empty());
-  CHECK(run("synth " + model.string() + " --rate 1000 --duration 2 -o " + (dir / "s2.csv").string(), err) == 0);
-  CHECK(run("run " + std::string(SINSIM_SOURCE_DIR) + "/scenarios/static.yaml --model " +
+  CHECK(sinsim::test::runSinsim("synth " + model.string() + " --rate 1000 --duration 2 -o " + (dir / "s2.csv").string(), err) == 0);
+  CHECK(sinsim::test::runSinsim("run " + std::string(SINSIM_SOURCE_DIR) + "/scenarios/static.yaml --model " +
                 model.string() + " -o " + (dir / "run").string(), err) == 0);
   CHECK(fs::exists(dir / "run" / "summary.json"));
 
@@ -54,14 +46,14 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
     f << "t,gx\n0.01,1\n0.02,2\n0.03,3\n0.04,4\n0.05,nan\n0.06,6\n";
   }
   const fs::path badModel = dir / "bad.yaml";
-  CHECK(run("fit " + (dir / "bad.csv").string() + " -o " + badModel.string(), err) == 1);
+  CHECK(sinsim::test::runSinsim("fit " + (dir / "bad.csv").string() + " -o " + badModel.string(), err) == 1);
   const std::string msg = slurp(err);
   INFO(msg);
   CHECK(msg.find("bad.csv:6") != std::string::npos);
   CHECK_FALSE(fs::exists(badModel));
   CHECK_FALSE(fs::exists(badModel.string() + ".tmp"));
   // Bad options -> exit 1 before anything is read or written.
-  CHECK(run("fit " + (dir / "s.csv").string() + " --kind arma -o " + badModel.string(), err) == 1);
+  CHECK(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --kind arma -o " + badModel.string(), err) == 1);
   CHECK(slurp(err).find("known: ar, gm, allan, auto") != std::string::npos);
   CHECK_FALSE(fs::exists(badModel));
   fs::remove_all(dir);
