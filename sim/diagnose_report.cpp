@@ -35,40 +35,35 @@ double halfStep(const std::vector<double>& x) {
   return x.size() > 1 ? std::sqrt(x[1] / x[0]) : 1.5;
 }
 
-Plot adevPlot(const dg::AxisDiagnosis& a, const std::string& title, bool shades) {
-  Plot p(title, "averaging time τ [s]", "σ(τ) [" + a.unit + "]");
+/// Measurement, model and the model's band on log-log axes, the ranges where the measurement
+/// leaves the band shaded. `statistic` ("adev" or "psd") selects the failing ranges; values are
+/// divided by `factor` (SI → display unit).
+Plot bandPlot(const dg::AxisDiagnosis& a, const dg::Comparison& c, const std::string& statistic,
+              double factor, Plot p, const std::string& shadeLabel) {
   p.xLog = p.yLog = true;
-  const double f = a.unitFactor;
-  if (shades) {
-    const double h = halfStep(a.adev.x);
-    bool first = true;
-    for (const auto& r : a.fails)
-      if (r.statistic == "adev") {
-        p.add(Shade(r.from / h, r.to * h, kFail, first ? "measurement outside the band" : ""));
-        first = false;
-      }
-  }
-  p.add(Band("model band", a.adev.x, scaled(a.adev.lo, f), scaled(a.adev.hi, f), kModel));
-  p.add(Series("model", a.adev.x, scaled(a.adev.model, f), kModel));
-  p.add(Series("measurement", a.adev.x, scaled(a.adev.meas, f), kMeas, false, 1.6, true));
+  const double h = halfStep(c.x);
+  bool first = true;
+  for (const auto& r : a.fails)
+    if (r.statistic == statistic) {
+      p.add(Shade(r.from / h, r.to * h, kFail, first ? shadeLabel : ""));
+      first = false;
+    }
+  p.add(Band("model band", c.x, scaled(c.lo, factor), scaled(c.hi, factor), kModel));
+  p.add(Series("model", c.x, scaled(c.model, factor), kModel));
+  p.add(Series("measurement", c.x, scaled(c.meas, factor), kMeas, false, 1.6, true));
   return p;
 }
 
+Plot adevPlot(const dg::AxisDiagnosis& a, const std::string& title) {
+  return bandPlot(a, a.adev, "adev", a.unitFactor,
+                  Plot(title, "averaging time τ [s]", "σ(τ) [" + a.unit + "]"),
+                  "measurement outside the band");
+}
+
 Plot psdPlot(const dg::AxisDiagnosis& a) {
-  Plot p("PSD — " + a.channel, "frequency [Hz]", "PSD [(" + a.unit + ")²/Hz]");
-  p.xLog = p.yLog = true;
-  const double f2 = a.unitFactor * a.unitFactor;
-  const double h = halfStep(a.psd.x);
-  bool first = true;
-  for (const auto& r : a.fails)
-    if (r.statistic == "psd") {
-      p.add(Shade(r.from / h, r.to * h, kFail, first ? "outside the band" : ""));
-      first = false;
-    }
-  p.add(Band("model band", a.psd.x, scaled(a.psd.lo, f2), scaled(a.psd.hi, f2), kModel));
-  p.add(Series("model", a.psd.x, scaled(a.psd.model, f2), kModel));
-  p.add(Series("measurement", a.psd.x, scaled(a.psd.meas, f2), kMeas, false, 1.6, true));
-  return p;
+  return bandPlot(a, a.psd, "psd", a.unitFactor * a.unitFactor,
+                  Plot("PSD — " + a.channel, "frequency [Hz]", "PSD [(" + a.unit + ")²/Hz]"),
+                  "outside the band");
 }
 
 Plot acfPlot(const dg::AxisDiagnosis& a) {
@@ -145,7 +140,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
                " the band (×" + fmt(r.worstRatio) + ")";
     page.paragraph(fails.empty() ? "The measurement stays inside the model's band everywhere."
                                  : "Where it fails: " + fails + ".");
-    page.plotRow({adevPlot(a, "Allan deviation — " + a.channel, true), psdPlot(a)});
+    page.plotRow({adevPlot(a, "Allan deviation — " + a.channel), psdPlot(a)});
     page.plotRow({acfPlot(a)});
     page.table(findingsTable(a, d.threshold));
     if (imp) {
