@@ -1,108 +1,19 @@
 // `sinsim synth MODEL --rate HZ --duration S -o FILE.csv`: a static IMU record with a known error
-// model, as a real IMU at rest would give it — test data with known truth for the identification
-// path (including effects the fitted model does not know about).
-//
-// Output CSV, header `t,gx,gy,gz,ax,ay,az,temp`: t [s] (end of each interval), gx..gz [rad/s] and
-// ax..az [m/s^2] = measured increments / dt in body axes (x fwd, y right, z down), temp [degC].
+// model (sim/synth.hpp) — test data with known truth for the identification path.
 #include <cmath>
-#include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "cli/commands.hpp"
-#include "common/error.hpp"
 #include "common/constants.hpp"
+#include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/imu_model.hpp"
-#include "nav/attitude.hpp"
-#include "nav/earth.hpp"
+#include "sim/synth.hpp"
 
 namespace sinsim::cli {
 namespace {
-
-
-/// Sensor temperature over the record [K]: a constant ("25 degC"), a linear ramp over the whole
-/// record ("20 degC..45 degC"), or a CSV file with header t,temp (s, degC) interpolated linearly
-/// and held constant outside its time span.
-class TemperatureProfile {
- public:
-  TemperatureProfile(const std::string& spec, double duration) : duration_(duration) {
-    auto dots = spec.find("..");
-    if (dots != std::string::npos) {
-      try {
-        t0_ = parseQuantityAs(spec.substr(0, dots), Dimension::temperature());
-        t1_ = parseQuantityAs(spec.substr(dots + 2), Dimension::temperature());
-      } catch (const InputError& e) {
-        throw InputError("--temperature \"" + spec + "\": a ramp is \"20 degC..45 degC\": " +
-                         e.what());
-      }
-      kind_ = Kind::ramp;
-      return;
-    }
-    try {
-      t0_ = parseQuantityAs(spec, Dimension::temperature());
-      kind_ = Kind::constant;
-      return;
-    } catch (const InputError& e) {
-      std::ifstream probe(spec);
-      if (!probe) {
-        throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
-                         "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
-      }
-    }
-    readCsv(spec);
-    kind_ = Kind::table;
-  }
-
-  double at(double t) const {
-    switch (kind_) {
-      case Kind::constant: return t0_;
-      case Kind::ramp: return t0_ + (t1_ - t0_) * (duration_ > 0 ? t / duration_ : 0.0);
-      case Kind::table: break;
-    }
-    if (t <= ts_.front()) return temps_.front();
-    if (t >= ts_.back()) return temps_.back();
-    while (t > ts_[i_ + 1]) ++i_;  // t only grows
-    const double w = (t - ts_[i_]) / (ts_[i_ + 1] - ts_[i_]);
-    return temps_[i_] + w * (temps_[i_ + 1] - temps_[i_]);
-  }
-
- private:
-  enum class Kind { constant, ramp, table };
-
-  void readCsv(const std::string& path) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    if (line.rfind("t,temp", 0) != 0)
-      throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" + line + "\"");
-    int row = 1;
-    while (std::getline(in, line)) {
-      ++row;
-      if (line.empty()) continue;
-      double t = NAN, c = NAN;
-      char comma = 0;
-      std::istringstream ss(line);
-      if (!(ss >> t >> comma >> c) || comma != ',' || !std::isfinite(t) || !std::isfinite(c))
-        throw InputError(path + ":" + std::to_string(row) + ": expected \"t,temp\" numbers, got \"" +
-                         line + "\"");
-      if (!ts_.empty() && !(t > ts_.back()))
-        throw InputError(path + ":" + std::to_string(row) + ": times must increase");
-      ts_.push_back(t);
-      temps_.push_back(c + kZeroCelsius);
-    }
-    if (ts_.empty()) throw InputError(path + ": no temperature rows");
-  }
-
-  Kind kind_ = Kind::constant;
-  double duration_;
-  double t0_ = NAN, t1_ = NAN;  // [K]
-  std::vector<double> ts_, temps_;
-  mutable std::size_t i_ = 0;
-};
 
 struct SynthOptions {
   std::string model, output, temperature = "25 degC", latitude = "45 deg", height = "0 m",
@@ -132,74 +43,17 @@ nav::Vec3 parseAttitude(const std::string& text) {
   return rpy;
 }
 
-char* put(char* p, char* end, double v, int precision) {
-  auto r = std::to_chars(p, end, v, std::chars_format::general, precision);
-  return r.ptr;
-}
-
 int runSynth(const SynthOptions& o) {
-  if (!(std::isfinite(o.rate) && o.rate > 0)) throw InputError("--rate must be positive");
-  if (!(std::isfinite(o.duration) && o.duration > 0)) throw InputError("--duration must be positive");
   const auto model = errormodels::ImuErrorModel::load(o.model);
-  const double lat = parseQuantityAs(o.latitude, Dimension::angle());
-  if (!(std::fabs(lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");
-  const double h = parseQuantityAs(o.height, Dimension::length());
-  const nav::Vec3 rpy = parseAttitude(o.attitude);
-  const TemperatureProfile temperature(o.temperature, o.duration);
-
-  // At rest on the rotating Earth: omega_ib_b = C_bn omega_ie_n, f_b = -C_bn g_n (normal gravity,
-  // gravitation + centrifugal, GeographicLib via nav::Earth).
-  const nav::Earth earth;
-  const nav::Mat3 C_bn = nav::dcmFromEuler(rpy).transpose();
-  const nav::Vec3 omega_ib_b = C_bn * earth.omega_ie_n(lat);
-  const nav::Vec3 f_b = -(C_bn * earth.gravity_n(lat, h));
-
-  auto corruptor = model.instantiate(o.rate, {o.seed, o.run});
-  const long long n = std::llround(o.duration * o.rate);
-  const double dt = 1.0 / o.rate;
-
-  // Written to a temporary beside the target, renamed at the end: never a half-written file.
-  const std::string tmp = o.output + ".tmp" + std::to_string(::getpid());
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw InputError("cannot write " + tmp);
-  try {
-    std::fputs("t,gx,gy,gz,ax,ay,az,temp\n", f);
-    std::vector<char> buf(1 << 16);
-    std::size_t used = 0;
-    for (long long k = 1; k <= n; ++k) {
-      nav::ImuSample s;
-      s.t = double(k) * dt;
-      s.dt = dt;
-      s.dtheta_b = omega_ib_b * dt;
-      s.dv_b = f_b * dt;
-      const double T = temperature.at(s.t - 0.5 * dt);  // mid-interval [K]
-      corruptor->corrupt(s, T);
-      if (used + 256 > buf.size()) {
-        if (std::fwrite(buf.data(), 1, used, f) != used) throw InputError("write error on " + tmp);
-        used = 0;
-      }
-      char* p = buf.data() + used;
-      char* end = buf.data() + buf.size();
-      p = put(p, end, s.t, 12);
-      for (int i = 0; i < 3; ++i) *p++ = ',', p = put(p, end, s.dtheta_b[i] / dt, 12);
-      for (int i = 0; i < 3; ++i) *p++ = ',', p = put(p, end, s.dv_b[i] / dt, 12);
-      *p++ = ',';
-      p = put(p, end, T - kZeroCelsius, 8);
-      *p++ = '\n';
-      used = std::size_t(p - buf.data());
-    }
-    if (std::fwrite(buf.data(), 1, used, f) != used || std::fclose(f) != 0) {
-      f = nullptr;
-      throw InputError("write error on " + tmp);
-    }
-    f = nullptr;
-    if (std::rename(tmp.c_str(), o.output.c_str()) != 0)
-      throw InputError("cannot rename " + tmp + " to " + o.output);
-  } catch (...) {
-    if (f) std::fclose(f);
-    std::remove(tmp.c_str());
-    throw;
-  }
+  sim::StaticRecordSpec spec;
+  spec.rate = o.rate;
+  spec.duration = o.duration;
+  spec.key = {o.seed, o.run};
+  spec.lat = parseQuantityAs(o.latitude, Dimension::angle());
+  spec.h = parseQuantityAs(o.height, Dimension::length());
+  spec.rpy = parseAttitude(o.attitude);
+  const sim::RecordTemperature temperature(o.temperature, o.duration);
+  const long long n = sim::writeStaticRecord(model, spec, temperature, o.output);
   std::printf("wrote %s: %lld samples at %g Hz, model %s (%zu effects), seed %llu run %llu\n",
               o.output.c_str(), n, o.rate, model.source().c_str(), model.effectNames().size(),
               (unsigned long long)o.seed, (unsigned long long)o.run);

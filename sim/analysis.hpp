@@ -1,0 +1,48 @@
+// The statistics of a measured record, per channel (sinsim analyze): mean and deviation, the
+// autocorrelation and Welch PSD of the (optionally db5-denoised) signal, and the overlapping Allan
+// deviation of the raw signal with confidence bounds — computed once, written as JSON (SI) and/or
+// as an HTML report (display units).
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "errormodels/stats/allan.hpp"
+#include "errormodels/stats/record.hpp"
+#include "errormodels/stats/spectrum.hpp"
+#include "errormodels/stats/wavelet.hpp"
+
+namespace sinsim::sim {
+
+struct AnalysisOptions {
+  double max_lag_s = 0;       // largest ACF lag [s]; 0: min(duration/10, 1000 s)
+  std::size_t segment = 0;    // Welch segment length [samples]; 0: power of 2 <= N/8
+  bool tauPerDecade = false;  // Allan τ grid: false octave, true 10 per decade
+  double confidence = 0.683;  // two-sided level of the Allan bounds
+  bool denoise = false;       // db5 wavelet denoising before ACF and PSD (Allan uses raw data)
+};
+
+/// The statistics of one channel.
+struct ChannelStats {
+  std::string name;     // gx, ..., az
+  std::string unit_si;  // rad/s or m/s^2
+  double mean = 0.0, sd = 0.0;
+  std::optional<errormodels::DenoiseResult> denoised;
+  errormodels::Autocorrelation acf;
+  errormodels::PowerSpectrum psd;
+  errormodels::AllanCurve allan;
+};
+
+/// Statistics of every gyro and accelerometer channel the record has (InputError: none).
+std::vector<ChannelStats> analyzeRecord(const errormodels::Record& record,
+                                        const AnalysisOptions& options);
+
+/// Writes the analysis: JSON (SI, every number) to jsonPath and/or the HTML report to htmlPath
+/// (empty: not written), each whole or not at all.
+void writeAnalysis(const errormodels::Record& record, const std::vector<ChannelStats>& stats,
+                   const AnalysisOptions& options, const std::string& jsonPath,
+                   const std::string& htmlPath);
+
+}  // namespace sinsim::sim

@@ -1,0 +1,142 @@
+#include "sim/synth.hpp"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/constants.hpp"
+#include "common/error.hpp"
+#include "common/units.hpp"
+#include "nav/attitude.hpp"
+#include "nav/earth.hpp"
+#include "sim/output.hpp"
+
+namespace sinsim::sim {
+namespace {
+
+
+char* put(char* p, char* end, double v, int precision) {
+  return std::to_chars(p, end, v, std::chars_format::general, precision).ptr;
+}
+
+}  // namespace
+
+RecordTemperature::RecordTemperature(const std::string& spec, double duration)
+    : duration_(duration) {
+  const auto dots = spec.find("..");
+  if (dots != std::string::npos) {
+    try {
+      t0_ = parseQuantityAs(spec.substr(0, dots), Dimension::temperature());
+      t1_ = parseQuantityAs(spec.substr(dots + 2), Dimension::temperature());
+    } catch (const InputError& e) {
+      throw InputError("--temperature \"" + spec + "\": a ramp is \"20 degC..45 degC\": " +
+                       e.what());
+    }
+    kind_ = Kind::ramp;
+    return;
+  }
+  try {
+    t0_ = parseQuantityAs(spec, Dimension::temperature());
+    kind_ = Kind::constant;
+    return;
+  } catch (const InputError& e) {
+    std::ifstream probe(spec);
+    if (!probe)
+      throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
+                       "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
+  }
+  readCsv(spec);
+  kind_ = Kind::table;
+}
+
+double RecordTemperature::at(double t) const {
+  switch (kind_) {
+    case Kind::constant: return t0_;
+    case Kind::ramp: return t0_ + (t1_ - t0_) * (duration_ > 0 ? t / duration_ : 0.0);
+    case Kind::table: break;
+  }
+  if (t <= ts_.front()) return temps_.front();
+  if (t >= ts_.back()) return temps_.back();
+  while (t > ts_[i_ + 1]) ++i_;  // t only grows
+  const double w = (t - ts_[i_]) / (ts_[i_ + 1] - ts_[i_]);
+  return temps_[i_] + w * (temps_[i_ + 1] - temps_[i_]);
+}
+
+void RecordTemperature::readCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("t,temp", 0) != 0)
+    throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" + line + "\"");
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    double t = NAN, c = NAN;
+    char comma = 0;
+    std::istringstream ss(line);
+    if (!(ss >> t >> comma >> c) || comma != ',' || !std::isfinite(t) || !std::isfinite(c))
+      throw InputError(path + ":" + std::to_string(row) + ": expected \"t,temp\" numbers, got \"" +
+                       line + "\"");
+    if (!ts_.empty() && !(t > ts_.back()))
+      throw InputError(path + ":" + std::to_string(row) + ": times must increase");
+    ts_.push_back(t);
+    temps_.push_back(c + kZeroCelsius);
+  }
+  if (ts_.empty()) throw InputError(path + ": no temperature rows");
+}
+
+long long writeStaticRecord(const errormodels::ImuErrorModel& model, const StaticRecordSpec& o,
+                            const RecordTemperature& temperature, const std::string& path) {
+  if (!(std::isfinite(o.rate) && o.rate > 0)) throw InputError("--rate must be positive");
+  if (!(std::isfinite(o.duration) && o.duration > 0)) throw InputError("--duration must be positive");
+  if (!(std::fabs(o.lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");
+
+  const nav::Earth earth;
+  const nav::Mat3 C_bn = nav::dcmFromEuler(o.rpy).transpose();
+  const nav::Vec3 omega_ib_b = C_bn * earth.omega_ie_n(o.lat);
+  const nav::Vec3 f_b = -(C_bn * earth.gravity_n(o.lat, o.h));
+
+  auto corruptor = model.instantiate(o.rate, o.key);
+  const long long n = std::llround(o.duration * o.rate);
+  const double dt = 1.0 / o.rate;
+
+  const std::filesystem::path target(path);
+  OutputFiles out(target.has_parent_path() ? target.parent_path().string() : ".");
+  std::FILE* f = out.open(target.filename().string());
+  std::fputs("t,gx,gy,gz,ax,ay,az,temp\n", f);
+  std::vector<char> buf(1 << 16);
+  std::size_t used = 0;
+  auto flush = [&] {
+    if (std::fwrite(buf.data(), 1, used, f) != used) throw Error(writeErrorMessage(path, errno));
+    used = 0;
+  };
+  for (long long k = 1; k <= n; ++k) {
+    nav::ImuSample s;
+    s.t = double(k) * dt;
+    s.dt = dt;
+    s.dtheta_b = omega_ib_b * dt;
+    s.dv_b = f_b * dt;
+    const double T = temperature.at(s.t - 0.5 * dt);  // mid-interval [K]
+    corruptor->corrupt(s, T);
+    if (used + 256 > buf.size()) flush();
+    char* p = buf.data() + used;
+    char* end = buf.data() + buf.size();
+    p = put(p, end, s.t, 12);
+    for (int i = 0; i < 3; ++i) *p++ = ',', p = put(p, end, s.dtheta_b[i] / dt, 12);
+    for (int i = 0; i < 3; ++i) *p++ = ',', p = put(p, end, s.dv_b[i] / dt, 12);
+    *p++ = ',';
+    p = put(p, end, T - kZeroCelsius, 8);
+    *p++ = '\n';
+    used = std::size_t(p - buf.data());
+  }
+  flush();
+  out.commit();
+  return n;
+}
+
+}  // namespace sinsim::sim
