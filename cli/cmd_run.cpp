@@ -1,4 +1,4 @@
-// sinsim run [SCENARIO] [-o DIR] [--seed N] [--model FILE|none]
+// sinsim run [SCENARIO] [-o DIR] [--seed N] [--model FILE|none] [--bias-window T]
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -42,6 +42,7 @@ void addRunCommand(CLI::App& app, Action& action) {
     std::string outDir;
     std::optional<std::uint64_t> seed;
     std::string model;
+    double biasWindow = 0.0;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -55,6 +56,9 @@ void addRunCommand(CLI::App& app, Action& action) {
                                         "scenario's seed:)");
   cmd->add_option("--model", args->model,
                   "Sensor error model file, or none for a perfect IMU (overrides errors:)");
+  cmd->add_option("--bias-window", args->biasWindow,
+                  "Remove the mean sensor error of the first T seconds [s] (as a user does with a "
+                  "static start; default 0: none)");
   cmd->callback([&action, args]() {
     action = [args]() {
       const std::string file = args->scenario.empty() ? defaultScenario() : args->scenario;
@@ -62,6 +66,7 @@ void addRunCommand(CLI::App& app, Action& action) {
       sim::RunOptions opt;
       opt.outDir = args->outDir.empty() ? (fs::path("out") / sc.name).string() : args->outDir;
       opt.seed = args->seed;
+      opt.biasWindow = args->biasWindow;
       if (!args->model.empty()) opt.model = args->model;
       const sim::RunSummary s = sim::run(sc, opt);
       std::cout << "sinsim run: " << file << " -> " << s.outDir

@@ -14,14 +14,18 @@
 
 namespace sinsim::sim {
 
-/// The aiding hook (issue: GNSS/INS): called once per interval, after the strapdown has
-/// integrated it and before the epoch is reported, with the interval (ideal and measured sample,
-/// truth where the source knows it) and the strapdown. A filter predicts with e.measured, may
-/// simulate its aiding measurements from e.truth (check e.hasTruth) and corrects the navigation
-/// through the strapdown's interface; what it leaves in the strapdown is what the epoch reports.
+/// The aiding hook (issue: GNSS/INS). initialState() chooses where the navigation starts (the
+/// truth plus a run's initial errors); epoch() is called once per interval, after the strapdown
+/// has integrated it and before the epoch is reported, with the interval (ideal and measured
+/// sample — after the bias window's correction —, truth where the source knows it) and the
+/// strapdown. A filter predicts with e.measured, may simulate its aiding measurements from
+/// e.truth (check e.hasTruth) and corrects the navigation through the strapdown's interface; what
+/// it leaves in the strapdown is what the epoch reports. Its own outputs (filter.csv) are its
+/// business: the loop knows nothing of them.
 class NavAiding {
  public:
   virtual ~NavAiding() = default;
+  virtual nav::NavState initialState(const nav::NavState& truth) { return truth; }
   virtual void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) = 0;
 };
 
@@ -40,7 +44,8 @@ struct NavLoopOptions {
 /// every interval, in time order, with the navigation state at e's end.
 using EpochSink = std::function<void(const ImuEpoch& e, const nav::NavState& nav)>;
 
-/// Navigates `source` from its true initial state with the WGS-84 earth. Returns false when
+/// Navigates `source` from its true initial state (or options.aiding->initialState of it) with
+/// the WGS-84 earth. Returns false when
 /// `cancel` became true (the sink has then seen only part of the run). Throws InputError for a
 /// bias window shorter than one IMU interval.
 bool navigate(ImuSource& source, const NavLoopOptions& options, const EpochSink& sink);

@@ -89,6 +89,11 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
   struct Probe : sim::NavAiding {
     long long calls = 0, differ = 0, withTruth = 0;
     double lastT = 0;
+    nav::NavState initialState(const nav::NavState& truth) override {
+      nav::NavState s = truth;
+      s.lat += 10.0 / 6.4e6;  // ~10 m north of the truth
+      return s;
+    }
     void epoch(const sim::ImuEpoch& e, nav::Strapdown& s) override {
       ++calls;
       differ += (e.measured.dtheta_b != e.ideal.dtheta_b) ? 1 : 0;
@@ -99,9 +104,16 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
   } probe;
   sim::RunOptions ro;
   ro.aiding = &probe;
+  std::vector<sim::NavError> rows;
+  ro.onRow = [&](const sim::NavError& e) { rows.push_back(e); };
   const sim::RunSummary s = sim::run(sc, ro);
   CHECK(probe.calls == s.imuSamples);
   CHECK(probe.differ == s.imuSamples);     // white noise: every measured sample differs
   CHECK(probe.withTruth == s.imuSamples);  // a trajectory source knows the truth everywhere
   CHECK(probe.lastT == Approx(s.duration));
+  // The navigation started where initialState put it: δlat = 10 / 6.4e6 rad north, times the
+  // WGS-84 meridian radius at 45° plus the height, M + h = 6 367 581.8 m (closed form
+  // a(1 − e²)/(1 − e² sin²φ)^1.5): 9.9493 m; 1 mm allows for the printed digits.
+  REQUIRE(rows.size() > 1);
+  CHECK(rows.front().pos_n.x() == Approx(9.9493).margin(1e-3));
 }
