@@ -24,7 +24,6 @@
 
 namespace sinsim::errormodels {
 
-enum class Sensor { gyro = 0, accel = 1 };
 /// Scope of an effect: one axis of a triad, or the whole triad (3×3 effects).
 enum class Scope { axis, triad };
 /// Order of application inside one interval: linear (scale factor, misalignment, in file order) on
