@@ -45,6 +45,7 @@ struct SourceLocation {
   std::string file;  ///< as the user named it; empty when built in code
   int line = 0;      ///< 1-based
   std::string key;   ///< YAML key path, e.g. "gyro.x[0].a"
+  std::string text;  ///< a scalar's text as written ("-3 s"), for messages; empty otherwise
 };
 
 /// What kind of value a parameter holds (the effect's schema says which kinds a key accepts).
