@@ -162,6 +162,8 @@ ConfigNode ConfigNode::require(const std::string& key) const {
   return c;
 }
 
+const std::string& ConfigNode::fileName() const { return file_->name(); }
+
 void ConfigNode::error(const std::string& message) const {
   file_->addError(line_, path_, message);
 }

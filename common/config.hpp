@@ -41,6 +41,8 @@ class ConfigNode {
   bool isScalar() const { return node_.IsScalar(); }
   const std::string& path() const { return path_; }
   int line() const { return line_; }
+  /// The name of the file this node was read from.
+  const std::string& fileName() const;
   const YAML::Node& yaml() const { return node_; }
 
   /// Child of a map (missing child: exists() is false, line is this node's line).

@@ -7,7 +7,8 @@ namespace sinsim::errormodels {
 
 const std::vector<EffectType>& effectTypes() {
   static const std::vector<EffectType> types = {
-#define SINSIM_EFFECT(name, scope, summary) {#name, Scope::scope, summary, &parseEffect_##name},
+#define SINSIM_EFFECT(name, scope, summary) \
+  {#name, Scope::scope, summary, &paramsOf_##name, &buildEffect_##name},
 #include "errormodels/effects/effects.def"
 #undef SINSIM_EFFECT
   };
@@ -26,99 +27,50 @@ std::string knownEffectTypes() {
   return s;
 }
 
-double positiveQuantity(const ConfigNode& node, const std::string& key, Dimension dim) {
-  ConfigNode c = node.require(key);
-  if (!c.exists()) return NAN;
-  auto v = c.asQuantity(dim);
-  if (!v) return NAN;
-  if (!(std::isfinite(*v) && *v > 0)) {
-    c.error("must be positive, got \"" + c.asString().value_or("") + "\"");
-    return NAN;
+std::unique_ptr<Effect> buildEffect(const EffectSpec& spec, const EffectSite& site,
+                                    SpecProblems& problems) {
+  const EffectType* et = findEffectType(spec.type);
+  if (!et) {
+    problems.add("type", "unknown effect type \"" + spec.type + "\" (known: " +
+                             knownEffectTypes() + ")");
+    return nullptr;
   }
-  return *v;
+  if (!checkParameters(spec, et->params(), site.sensor, problems)) return nullptr;
+  return et->build(spec, site, problems);
 }
 
-double optionalPositive(const ConfigNode& node, const std::string& key, Dimension dim) {
-  return node.has(key) ? positiveQuantity(node, key, dim) : NAN;
+double valueOr(const EffectSpec& spec, const std::string& key, double fallback) {
+  const ParamSpec* p = spec.find(key);
+  return p && p->values.size() == 1 ? p->values[0] : fallback;
 }
 
-std::vector<double> numberList(const ConfigNode& node, const std::string& key) {
-  std::vector<double> out;
-  ConfigNode c = node.require(key);
-  if (!c.exists()) return out;
-  for (const auto& item : c.items()) out.push_back(item.asNumber().value_or(NAN));
-  return out;
+std::vector<double> valuesOf(const EffectSpec& spec, const std::string& key) {
+  const ParamSpec* p = spec.find(key);
+  return p ? p->values : std::vector<double>{};
 }
 
-namespace {
-std::optional<double> entry(const ConfigNode& n, Dimension dim, bool alsoAngle) {
-  auto s = n.asString();
-  if (!s) return std::nullopt;
-  try {
-    Quantity q = parseQuantity(*s);
-    if (q.dim == dim || (alsoAngle && q.dim == Dimension::angle())) return q.si;
-    // A plain 0 needs no unit.
-    if (q.dim == Dimension::none() && q.si == 0.0) return 0.0;
-    std::string want = exampleUnit(dim) + (alsoAngle ? " or an angle (deg, mrad)" : "");
-    n.error("expected a value in " + want + ", got \"" + *s + "\"");
-  } catch (const InputError& e) {
-    n.error(e.what());
-  }
-  return std::nullopt;
-}
-}  // namespace
-
-bool readMatrix3(const ConfigNode& node, Dimension dim, Mat3& out, bool alsoAngle) {
-  std::string form = exactlyOne(node, {"matrix", "diagonal", "value"});
-  if (form.empty()) return false;
-  ConfigNode c = node[form];
-  bool ok = true;
-  out.setZero();
-  if (form == "value") {
-    auto v = entry(c, dim, alsoAngle);
-    if (!v) return false;
-    out = *v * Mat3::Identity();
-    return true;
-  }
-  auto rows = c.items();
-  if (!c.isSequence()) return false;
-  if (rows.size() != 3) {
-    c.error("expected 3 " + std::string(form == "matrix" ? "rows" : "values") + ", got " +
-            std::to_string(rows.size()));
-    return false;
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (form == "diagonal") {
-      auto v = entry(rows[i], dim, alsoAngle);
-      ok = ok && v.has_value();
-      if (v) out(i, i) = *v;
-      continue;
-    }
-    auto cols = rows[i].items();
-    if (cols.size() != 3) {
-      rows[i].error("expected a row of 3 values");
-      ok = false;
-      continue;
-    }
-    for (int j = 0; j < 3; ++j) {
-      auto v = entry(cols[j], dim, alsoAngle);
-      ok = ok && v.has_value();
-      if (v) out(i, j) = *v;
-    }
-  }
-  return ok;
+Mat3 matrix3Of(const EffectSpec& spec) {
+  Mat3 M = Mat3::Zero();
+  if (const ParamSpec* p = spec.find("value")) M = p->values[0] * Mat3::Identity();
+  if (const ParamSpec* p = spec.find("diagonal"))
+    for (int i = 0; i < 3; ++i) M(i, i) = p->values[std::size_t(i)];
+  if (const ParamSpec* p = spec.find("matrix"))
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) M(i, j) = p->values[std::size_t(3 * i + j)];
+  return M;
 }
 
-std::string exactlyOne(const ConfigNode& node, const std::vector<std::string>& keys) {
-  std::vector<std::string> present;
-  for (const auto& k : keys)
-    if (node.has(k)) present.push_back(k);
-  if (present.size() == 1) return present[0];
-  std::string list;
-  for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
-  node.error(present.empty() ? "missing parameter: give one of " + list
-                             : "give only one of " + list);
-  return "";
+std::vector<ParamSchema> matrixParams(DimRule entry, bool alsoAngle) {
+  std::vector<ParamSchema> p = {
+      param("matrix", ParamKind::matrix, entry).oneOf(1).zeroWithoutUnit()
+          .doc("the full 3x3 matrix, row by row"),
+      param("diagonal", ParamKind::list, entry).oneOf(1).items(3).zeroWithoutUnit()
+          .doc("a diagonal matrix: [xx, yy, zz]"),
+      param("value", ParamKind::quantity, entry).oneOf(1).zeroWithoutUnit()
+          .doc("the same value on the diagonal (value * I)")};
+  if (alsoAngle)
+    for (auto& q : p) q.orDim(fixed(Dimension::angle()));
+  return p;
 }
 
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx) {

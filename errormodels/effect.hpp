@@ -1,12 +1,17 @@
 // The plug-in interface of the sensor error effects and their registry, keyed by the YAML `type:`.
 //
-// An effect is parsed once into an immutable Effect (shared by every run of a batch) and turned into
-// a stateful EffectState per run. Every state works on one sensor triad's increment vector u for one
+// An effect is built once from its EffectSpec (SI parameters, model_spec.hpp) into an immutable
+// Effect (shared by every run of a batch) and turned into a stateful EffectState per run. Every state works on one sensor triad's increment vector u for one
 // IMU interval (t0, t1]: u is dtheta_b [rad] for the gyro, dv_b [m/s] for the accelerometer.
 //
 // Adding an effect: write errormodels/effects/<name>.cpp defining
-//     std::unique_ptr<Effect> parseEffect_<name>(const ConfigNode& node, const EffectSite& site);
+//     const std::vector<ParamSchema>& paramsOf_<name>();   // its parameters (effect_schema.hpp)
+//     std::unique_ptr<Effect> buildEffect_<name>(const EffectSpec& spec, const EffectSite& site,
+//                                                SpecProblems& problems);
 // and add one line SINSIM_EFFECT(<name>, axis|triad, "summary") to errormodels/effects/effects.def.
+// buildEffect_ is called only with parameters that passed checkParameters (present, of the right
+// kind, dimension and bound); it checks the rules that tie them together (a stable AR polynomial,
+// a zero diagonal), records what is wrong in `problems` and returns nullptr, or builds the effect.
 #pragma once
 
 #include <cmath>
@@ -15,16 +20,15 @@
 #include <string>
 #include <vector>
 
-#include "common/config.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "errormodels/effect_schema.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/random.hpp"
 #include "common/types.hpp"
 
 namespace sinsim::errormodels {
 
-enum class Sensor { gyro = 0, accel = 1 };
 /// Scope of an effect: one axis of a triad, or the whole triad (3×3 effects).
 enum class Scope { axis, triad };
 /// Order of application inside one interval: linear (scale factor, misalignment, in file order) on
@@ -92,7 +96,7 @@ struct InstanceContext {
   }
 };
 
-/// A parsed effect (immutable).
+/// A built effect (immutable).
 class Effect {
  public:
   virtual ~Effect() = default;
@@ -102,13 +106,16 @@ class Effect {
   virtual std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const = 0;
 };
 
-using EffectParser = std::unique_ptr<Effect> (*)(const ConfigNode& node, const EffectSite& site);
+using EffectParams = const std::vector<ParamSchema>& (*)();
+using EffectBuilder = std::unique_ptr<Effect> (*)(const EffectSpec& spec, const EffectSite& site,
+                                                  SpecProblems& problems);
 
 struct EffectType {
   const char* name;
   Scope scope;
   const char* summary;
-  EffectParser parse;
+  EffectParams params;
+  EffectBuilder build;
 };
 
 /// Every registered effect type, in registration order (effects/effects.def).
@@ -118,26 +125,31 @@ const EffectType* findEffectType(const std::string& name);
 /// "ar, bias, ..." for messages.
 std::string knownEffectTypes();
 
-// ---- helpers for effect parsers (record diagnostics on the node, return NaN/empty on failure) --
+/// Checks `spec` against its type's schema and builds it; nullptr (problems recorded) when the
+/// type is unknown or a parameter is refused.
+std::unique_ptr<Effect> buildEffect(const EffectSpec& spec, const EffectSite& site,
+                                    SpecProblems& problems);
 
-/// A required strictly positive quantity of the given dimension.
-double positiveQuantity(const ConfigNode& node, const std::string& key, Dimension dim);
-/// An optional strictly positive quantity; NaN when absent.
-double optionalPositive(const ConfigNode& node, const std::string& key, Dimension dim);
-/// A list of numbers (plain, dimensionless).
-std::vector<double> numberList(const ConfigNode& node, const std::string& key);
-/// A 3×3 matrix given as `matrix: [[..],[..],[..]]`, `diagonal: [a, b, c]` or `value: a` (a·I);
-/// entries of dimension dim (or, when alsoAngle, an angle, read as a small angle in rad).
-/// Exactly one form must be present. Returns false (and records why) on failure.
-bool readMatrix3(const ConfigNode& node, Dimension dim, Mat3& out, bool alsoAngle = false);
-/// Records "give exactly one of a, b" unless exactly one is present; returns the present one.
-std::string exactlyOne(const ConfigNode& node, const std::vector<std::string>& keys);
+// ---- helpers for effect builders --------------------------------------------------------------
+
+/// The SI value of quantity `key`, or `fallback` when the spec does not have it.
+double valueOr(const EffectSpec& spec, const std::string& key, double fallback);
+/// The values of list `key` (empty when absent).
+std::vector<double> valuesOf(const EffectSpec& spec, const std::string& key);
+/// The 3×3 matrix of a triad effect given as `matrix` (row-major), `diagonal` (3 values) or
+/// `value` (a·I); zero when none is present.
+Mat3 matrix3Of(const EffectSpec& spec);
+/// The three parameters of a triad effect's matrix, entries of dimension `entry` (alsoAngle: a
+/// small angle is accepted too); exactly one of them must be given.
+std::vector<ParamSchema> matrixParams(DimRule entry, bool alsoAngle);
 /// Refuses a process rate [Hz] slower than the IMU (throws InputError naming the effect).
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx);
 
-// Registration: one parse function per effect file.
-#define SINSIM_EFFECT(name, scope, summary) \
-  std::unique_ptr<Effect> parseEffect_##name(const ConfigNode& node, const EffectSite& site);
+// Registration: one parameter list and one builder per effect file.
+#define SINSIM_EFFECT(name, scope, summary)                                                   \
+  const std::vector<ParamSchema>& paramsOf_##name();                                          \
+  std::unique_ptr<Effect> buildEffect_##name(const EffectSpec& spec, const EffectSite& site, \
+                                             SpecProblems& problems);
 #include "errormodels/effects/effects.def"
 #undef SINSIM_EFFECT
 

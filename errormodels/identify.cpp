@@ -1,5 +1,7 @@
 #include "errormodels/identify.hpp"
 
+#include "errormodels/model_io.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -335,16 +337,16 @@ fit::ModelProvenance Identification::provenance() const {
   return p;
 }
 
-std::string Identification::modelYaml() const {
+ErrorModelSpec Identification::modelSpec() const {
   std::vector<fit::AxisFitResult> entries;
   for (const auto& a : axes) entries.push_back(a.written);
-  return fit::modelYaml(entries, provenance());
+  return fit::modelSpec(entries, provenance());
 }
 
+std::string Identification::modelYaml() const { return errorModelYaml(modelSpec()); }
+
 void Identification::writeModel(const std::string& path) const {
-  std::vector<fit::AxisFitResult> entries;
-  for (const auto& a : axes) entries.push_back(a.written);
-  fit::writeModelFile(path, entries, provenance());
+  writeErrorModel(path, modelSpec());
 }
 
 namespace {

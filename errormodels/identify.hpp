@@ -129,6 +129,10 @@ struct Identification {
   const AxisIdentification& axis(const std::string& channel) const;  ///< InputError if absent
   std::string method() const;  ///< one line: kind, denoise, criterion/order
   fit::ModelProvenance provenance() const;
+  /// The written model as a value: what the diagnosis and the simulator take
+  /// (ImuErrorModel::fromSpec), with the fit's provenance and uncertainties.
+  ErrorModelSpec modelSpec() const;
+  /// Its text (the one model writer, errormodels/model_io.hpp).
   std::string modelYaml() const;
   /// Writes modelYaml() via a temporary file renamed into place (never half-written).
   void writeModel(const std::string& path) const;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "errormodels/effect.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels {
 
@@ -17,53 +18,50 @@ struct ImuErrorModel::Impl {
 
 namespace {
 
-const char* const kSensorNames[2] = {"gyro", "accel"};
 const char* const kAxisNames[3] = {"x", "y", "z"};
 // List identities, part of every stream id (EffectSite::stream): never renumber.
 constexpr unsigned kListAll = 0, kListAxis = 1, kListTriad = 2;
 
-void parseList(const ConfigNode& list, Sensor sensor, unsigned listId, int axis,
-               std::vector<ImuErrorModel::Impl::Entry>& out) {
-  if (!list.exists()) return;
-  const auto items = list.items();
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const ConfigNode& item = items[i];
-    if (!item.isMap()) {
-      item.error("expected an effect, e.g. {type: white, density: 0.2 deg/sqrt(h)}");
-      continue;
-    }
-    std::string type = item.string("type");
-    if (type.empty()) continue;
-    const EffectType* et = findEffectType(type);
-    if (!et) {
-      item["type"].error("unknown effect type \"" + type + "\" (known: " + knownEffectTypes() + ")");
-      continue;
-    }
-    const bool triadList = listId == kListTriad;
-    if (et->scope == Scope::triad && !triadList) {
-      item["type"].error(type + " acts on the whole triad: put it under " +
-                         kSensorNames[int(sensor)] + ".triad");
-      continue;
-    }
-    if (et->scope == Scope::axis && triadList) {
-      item["type"].error(type + " acts on one axis: put it under " + kSensorNames[int(sensor)] +
-                         ".x, .y, .z or .all");
-      continue;
-    }
+unsigned listId(EffectList l) {
+  return l == EffectList::triad ? kListTriad : l == EffectList::all ? kListAll : kListAxis;
+}
+
+// Builds the enabled effects of one list; problems are turned into diagnostics located by the
+// spec's source locations (file, line, key path) when it was read from a file.
+void buildList(const ErrorModelSpec& spec, const std::string& source, Sensor sensor, EffectList list,
+               std::vector<ImuErrorModel::Impl::Entry>& out, std::vector<Diagnostic>& problems) {
+  const auto& effects = spec.sensor(sensor).list(list);
+  const std::string listPath = std::string(sensorName(sensor)) + "." + listName(list);
+  for (std::size_t i = 0; i < effects.size(); ++i) {
+    const EffectSpec& e = effects[i];
+    const std::string path = listPath + "[" + std::to_string(i) + "]";
     EffectSite site;
     site.sensor = sensor;
-    site.listId = listId;
+    site.listId = listId(list);
     site.index = int(i);
-    site.axis = triadList ? -1 : (listId == kListAll ? 0 : axis);
-    site.name = item.path() + "." + type;
-    bool enabled = item.boolean("enabled", true);
-    std::shared_ptr<const Effect> effect = et->parse(item, site);
-    if (!effect || !enabled) continue;
-    if (listId == kListAll) {
+    site.axis = list == EffectList::triad ? -1 : list == EffectList::all ? 0 : int(list) - 2;
+    site.name = path + "." + e.type;
+    SpecProblems found;
+    const EffectType* et = findEffectType(e.type);
+    if (et && (et->scope == Scope::triad) != (list == EffectList::triad))
+      found.add("type", e.type + (et->scope == Scope::triad ? " acts on the whole triad: put it under "
+                                                            : " acts on one axis: put it under ") +
+                            sensorName(sensor) +
+                            (et->scope == Scope::triad ? ".triad" : ".x, .y, .z or .all"));
+    std::shared_ptr<const Effect> effect;
+    if (found.empty()) effect = buildEffect(e, site, found);
+    for (const auto& [key, message] : found.items) {
+      const ParamSpec* p = e.find(key.substr(0, key.find('[')));
+      const SourceLocation& at = p && p->where.line > 0 ? p->where : e.where;
+      problems.push_back({e.where.file.empty() ? source : e.where.file, at.line,
+                          key.empty() ? path : path + "." + key, message});
+    }
+    if (!effect || !e.enabled) continue;
+    if (list == EffectList::all) {
       for (int a = 0; a < 3; ++a) {
         EffectSite s = site;
         s.axis = a;
-        s.name = item.path() + "." + type + "(" + kAxisNames[a] + ")";
+        s.name = path + "." + e.type + "(" + kAxisNames[a] + ")";
         out.push_back({s, effect});
       }
     } else {
@@ -97,51 +95,40 @@ class Corruptor final : public ImuCorruptor {
 
 ImuErrorModel ImuErrorModel::none() { return ImuErrorModel(); }
 
-ImuErrorModel ImuErrorModel::load(const std::string& path) {
-  ConfigFile file = ConfigFile::load(path);
-  ImuErrorModel m = parse(file.root());
-  file.throwIfErrors();
-  m.source_ = path;
+ImuErrorModel ImuErrorModel::fromSpec(const ErrorModelSpec& spec, const std::string& source) {
+  auto impl = std::make_shared<Impl>();
+  std::vector<Diagnostic> problems;
+  for (Sensor sensor : {Sensor::gyro, Sensor::accel})
+    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y,
+                         EffectList::z})
+      buildList(spec, source, sensor, l, impl->entries, problems);
+  if (!problems.empty()) throw ConfigError(problems);
+  ImuErrorModel m;
+  m.impl_ = impl;
+  m.source_ = source;
   return m;
+}
+
+ImuErrorModel ImuErrorModel::load(const std::string& path) {
+  return fromSpec(loadErrorModel(path), path);
 }
 
 ImuErrorModel ImuErrorModel::fromString(const std::string& text, const std::string& name) {
-  ConfigFile file = ConfigFile::fromString(text, name);
-  ImuErrorModel m = parse(file.root());
-  file.throwIfErrors();
-  m.source_ = name;
-  return m;
+  return fromSpec(errorModelFromString(text, name), name);
 }
 
 ImuErrorModel ImuErrorModel::parse(const ConfigNode& node) {
-  auto impl = std::make_shared<Impl>();
-  ImuErrorModel m;
-  m.source_ = "inline";
-  if (!node.exists()) {
-    m.impl_ = impl;
-    return m;
+  // The reader records every problem in the node's file (the caller throws); a model is built
+  // only from a spec that was read without one.
+  ErrorModelSpec spec = readErrorModel(node);
+  try {
+    return fromSpec(spec, "inline");
+  } catch (const ConfigError&) {
+    ImuErrorModel m;
+    m.source_ = "inline";
+    m.impl_ = std::make_shared<Impl>();
+    return m;  // the same problems are already in the file's diagnostics
   }
-  if (!node.isMap()) {
-    node.error("expected an error model: a map with keys gyro and/or accel");
-    m.impl_ = impl;
-    return m;
-  }
-  node.allowKeys({"description", "gyro", "accel"});
-  for (int s = 0; s < 2; ++s) {
-    ConfigNode sn = node[kSensorNames[s]];
-    if (!sn.exists()) continue;
-    if (!sn.isMap()) {
-      sn.error("expected a map with keys triad, all, x, y, z (each a list of effects)");
-      continue;
-    }
-    sn.allowKeys({"triad", "all", "x", "y", "z"});
-    Sensor sensor = Sensor(s);
-    parseList(sn["triad"], sensor, kListTriad, -1, impl->entries);
-    parseList(sn["all"], sensor, kListAll, 0, impl->entries);
-    for (int a = 0; a < 3; ++a) parseList(sn[kAxisNames[a]], sensor, kListAxis, a, impl->entries);
-  }
-  m.impl_ = impl;
-  return m;
 }
 
 bool ImuErrorModel::empty() const { return !impl_ || impl_->entries.empty(); }

@@ -16,6 +16,7 @@
 
 #include "common/config.hpp"
 #include "common/types.hpp"
+#include "errormodels/model_spec.hpp"
 
 namespace sinsim::errormodels {
 
@@ -40,6 +41,10 @@ class ImuErrorModel {
  public:
   /// A perfect IMU.
   static ImuErrorModel none();
+  /// Builds the effects of a spec (enabled ones only). `source` names the model in reports and
+  /// messages. Throws ConfigError when an effect refuses its parameters (e.g. an unstable AR
+  /// polynomial), naming file, line and key when the spec was read from a file.
+  static ImuErrorModel fromSpec(const ErrorModelSpec& spec, const std::string& source);
   /// Reads a model file; throws ConfigError listing every problem with file, line, key path.
   static ImuErrorModel load(const std::string& path);
   /// Reads a model from a node of an already opened file (a scenario's inline `errors:` block);

@@ -116,47 +116,51 @@ class Ar final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_ar(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "a", "sigma", "output_sigma", "rate"});
-  std::vector<double> a = numberList(node, "a");
-  std::string form = exactlyOne(node, {"sigma", "output_sigma"});
-  double sigma = form.empty() ? NAN : positiveQuantity(node, form, site.signal());
-  double rate = positiveQuantity(node, "rate", Dimension::frequency());
-  bool ok = std::isfinite(sigma) && std::isfinite(rate);
-  if (node.has("a")) {
-    ConfigNode an = node["a"];
-    bool finite = true;
-    for (double v : a) finite = finite && std::isfinite(v);
-    if (a.empty() || int(a.size()) > kMaxOrder) {
-      an.error("expected 1 to " + std::to_string(kMaxOrder) + " coefficients a1..ap, got " +
-               std::to_string(a.size()));
-      ok = false;
-    } else if (!finite) {
-      ok = false;  // the item's own diagnostic says why
-    } else {
-      auto poles = ar::poles(a);
-      std::complex<double> worst = 0;
-      for (const auto& z : poles)
-        if (std::abs(z) > std::abs(worst)) worst = z;
-      // Strictly inside the unit circle, with a margin for the rounding of printed coefficients:
-      // a pole at |z| > 1 - 1e-9 has a correlation time over 1e9 samples — not a stationary model.
-      if (!(std::abs(worst) < 1.0 - 1e-9)) {
-        std::ostringstream s;
-        s.precision(6);
-        s << "unstable AR polynomial: largest pole magnitude " << std::abs(worst) << " (pole "
-          << worst.real() << (worst.imag() < 0 ? " - " : " + ") << std::abs(worst.imag())
-          << "i); every pole of 1/A(z) must lie inside the unit circle (|z| < 1). Check the sign "
-             "convention: A(z) = 1 + a1 z^-1 + ... + ap z^-p, as MATLAB arburg returns it";
-        an.error(s.str());
-        ok = false;
-      }
-    }
-  } else {
-    ok = false;
+const std::vector<ParamSchema>& paramsOf_ar() {
+  static const std::vector<ParamSchema> p = {
+      param("a", ParamKind::list, fixed(Dimension::none())).printed(10)
+          .doc("a1..ap, arburg's polynomial without its leading 1 (1 to 64 coefficients)"),
+      param("sigma", ParamKind::quantity, signal()).oneOf(1).positive()
+          .doc("driving-noise standard deviation sigma_e (sqrt of arburg's variance e)"),
+      param("output_sigma", ParamKind::quantity, signal()).oneOf(1).positive()
+          .doc("or the stationary standard deviation of the output"),
+      param("rate", ParamKind::quantity, fixed(Dimension::frequency())).positive().printed(10)
+          .doc("the sample rate the coefficients hold at")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_ar(const EffectSpec& spec, const EffectSite&,
+                                       SpecProblems& problems) {
+  std::vector<double> a = valuesOf(spec, "a");
+  if (a.empty() || int(a.size()) > kMaxOrder) {
+    problems.add("a", "expected 1 to " + std::to_string(kMaxOrder) + " coefficients a1..ap, got " +
+                          std::to_string(a.size()));
+    return nullptr;
   }
-  if (!ok) return nullptr;
-  if (form == "output_sigma") sigma /= std::sqrt(ar::varianceGain(a));
-  return std::make_unique<Ar>(std::move(a), sigma, rate);
+  for (double v : a)
+    if (!std::isfinite(v)) {
+      problems.add("a", "expected finite coefficients");
+      return nullptr;
+    }
+  auto poles = ar::poles(a);
+  std::complex<double> worst = 0;
+  for (const auto& z : poles)
+    if (std::abs(z) > std::abs(worst)) worst = z;
+  // Strictly inside the unit circle, with a margin for the rounding of printed coefficients:
+  // a pole at |z| > 1 - 1e-9 has a correlation time over 1e9 samples — not a stationary model.
+  if (!(std::abs(worst) < 1.0 - 1e-9)) {
+    std::ostringstream s;
+    s.precision(6);
+    s << "unstable AR polynomial: largest pole magnitude " << std::abs(worst) << " (pole "
+      << worst.real() << (worst.imag() < 0 ? " - " : " + ") << std::abs(worst.imag())
+      << "i); every pole of 1/A(z) must lie inside the unit circle (|z| < 1). Check the sign "
+         "convention: A(z) = 1 + a1 z^-1 + ... + ap z^-p, as MATLAB arburg returns it";
+    problems.add("a", s.str());
+    return nullptr;
+  }
+  double sigma = valueOr(spec, "sigma", NAN);
+  if (spec.has("output_sigma")) sigma = valueOr(spec, "output_sigma", NAN) / std::sqrt(ar::varianceGain(a));
+  return std::make_unique<Ar>(std::move(a), sigma, valueOr(spec, "rate", NAN));
 }
 
 }  // namespace sinsim::errormodels

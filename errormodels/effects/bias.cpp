@@ -30,15 +30,22 @@ class Bias final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_bias(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "value", "sigma"});
-  if (!node.has("value") && !node.has("sigma"))
-    node.error("missing parameter: give value and/or sigma (e.g. value: 10 " + site.signalUnit() +
-               ")");
-  double value = node.quantity("value", site.signal(), 0.0);
-  double sigma = node.quantity("sigma", site.signal(), 0.0);
-  if (!(sigma >= 0)) node["sigma"].error("must be zero or positive");
-  return std::make_unique<Bias>(value, sigma);
+const std::vector<ParamSchema>& paramsOf_bias() {
+  static const std::vector<ParamSchema> p = {
+      param("value", ParamKind::quantity, signal()).optional("0").doc("fixed bias"),
+      param("sigma", ParamKind::quantity, signal()).optional("0").nonNegative()
+          .doc("standard deviation of the turn-on bias, drawn once per run")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_bias(const EffectSpec& spec, const EffectSite& site,
+                                         SpecProblems& problems) {
+  if (!spec.has("value") && !spec.has("sigma")) {
+    problems.add("", "missing parameter: give value and/or sigma (e.g. value: 10 " +
+                         site.signalUnit() + ")");
+    return nullptr;
+  }
+  return std::make_unique<Bias>(valueOr(spec, "value", 0.0), valueOr(spec, "sigma", 0.0));
 }
 
 }  // namespace sinsim::errormodels

@@ -63,29 +63,31 @@ class BiasInstability final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_bias_instability(const ConfigNode& node,
-                                                     const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "B", "floor", "tau_range"});
-  std::string form = exactlyOne(node, {"B", "floor"});
-  double B = form.empty() ? NAN : positiveQuantity(node, form, site.signal());
-  if (form == "floor") B /= std::sqrt(2.0 * std::log(2.0) / M_PI);
-  ConfigNode range = node.require("tau_range");
-  double lo = NAN, hi = NAN;
-  if (range.exists()) {
-    auto items = range.items();
-    if (items.size() != 2) {
-      range.error("expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]");
-    } else {
-      lo = items[0].asQuantity(Dimension::time()).value_or(NAN);
-      hi = items[1].asQuantity(Dimension::time()).value_or(NAN);
-      if (!(lo > 0 && hi > lo)) {
-        range.error("expected 0 < shortest < longest");
-        lo = hi = NAN;
-      }
-    }
+const std::vector<ParamSchema>& paramsOf_bias_instability() {
+  static const std::vector<ParamSchema> p = {
+      param("B", ParamKind::quantity, signal()).oneOf(1).positive()
+          .doc("bias-instability coefficient B (Allan deviation floor 0.664 B)"),
+      param("floor", ParamKind::quantity, signal()).oneOf(1).positive()
+          .doc("or the Allan-deviation floor itself"),
+      param("tau_range", ParamKind::list, fixed(Dimension::time())).printed(6)
+          .doc("[shortest, longest] averaging time over which the floor holds")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_bias_instability(const EffectSpec& spec, const EffectSite&,
+                                                     SpecProblems& problems) {
+  double B = spec.has("B") ? valueOr(spec, "B", NAN)
+                           : valueOr(spec, "floor", NAN) / std::sqrt(2.0 * std::log(2.0) / M_PI);
+  const std::vector<double> range = valuesOf(spec, "tau_range");
+  if (range.size() != 2) {
+    problems.add("tau_range", "expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]");
+    return nullptr;
   }
-  if (!(std::isfinite(B) && std::isfinite(lo) && std::isfinite(hi))) return nullptr;
-  return std::make_unique<BiasInstability>(B, lo, hi);
+  if (!(range[0] > 0 && range[1] > range[0])) {
+    problems.add("tau_range", "expected 0 < shortest < longest");
+    return nullptr;
+  }
+  return std::make_unique<BiasInstability>(B, range[0], range[1]);
 }
 
 }  // namespace sinsim::errormodels

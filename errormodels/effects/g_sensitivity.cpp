@@ -29,15 +29,19 @@ class GSensitivity final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_g_sensitivity(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "value", "diagonal", "matrix"});
+const std::vector<ParamSchema>& paramsOf_g_sensitivity() {
+  static const std::vector<ParamSchema> p =
+      matrixParams(fixed(Dimension::angularRate() / Dimension::acceleration()), false);
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_g_sensitivity(const EffectSpec& spec, const EffectSite& site,
+                                                  SpecProblems& problems) {
   if (site.sensor != Sensor::gyro) {
-    node["type"].error("g_sensitivity is a gyro effect (gyro bias per specific force)");
+    problems.add("type", "g_sensitivity is a gyro effect (gyro bias per specific force)");
     return nullptr;
   }
-  Mat3 G;
-  if (!readMatrix3(node, Dimension::angularRate() / Dimension::acceleration(), G)) return nullptr;
-  return std::make_unique<GSensitivity>(G);
+  return std::make_unique<GSensitivity>(matrix3Of(spec));
 }
 
 }  // namespace sinsim::errormodels

@@ -76,12 +76,20 @@ class GaussMarkov final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_gauss_markov(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "sigma", "tau", "rate"});
-  double sigma = positiveQuantity(node, "sigma", site.signal());
-  double tau = positiveQuantity(node, "tau", Dimension::time());
-  double rate = optionalPositive(node, "rate", Dimension::frequency());
-  return std::make_unique<GaussMarkov>(sigma, tau, rate);
+const std::vector<ParamSchema>& paramsOf_gauss_markov() {
+  static const std::vector<ParamSchema> p = {
+      param("sigma", ParamKind::quantity, signal()).positive().doc("stationary standard deviation"),
+      param("tau", ParamKind::quantity, fixed(Dimension::time())).positive().printed(7)
+          .doc("correlation time"),
+      param("rate", ParamKind::quantity, fixed(Dimension::frequency())).optional().positive()
+          .doc("generate as a discrete process at this rate (default: exact continuous process)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_gauss_markov(const EffectSpec& spec, const EffectSite&,
+                                                 SpecProblems&) {
+  return std::make_unique<GaussMarkov>(valueOr(spec, "sigma", NAN), valueOr(spec, "tau", NAN),
+                                       valueOr(spec, "rate", NAN));
 }
 
 }  // namespace sinsim::errormodels

@@ -30,13 +30,19 @@ class Misalignment final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_misalignment(const ConfigNode& node, const EffectSite&) {
-  node.allowKeys({"type", "enabled", "matrix"});
-  Mat3 M;
-  if (!node.require("matrix").exists()) return nullptr;
-  if (!readMatrix3(node, Dimension::none(), M, /*alsoAngle=*/true)) return nullptr;
+const std::vector<ParamSchema>& paramsOf_misalignment() {
+  static const std::vector<ParamSchema> p = {
+      param("matrix", ParamKind::matrix, fixed(Dimension::none())).orDim(fixed(Dimension::angle()))
+          .zeroWithoutUnit()
+          .doc("M(i, j): sensitivity of axis i to the true signal along j; zero diagonal")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_misalignment(const EffectSpec& spec, const EffectSite&,
+                                                 SpecProblems& problems) {
+  Mat3 M = matrix3Of(spec);
   if (M.diagonal().cwiseAbs().maxCoeff() != 0.0) {
-    node["matrix"].error("the diagonal must be 0 (scale errors belong to scale_factor)");
+    problems.add("matrix", "the diagonal must be 0 (scale errors belong to scale_factor)");
     return nullptr;
   }
   return std::make_unique<Misalignment>(M);

@@ -54,12 +54,18 @@ class Outliers final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_outliers(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "rate", "amplitude"});
-  const double rate = positiveQuantity(node, "rate", Dimension::frequency());
-  const double a = positiveQuantity(node, "amplitude", site.signal());
-  if (!(std::isfinite(rate) && std::isfinite(a))) return nullptr;
-  return std::make_unique<Outliers>(rate, a);
+const std::vector<ParamSchema>& paramsOf_outliers() {
+  static const std::vector<ParamSchema> p = {
+      param("rate", ParamKind::quantity, fixed(Dimension::frequency())).positive().printed(6)
+          .doc("mean number of outliers per second"),
+      param("amplitude", ParamKind::quantity, signal()).positive()
+          .doc("size of each outlier (random sign)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_outliers(const EffectSpec& spec, const EffectSite&,
+                                             SpecProblems&) {
+  return std::make_unique<Outliers>(valueOr(spec, "rate", NAN), valueOr(spec, "amplitude", NAN));
 }
 
 }  // namespace sinsim::errormodels

@@ -48,33 +48,23 @@ class Quantization final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_quantization(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "lsb", "carry"});
-  ConfigNode c = node.require("lsb");
-  if (!c.exists()) return nullptr;
-  auto text = c.asString();
-  if (!text) return nullptr;
-  const Dimension incrementDim = site.signal() * Dimension::time();
-  Quantity q;
-  try {
-    q = parseQuantity(*text);
-  } catch (const InputError& e) {
-    c.error(e.what());
-    return nullptr;
-  }
-  const bool isRate = q.dim == site.signal();
-  if (!isRate && q.dim != incrementDim) {
-    c.error("expected an LSB of the rate output (" + exampleUnit(site.signal()) +
-            ") or of the increment output (" + exampleUnit(incrementDim) + "), got \"" + *text +
-            "\"");
-    return nullptr;
-  }
-  if (!(q.si > 0)) {
-    c.error("must be positive");
-    return nullptr;
-  }
-  bool carry = node.boolean("carry", !isRate);
-  return std::make_unique<Quantization>(q.si, isRate, carry);
+const std::vector<ParamSchema>& paramsOf_quantization() {
+  static const std::vector<ParamSchema> p = {
+      param("lsb", ParamKind::quantity, signal()).orDim(signal(Dimension::time())).positive()
+          .expect("an LSB of the rate output ({0}) or of the increment output ({1})")
+          .doc("output LSB: of the rate output (deg/s, mg) or of the increment output (deg, m/s)"),
+      param("carry", ParamKind::flag, fixed(Dimension::none()))
+          .optional("yes for an increment LSB, no for a rate LSB")
+          .doc("carry the rounding remainder to the next sample")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_quantization(const EffectSpec& spec, const EffectSite& site,
+                                                 SpecProblems&) {
+  const ParamSpec& lsb = *spec.find("lsb");
+  const bool isRate = lsb.dims[0] == site.signal();
+  const ParamSpec* carry = spec.find("carry");
+  return std::make_unique<Quantization>(lsb.values[0], isRate, carry ? carry->flag : !isRate);
 }
 
 }  // namespace sinsim::errormodels

@@ -28,11 +28,15 @@ class Ramp final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_ramp(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "slope"});
-  double R = node.quantity("slope", site.signal() / Dimension::time());
-  if (!std::isfinite(R)) return nullptr;
-  return std::make_unique<Ramp>(R);
+const std::vector<ParamSchema>& paramsOf_ramp() {
+  static const std::vector<ParamSchema> p = {
+      param("slope", ParamKind::quantity, signal(Dimension::frequency()))
+          .doc("rate of change of the bias (deg/h^2, m/s^3)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_ramp(const EffectSpec& spec, const EffectSite&, SpecProblems&) {
+  return std::make_unique<Ramp>(valueOr(spec, "slope", NAN));
 }
 
 }  // namespace sinsim::errormodels

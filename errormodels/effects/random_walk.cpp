@@ -59,11 +59,18 @@ class RandomWalk final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_random_walk(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "K", "rate"});
-  double K = positiveQuantity(node, "K", site.signal() / Dimension::time().sqrt());
-  double rate = optionalPositive(node, "rate", Dimension::frequency());
-  return std::make_unique<RandomWalk>(K, rate);
+const std::vector<ParamSchema>& paramsOf_random_walk() {
+  static const std::vector<ParamSchema> p = {
+      param("K", ParamKind::quantity, signal(Dimension::frequency().sqrt())).positive()
+          .doc("rate / acceleration random-walk coefficient K (deg/h/sqrt(h), m/s^2/sqrt(h))"),
+      param("rate", ParamKind::quantity, fixed(Dimension::frequency())).optional().positive()
+          .doc("generate as a discrete process at this rate (default: exact continuous process)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_random_walk(const EffectSpec& spec, const EffectSite&,
+                                                SpecProblems&) {
+  return std::make_unique<RandomWalk>(valueOr(spec, "K", NAN), valueOr(spec, "rate", NAN));
 }
 
 }  // namespace sinsim::errormodels

@@ -30,11 +30,14 @@ class ScaleFactor final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_scale_factor(const ConfigNode& node, const EffectSite&) {
-  node.allowKeys({"type", "enabled", "value", "diagonal", "matrix"});
-  Mat3 S;
-  if (!readMatrix3(node, Dimension::none(), S)) return nullptr;
-  return std::make_unique<ScaleFactor>(S);
+const std::vector<ParamSchema>& paramsOf_scale_factor() {
+  static const std::vector<ParamSchema> p = matrixParams(fixed(Dimension::none()), false);
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_scale_factor(const EffectSpec& spec, const EffectSite&,
+                                                 SpecProblems&) {
+  return std::make_unique<ScaleFactor>(matrix3Of(spec));
 }
 
 }  // namespace sinsim::errormodels

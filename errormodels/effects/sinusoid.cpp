@@ -36,13 +36,20 @@ class Sinusoid final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_sinusoid(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "amplitude", "frequency", "phase"});
-  double A = node.quantity("amplitude", site.signal());
-  double f = positiveQuantity(node, "frequency", Dimension::frequency());
-  double phase = node.quantity("phase", Dimension::angle(), 0.0);
-  if (!(std::isfinite(A) && std::isfinite(f) && std::isfinite(phase))) return nullptr;
-  return std::make_unique<Sinusoid>(A, f, phase);
+const std::vector<ParamSchema>& paramsOf_sinusoid() {
+  static const std::vector<ParamSchema> p = {
+      param("amplitude", ParamKind::quantity, signal()).doc("amplitude"),
+      param("frequency", ParamKind::quantity, fixed(Dimension::frequency())).positive()
+          .doc("frequency"),
+      param("phase", ParamKind::quantity, fixed(Dimension::angle())).optional("0 deg")
+          .doc("phase at t = 0")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_sinusoid(const EffectSpec& spec, const EffectSite&,
+                                             SpecProblems&) {
+  return std::make_unique<Sinusoid>(valueOr(spec, "amplitude", NAN), valueOr(spec, "frequency", NAN),
+                                    valueOr(spec, "phase", 0.0));
 }
 
 }  // namespace sinsim::errormodels

@@ -38,27 +38,23 @@ class Temperature final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_temperature(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "T0", "coefficients"});
-  double T0 = node.quantity("T0", Dimension::temperature());
-  ConfigNode cn = node.require("coefficients");
-  std::vector<double> c;
-  bool ok = std::isfinite(T0);
-  if (cn.exists()) {
-    auto items = cn.items();
-    if (cn.isSequence() && items.empty()) cn.error("expected at least one coefficient");
-    for (std::size_t k = 0; k < items.size(); ++k) {
-      Dimension d = site.signal() / Dimension::temperature().pow(int(k) + 1);
-      auto v = items[k].asQuantity(d);
-      ok = ok && v.has_value();
-      c.push_back(v.value_or(NAN));
-    }
-    ok = ok && !items.empty();
-  } else {
-    ok = false;
-  }
-  if (!ok) return nullptr;
-  return std::make_unique<Temperature>(T0, std::move(c));
+const std::vector<ParamSchema>& paramsOf_temperature() {
+  static DimRule perDegree = [] {
+    DimRule d = signal();
+    d.perItemTemperature = true;
+    return d;
+  }();
+  static const std::vector<ParamSchema> p = {
+      param("T0", ParamKind::quantity, fixed(Dimension::temperature())).printed(8)
+          .doc("reference temperature"),
+      param("coefficients", ParamKind::list, perDegree)
+          .doc("c1, c2, ...: signal/degC, signal/degC^2, ... (the constant term is `bias`)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_temperature(const EffectSpec& spec, const EffectSite&,
+                                                SpecProblems&) {
+  return std::make_unique<Temperature>(valueOr(spec, "T0", NAN), valuesOf(spec, "coefficients"));
 }
 
 }  // namespace sinsim::errormodels

@@ -31,12 +31,17 @@ class Warmup final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_warmup(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "amplitude", "tau"});
-  double A = node.quantity("amplitude", site.signal());
-  double tau = positiveQuantity(node, "tau", Dimension::time());
-  if (!(std::isfinite(A) && std::isfinite(tau))) return nullptr;
-  return std::make_unique<Warmup>(A, tau);
+const std::vector<ParamSchema>& paramsOf_warmup() {
+  static const std::vector<ParamSchema> p = {
+      param("amplitude", ParamKind::quantity, signal()).doc("bias offset at switch-on"),
+      param("tau", ParamKind::quantity, fixed(Dimension::time())).positive().printed(6)
+          .doc("settling time constant")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_warmup(const EffectSpec& spec, const EffectSite&,
+                                           SpecProblems&) {
+  return std::make_unique<Warmup>(valueOr(spec, "amplitude", NAN), valueOr(spec, "tau", NAN));
 }
 
 }  // namespace sinsim::errormodels

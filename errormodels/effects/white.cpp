@@ -55,18 +55,27 @@ class White final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> parseEffect_white(const ConfigNode& node, const EffectSite& site) {
-  node.allowKeys({"type", "enabled", "density", "sigma", "rate"});
-  const Dimension densityDim = site.signal() * Dimension::time().sqrt();
-  exactlyOne(node, {"density", "sigma"});
-  double rate = optionalPositive(node, "rate", Dimension::frequency());
-  double density = NAN;
-  if (node.has("density")) density = positiveQuantity(node, "density", densityDim);
-  if (node.has("sigma")) {
-    double sigma = positiveQuantity(node, "sigma", site.signal());
-    if (!node.has("rate"))
-      node.error("missing key rate: a per-sample sigma needs the sample rate it holds at");
-    density = sigma / std::sqrt(rate);
+const std::vector<ParamSchema>& paramsOf_white() {
+  static const std::vector<ParamSchema> p = {
+      param("density", ParamKind::quantity, signal(Dimension::time().sqrt())).oneOf(1).positive()
+          .doc("noise density N = ARW / VRW (deg/sqrt(h), m/s/sqrt(h))"),
+      param("sigma", ParamKind::quantity, signal()).oneOf(1).positive()
+          .doc("or the per-sample standard deviation at `rate`"),
+      param("rate", ParamKind::quantity, fixed(Dimension::frequency())).optional().positive()
+          .doc("sample rate (required with sigma; with density: generate at this rate)")};
+  return p;
+}
+
+std::unique_ptr<Effect> buildEffect_white(const EffectSpec& spec, const EffectSite&,
+                                          SpecProblems& problems) {
+  const double rate = valueOr(spec, "rate", NAN);
+  double density = valueOr(spec, "density", NAN);
+  if (spec.has("sigma")) {
+    if (!spec.has("rate")) {
+      problems.add("", "missing key rate: a per-sample sigma needs the sample rate it holds at");
+      return nullptr;
+    }
+    density = valueOr(spec, "sigma", NAN) / std::sqrt(rate);
   }
   return std::make_unique<White>(density, rate);
 }

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -41,165 +42,198 @@ std::string num(double v, int digits = 10) {
   return buf;
 }
 
-std::string sensorName(SensorSignal s) { return s == SensorSignal::Gyro ? "gyro" : "accel"; }
-
-void writeAr(std::ostringstream& out, const ArFit& ar, double rate, const Units& u,
-             const std::optional<OrderSelection>& orders, const std::string& what) {
-  if (!(std::isfinite(rate) && rate > 0.0))
-    throw InputError("model writer: " + what + ": the AR rate must be a positive frequency");
-  out << "    # AR(" << ar.order << ") by " << toString(ar.method) << ", N = " << ar.n
-      << " samples at " << num(rate, 7) << " Hz, mean removed " << num(ar.mean, 7)
-      << " (SI). sigma = sqrt(E), E = " << num(ar.drivingVariance, 7) << " +- "
-      << num(ar.drivingVarianceStdError, 2) << " (SI^2)\n";
-  out << "    # 1-sigma of a1..a" << ar.order << " (sigma^2 Gamma^-1 / N):";
-  for (double s : ar.stdError) out << ' ' << num(s, 3);
-  out << "\n    # largest pole " << num(arMaxPoleMagnitude(ar.a), 6) << "\n";
-  if (orders) {
-    out << "    # order criteria: AIC -> " << orders->aicOrder << ", MDL -> " << orders->mdlOrder
-        << ", FPE -> " << orders->fpeOrder;
-    if (orders->paperOrder)
-      out << ", paper's rule -> " << *orders->paperOrder << " (T_c "
-          << num(*orders->correlationTime * 1e3, 4) << " ms)";
-    out << "; selected " << orders->selectedOrder << " by " << toString(orders->selectedBy) << "\n";
-  }
-  out << "    - {type: ar, a: [";
-  for (std::size_t i = 1; i < ar.a.size(); ++i) out << (i > 1 ? ", " : "") << num(ar.a[i], 10);
-  out << "], sigma: " << q(std::sqrt(ar.drivingVariance), u.level) << ", rate: " << num(rate, 10)
-      << " Hz}\n";
+Sensor sensorOf(SensorSignal s) { return s == SensorSignal::Gyro ? Sensor::gyro : Sensor::accel; }
+Dimension signalOf(SensorSignal s) {
+  return s == SensorSignal::Gyro ? Dimension::angularRate() : Dimension::acceleration();
 }
 
-void writeAllanTerm(std::ostringstream& out, const AllanFit& fit, AllanTermKind kind,
-                    const Units& u) {
+// The effects of one list as they are built: comment lines wait for the next effect, and those
+// left at the end are the list's trailing comments.
+struct ListBuilder {
+  std::vector<EffectSpec>& effects;
+  std::vector<std::string>& trailing;
+  std::vector<std::string> pending;
+  std::ostringstream line;
+
+  /// Ends the comment line being written with `<<` on `line`.
+  void endComment() {
+    pending.push_back(line.str());
+    line.str("");
+  }
+  void add(EffectSpec e) {
+    e.comments = std::move(pending);
+    pending.clear();
+    effects.push_back(std::move(e));
+  }
+  void finish() { trailing = std::move(pending); }
+};
+
+ParamSpec withSigma(ParamSpec p, std::vector<double> sigma) {
+  p.sigma = std::move(sigma);
+  return p;
+}
+
+void addAr(ListBuilder& b, const ArFit& ar, double rate, const Units& u, Dimension signal,
+           const std::optional<OrderSelection>& orders, const std::string& what) {
+  if (!(std::isfinite(rate) && rate > 0.0))
+    throw InputError("model writer: " + what + ": the AR rate must be a positive frequency");
+  b.line << "AR(" << ar.order << ") by " << toString(ar.method) << ", N = " << ar.n
+         << " samples at " << num(rate, 7) << " Hz, mean removed " << num(ar.mean, 7)
+         << " (SI). sigma = sqrt(E), E = " << num(ar.drivingVariance, 7) << " +- "
+         << num(ar.drivingVarianceStdError, 2) << " (SI^2)";
+  b.endComment();
+  b.line << "1-sigma of a1..a" << ar.order << " (sigma^2 Gamma^-1 / N):";
+  for (double s : ar.stdError) b.line << ' ' << num(s, 3);
+  b.endComment();
+  b.line << "largest pole " << num(arMaxPoleMagnitude(ar.a), 6);
+  b.endComment();
+  if (orders) {
+    b.line << "order criteria: AIC -> " << orders->aicOrder << ", MDL -> " << orders->mdlOrder
+           << ", FPE -> " << orders->fpeOrder;
+    if (orders->paperOrder)
+      b.line << ", paper's rule -> " << *orders->paperOrder << " (T_c "
+             << num(*orders->correlationTime * 1e3, 4) << " ms)";
+    b.line << "; selected " << orders->selectedOrder << " by " << toString(orders->selectedBy);
+    b.endComment();
+  }
+  (void)u;
+  const std::vector<double> a(ar.a.begin() + 1, ar.a.end());
+  const double sigmaE = std::sqrt(ar.drivingVariance);
+  // d sqrt(E) = dE / (2 sqrt(E)), first order.
+  const double sigmaEStd = sigmaE > 0 ? ar.drivingVarianceStdError / (2 * sigmaE) : NAN;
+  b.add(EffectSpec::make(
+      "ar", {withSigma(ParamSpec::numbers("a", a), ar.stdError),
+             withSigma(ParamSpec::quantity("sigma", sigmaE, signal), {sigmaEStd}),
+             ParamSpec::quantity("rate", rate, Dimension::frequency())}));
+}
+
+void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const Units& u,
+                  Dimension signal) {
   const AllanTerm& t = fit.term(kind);
   if (!t.enabled) return;
   const char* unit = nullptr;
   double scale = 1.0;  // written value = scale * t.value (SI)
+  Dimension dim = signal;
+  const Dimension time = Dimension::time();
   switch (kind) {
-    case AllanTermKind::Quantization: unit = u.increment; scale = std::sqrt(12.0); break;
-    case AllanTermKind::White: unit = u.density; break;
+    case AllanTermKind::Quantization: unit = u.increment; scale = std::sqrt(12.0); dim = signal * time; break;
+    case AllanTermKind::White: unit = u.density; dim = signal * time.sqrt(); break;
     case AllanTermKind::BiasInstability: unit = u.level; break;
-    case AllanTermKind::RandomWalk: unit = u.walk; break;
-    case AllanTermKind::Ramp: unit = u.slope; break;
+    case AllanTermKind::RandomWalk: unit = u.walk; dim = signal / time.sqrt(); break;
+    case AllanTermKind::Ramp: unit = u.slope; dim = signal / time; break;
   }
   if (!t.detected) {
-    out << "    # " << toString(kind) << ": not supported by the data, upper bound "
-        << q(scale * t.upperBound, unit) << (kind == AllanTermKind::Quantization ? " (lsb)" : "")
-        << "\n";
+    b.line << toString(kind) << ": not supported by the data, upper bound "
+           << q(scale * t.upperBound, unit) << (kind == AllanTermKind::Quantization ? " (lsb)" : "");
+    b.endComment();
     return;
   }
-  out << "    # " << toString(kind) << " +- " << q(scale * t.stdError, unit) << " (1 sigma)\n";
+  b.line << toString(kind) << " +- " << q(scale * t.stdError, unit) << " (1 sigma)";
+  b.endComment();
+  auto value = [&](const char* key) {
+    return withSigma(ParamSpec::quantity(key, scale * t.value, dim), {scale * t.stdError});
+  };
   switch (kind) {
-    case AllanTermKind::Quantization:
-      out << "    - {type: quantization, lsb: " << q(scale * t.value, unit) << "}\n";
-      break;
-    case AllanTermKind::White:
-      out << "    - {type: white, density: " << q(t.value, unit) << "}\n";
-      break;
+    case AllanTermKind::Quantization: b.add(EffectSpec::make("quantization", {value("lsb")})); break;
+    case AllanTermKind::White: b.add(EffectSpec::make("white", {value("density")})); break;
     case AllanTermKind::BiasInstability:
-      out << "    - {type: bias_instability, B: " << q(t.value, unit) << ", tau_range: ["
-          << num(fit.tau.front(), 6) << " s, " << num(fit.tau.back(), 6) << " s]}\n";
+      b.add(EffectSpec::make(
+          "bias_instability",
+          {value("B"), ParamSpec::quantities("tau_range", {fit.tau.front(), fit.tau.back()}, time)}));
       break;
-    case AllanTermKind::RandomWalk:
-      out << "    - {type: random_walk, K: " << q(t.value, unit) << "}\n";
-      break;
-    case AllanTermKind::Ramp:
-      out << "    - {type: ramp, slope: " << q(t.value, unit) << "}\n";
-      break;
+    case AllanTermKind::RandomWalk: b.add(EffectSpec::make("random_walk", {value("K")})); break;
+    case AllanTermKind::Ramp: b.add(EffectSpec::make("ramp", {value("slope")})); break;
   }
+}
+
+void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
+  const Units& u = unitsFor(ax.sensor);
+  const Dimension signal = signalOf(ax.sensor);
+  for (const auto& n : ax.notes) b.pending.push_back(n);
+  if (ax.composite) {
+    const auto& c = *ax.composite;
+    b.line << "composite AR + random walk: K from the Allan curve (tau >= "
+           << num(c.allan.tau.front(), 4) << " s), random-walk level removed by an RTS "
+           << "smoother (T_s " << num(c.smootherTimeConstant, 4) << " s vs AR T_c "
+           << num(c.arCorrelationTime * 1e3, 4) << " ms"
+           << (c.separated ? "" : "; NOT well separated") << ")";
+    b.endComment();
+    addAr(b, c.ar.fit, ax.arRate, u, signal, c.ar, what);
+    if (c.randomWalkDetected) {
+      b.line << "random_walk +- " << q(c.randomWalk.stdError, u.walk) << " (1 sigma)";
+      b.endComment();
+      b.add(EffectSpec::make(
+          "random_walk", {withSigma(ParamSpec::quantity("K", c.randomWalk.value,
+                                                        signal / Dimension::time().sqrt()),
+                                    {c.randomWalk.stdError})}));
+    } else {
+      b.line << "random_walk: not detected, upper bound " << q(c.randomWalk.upperBound, u.walk);
+      b.endComment();
+    }
+  }
+  if (ax.ar) addAr(b, *ax.ar, ax.arRate, u, signal, ax.arOrders, what);
+  if (ax.gaussMarkov) {
+    const auto& g = *ax.gaussMarkov;
+    b.line << "first-order GM from the ACF (lags " << g.firstLag << ".." << g.lastLag
+           << "): sigma +- " << q(g.sigmaStdError, u.level) << ", tau +- "
+           << num(g.tauStdError, 4) << " s"
+           << (g.bartlettCovariance ? " (Bartlett)" : " (LS residuals; underestimates)");
+    b.endComment();
+    b.add(EffectSpec::make(
+        "gauss_markov",
+        {withSigma(ParamSpec::quantity("sigma", g.sigma, signal), {g.sigmaStdError}),
+         withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
+  }
+  if (ax.allan) {
+    b.line << "Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
+           << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6) << " s, chi2 "
+           << num(ax.allan->chi2, 4) << " / " << ax.allan->dof << " dof"
+           << (ax.allan->correlated ? ", correlated points (GLS)" : ", independent points");
+    b.endComment();
+    for (std::size_t j = 0; j < kAllanTermCount; ++j)
+      if (ax.allanWrite[j]) addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal);
+  }
+  b.finish();
 }
 
 }  // namespace
 
-std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvenance& p) {
-  std::ostringstream out;
-  out << "# Error model fitted by sinsim (errormodels/fit).\n";
-  if (!p.dataFile.empty()) out << "# data: " << p.dataFile << "\n";
-  if (p.rate > 0.0) out << "# rate: " << num(p.rate, 10) << " Hz\n";
-  if (p.duration > 0.0) out << "# duration: " << num(p.duration, 10) << " s\n";
-  if (!p.method.empty()) out << "# method: " << p.method << "\n";
-  for (const auto& n : p.notes) out << "# " << n << "\n";
+ErrorModelSpec modelSpec(const std::vector<AxisFitResult>& axes, const ModelProvenance& p) {
+  ErrorModelSpec spec;
+  spec.headerComments.push_back("Error model fitted by sinsim (errormodels/fit).");
+  if (!p.dataFile.empty()) spec.headerComments.push_back("data: " + p.dataFile);
+  if (p.rate > 0.0) spec.headerComments.push_back("rate: " + num(p.rate, 10) + " Hz");
+  if (p.duration > 0.0) spec.headerComments.push_back("duration: " + num(p.duration, 10) + " s");
+  if (!p.method.empty()) spec.headerComments.push_back("method: " + p.method);
+  for (const auto& n : p.notes) spec.headerComments.push_back(n);
   std::string desc = p.description.empty() ? "fitted error model" : p.description;
   for (char& c : desc)
     if (c == '\n' || c == '"') c = ' ';
-  out << "description: \"" << desc << "\"\n";
-
-  for (SensorSignal sensor : {SensorSignal::Gyro, SensorSignal::Accel}) {
-    bool any = false;
-    for (const auto& ax : axes) any = any || ax.sensor == sensor;
-    if (!any) continue;
-    out << sensorName(sensor) << ":\n";
-    const Units& u = unitsFor(sensor);
-    std::map<std::string, int> seen;
-    for (const auto& ax : axes) {
-      if (ax.sensor != sensor) continue;
-      if (ax.axis != "x" && ax.axis != "y" && ax.axis != "z" && ax.axis != "all")
-        throw InputError("model writer: axis must be x, y, z or all, got \"" + ax.axis + "\"");
-      const std::string what = sensorName(sensor) + "." + ax.axis;
-      if (seen[ax.axis]++)
-        throw InputError("model writer: " + what + " given twice");
-      out << "  " << ax.axis << ":\n";
-      for (const auto& n : ax.notes) out << "    # " << n << "\n";
-      const std::size_t before = out.str().size();
-      if (ax.composite) {
-        const auto& c = *ax.composite;
-        out << "    # composite AR + random walk: K from the Allan curve (tau >= "
-            << num(c.allan.tau.front(), 4) << " s), random-walk level removed by an RTS "
-            << "smoother (T_s " << num(c.smootherTimeConstant, 4) << " s vs AR T_c "
-            << num(c.arCorrelationTime * 1e3, 4) << " ms"
-            << (c.separated ? "" : "; NOT well separated") << ")\n";
-        writeAr(out, c.ar.fit, ax.arRate, u, c.ar, what);
-        if (c.randomWalkDetected) {
-          out << "    # random_walk +- " << q(c.randomWalk.stdError, u.walk) << " (1 sigma)\n";
-          out << "    - {type: random_walk, K: " << q(c.randomWalk.value, u.walk) << "}\n";
-        } else {
-          out << "    # random_walk: not detected, upper bound "
-              << q(c.randomWalk.upperBound, u.walk) << "\n";
-        }
-      }
-      if (ax.ar) writeAr(out, *ax.ar, ax.arRate, u, ax.arOrders, what);
-      if (ax.gaussMarkov) {
-        const auto& g = *ax.gaussMarkov;
-        out << "    # first-order GM from the ACF (lags " << g.firstLag << ".." << g.lastLag
-            << "): sigma +- " << q(g.sigmaStdError, u.level) << ", tau +- "
-            << num(g.tauStdError, 4) << " s"
-            << (g.bartlettCovariance ? " (Bartlett)" : " (LS residuals; underestimates)") << "\n";
-        out << "    - {type: gauss_markov, sigma: " << q(g.sigma, u.level)
-            << ", tau: " << num(g.tau, 7) << " s}\n";
-      }
-      if (ax.allan) {
-        out << "    # Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
-            << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6)
-            << " s, chi2 " << num(ax.allan->chi2, 4) << " / " << ax.allan->dof << " dof"
-            << (ax.allan->correlated ? ", correlated points (GLS)" : ", independent points")
-            << "\n";
-        for (std::size_t j = 0; j < kAllanTermCount; ++j)
-          if (ax.allanWrite[j]) writeAllanTerm(out, *ax.allan, static_cast<AllanTermKind>(j), u);
-      }
-      if (out.str().find("- {type:", before) == std::string::npos)
-        out << "    []\n";  // an axis without effects stays valid YAML (an empty list)
-    }
+  spec.description = desc;
+  std::map<std::pair<int, std::string>, int> seen;
+  for (const auto& ax : axes) {
+    if (ax.axis != "x" && ax.axis != "y" && ax.axis != "z" && ax.axis != "all")
+      throw InputError("model writer: axis must be x, y, z or all, got \"" + ax.axis + "\"");
+    const Sensor sensor = sensorOf(ax.sensor);
+    const std::string what = std::string(sensorName(sensor)) + "." + ax.axis;
+    if (seen[{int(sensor), ax.axis}]++) throw InputError("model writer: " + what + " given twice");
+    const EffectList list = ax.axis == "all" ? EffectList::all
+                                             : axisList(ax.axis[0] - 'x');
+    SensorSpec& ss = spec.sensor(sensor);
+    ss.keepEmpty[int(list)] = true;
+    ListBuilder b{ss.list(list), ss.trailing[int(list)], {}, {}};
+    addAxis(b, ax, what);
   }
-  return out.str();
+  return spec;
+}
+
+std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvenance& provenance) {
+  return errorModelYaml(modelSpec(axes, provenance));
 }
 
 void writeModelFile(const std::string& path, const std::vector<AxisFitResult>& axes,
                     const ModelProvenance& provenance) {
-  const std::string text = modelYaml(axes, provenance);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error("cannot write model file " + tmp);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw Error("cannot write model file " + tmp);
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot move model file into place: " + path);
-  }
+  writeErrorModel(path, modelSpec(axes, provenance));
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -1,7 +1,7 @@
-// Writes fitted results as an error-model YAML file (the format of the error-model section of the
-// README: per sensor and axis, a list of effects with unit-bearing values), with the fit's
-// provenance and uncertainties as comments. The writer knows the fit results, not the simulator:
-// the file is read back by ImuErrorModel::load like any hand-written model.
+// Turns fitted results into an ErrorModelSpec (per sensor and axis, a list of effects with SI values
+// and their 1-sigma uncertainties), with the fit's provenance and uncertainties as comment lines.
+// The text is written by the one model writer (errormodels/model_io.hpp); the file is read back by
+// ImuErrorModel::load like any hand-written model.
 //
 // What is written, per axis (SI inside, friendly units in the file):
 //   ar               a: [a1..ap], sigma = sqrt(E) (driving-noise STANDARD DEVIATION), rate
@@ -26,6 +26,7 @@
 #include "errormodels/fit/composite_fit.hpp"
 #include "errormodels/fit/gauss_markov_fit.hpp"
 #include "errormodels/fit/order_selection.hpp"
+#include "errormodels/model_spec.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -56,10 +57,14 @@ struct ModelProvenance {
   std::vector<std::string> notes;
 };
 
-/// The YAML text. Throws InputError when an axis entry is unusable (AR without rate, bad axis).
+/// The model as a value. Throws InputError when an axis entry is unusable (AR without rate, bad
+/// axis, an axis given twice).
+ErrorModelSpec modelSpec(const std::vector<AxisFitResult>& axes, const ModelProvenance& provenance);
+
+/// The YAML text (errorModelYaml(modelSpec(...))). Throws InputError when an axis entry is unusable (AR without rate, bad axis).
 std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvenance& provenance);
 
-/// Writes modelYaml(...) to `path` via a temporary file renamed into place, so a failure never
+/// Writes the model to `path` via a temporary file renamed into place, so a failure never
 /// leaves a half-written model. Throws sinsim::Error on I/O failure.
 void writeModelFile(const std::string& path, const std::vector<AxisFitResult>& axes,
                     const ModelProvenance& provenance);

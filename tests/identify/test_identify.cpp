@@ -18,6 +18,7 @@
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
+#include "errormodels/model_io.hpp"
 #include "errormodels/stats/special.hpp"
 #include "identify_test_util.hpp"
 
@@ -217,6 +218,22 @@ TEST_CASE("composite AR(5) + random walk: auto writes AR(5) and K", "[identify][
   CHECK(ax.written.allanWrite[static_cast<std::size_t>(fit::AllanTermKind::RandomWalk)]);
   requireWithin3Sigma(k.value, K, k.stdError, "K");
   const auto m = ImuErrorModel::fromString(id.modelYaml(), "composite.yaml");
+  // The fit's spec is what the file says: the one reader gives back the same effects, their values
+  // to the printed digits (9 significant; 5e-9 relative), and the writer the same text, comments
+  // (the fit's provenance and uncertainties) included.
+  const ErrorModelSpec spec = id.modelSpec();
+  const ErrorModelSpec read = errorModelFromString(id.modelYaml(), "composite.yaml");
+  CHECK(errorModelYaml(read) == id.modelYaml());
+  REQUIRE(read.gyro.x.size() == spec.gyro.x.size());
+  for (std::size_t i = 0; i < spec.gyro.x.size(); ++i) {
+    CHECK(read.gyro.x[i].type == spec.gyro.x[i].type);
+    CHECK(read.gyro.x[i].comments == spec.gyro.x[i].comments);
+    for (const auto& p : spec.gyro.x[i].parameters)
+      for (std::size_t k = 0; k < p.values.size(); ++k)
+        CHECK(read.gyro.x[i].find(p.key)->values[k] ==
+              Approx(p.values[k]).epsilon(5e-9).margin(1e-300));
+  }
+  CHECK(read.headerComments == spec.headerComments);
   // effect names read "gyro.x[i].<type>"
   const auto names = m.effectNames();
   auto has = [&](const std::string& type) {
