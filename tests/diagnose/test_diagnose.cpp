@@ -19,8 +19,9 @@
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
-#include "errormodels/diagnose/internal.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/identify.hpp"
+#include "errormodels/imu_model.hpp"
 
 namespace dg = sinsim::errormodels::diagnose;
 using sinsim::errormodels::Record;

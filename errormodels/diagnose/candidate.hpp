@@ -1,0 +1,36 @@
+// A candidate effect for one channel: what a detector (detector.hpp) proposes and the Allan
+// chi-square fit (allan_chi2.hpp) scores.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "errormodels/diagnose/diagnose.hpp"
+
+namespace sinsim::errormodels::diagnose::detail {
+
+struct Candidate {
+  std::string effect;          // catalogue type
+  bool freeSize = true;        // theta fitted >= 0 (g per unit theta) or fixed (g absolute AVAR)
+  std::vector<double> g;       // AVAR contribution at each tau [SI^2]
+  double zSpecial = 0.0;       // its own test, Gaussian-equivalent
+  /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.
+  std::function<double(const std::vector<double>& modelAvar)> zConditional;
+  std::string evidence;
+  /// The fitted deterministic signal [SI] per sample (ramp, warm-up, sinusoid, temperature,
+  /// outliers): removed from the record before the base AR is refitted. Empty otherwise.
+  std::vector<double> signal;
+  /// Quantization from the value lattice: the rate LSB [SI] and whether the remainder is carried
+  /// (its autocovariance is subtracted when the base AR is refitted).
+  double lsbRate = 0.0;
+  bool carry = false;
+  /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
+  /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
+  std::function<std::vector<double>(std::size_t maxLag)> acov;
+  /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
+  std::function<void(double theta, Finding&)> describe;
+};
+
+}  // namespace sinsim::errormodels::diagnose::detail

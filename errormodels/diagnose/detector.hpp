@@ -1,0 +1,70 @@
+// Diagnosis detectors: one plug-in per effect the diagnosis can find and add.
+//
+// A detector looks at one channel of the record (DetectorContext: the series, its grids and
+// shared statistics, what the model already has) and proposes candidates: the effect's Allan
+// signature g(tau), its own significance test, the fitted signal or autocovariance the base refit
+// takes out, and how to describe its size. The forward selection (selection.hpp) scores them.
+//
+// To add a detector: write detectors/<effect>.cpp defining
+//   std::vector<Candidate> detect_<effect>(const DetectorContext& ctx)
+// and add one line SINSIM_DETECTOR(<effect>, "summary") to detectors.def. A detector is not run
+// on a channel whose model already has its effect (enabled).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "errormodels/diagnose/candidate.hpp"
+#include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/series_stats.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
+
+namespace sinsim::errormodels::diagnose::detail {
+
+/// What a detector knows of one channel.
+struct DetectorContext {
+  const Record& record;
+  int channel = 0;
+  const std::vector<double>& y;      // the channel's samples [SI]
+  std::size_t N = 0;                 // samples
+  double dt = 0, T = 0;              // sample interval and record length [s]
+  const std::vector<double>& tau;    // the Allan tau grid [s]
+  const Setup& setup;                // grids of the comparison (PSD segment, factors)
+  const Units& units;                // display units of the channel
+  double mean = 0, var = 0;          // of y [SI], [SI^2] (1/N)
+  double lattice = 0;                // latticeStep(y) [SI]; 0 off a lattice
+  BlockMeans blocks;                 // <= 2000 block means of y
+  const std::vector<std::string>& modelEffects;  // enabled effect types of the model here
+
+  /// g_k = f(tau_k): an Allan signature on the tau grid.
+  template <class F>
+  std::vector<double> shape(F f) const {
+    std::vector<double> g(tau.size());
+    for (std::size_t k = 0; k < tau.size(); ++k) g[k] = f(tau[k]);
+    return g;
+  }
+};
+
+using DetectFn = std::vector<Candidate> (*)(const DetectorContext& ctx);
+
+struct DetectorType {
+  const char* effect;   // the catalogue type it proposes
+  const char* summary;  // what it looks for
+  DetectFn detect;
+};
+
+/// Every registered detector, in detectors.def order (the order of their candidates: ties in
+/// score keep it).
+const std::vector<DetectorType>& detectorTypes();
+
+/// The candidates of every detector whose effect is not among modelEffects.
+std::vector<Candidate> buildCandidates(const Record& record, int channel,
+                                       const std::vector<double>& tau, const Setup& setup,
+                                       const std::vector<std::string>& modelEffects);
+
+#define SINSIM_DETECTOR(effect, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
+#include "errormodels/diagnose/detectors.def"
+#undef SINSIM_DETECTOR
+
+}  // namespace sinsim::errormodels::diagnose::detail

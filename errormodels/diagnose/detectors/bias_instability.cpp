@@ -1,0 +1,75 @@
+// Bias instability: a flat Allan floor (0.664 B) over the record's tau range, sized by the Allan
+// fit. Its signature and autocovariance are those of the effect as the plug-in builds it
+// (effects/bias_instability.cpp: GM components, 2 per decade over tau_range widened 1.5 decades,
+// each of variance B^2 ln10 / (2 pi)). The floor is 0.664 B within -2.5 %/+1 % over tau_range.
+#include "errormodels/diagnose/detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+/// The GM components of the plug-in per unit B^2: n time constants from wlo, 2 per decade.
+struct Components {
+  double wlo = 0;  // [s]
+  int n = 0;
+  double s2 = 0;   // variance of each per unit B^2
+  double tc(int j) const { return wlo * std::pow(10.0, (j + 0.5) / 2); }
+};
+
+/// AVAR per unit B^2 at tau [s], each component from the GM closed form (IEEE 952 Annex C;
+/// q^2 = 2 s^2 / T): AVAR = (2 s^2 T / tau) [1 - (T / 2 tau)(3 - 4 e^(-tau/T) + e^(-2 tau/T))].
+double avar(const Components& m, double t) {
+  double v = 0;
+  for (int j = 0; j < m.n; ++j) {
+    const double Tc = m.tc(j), x = t / Tc;
+    v += x < 1e-4 ? 2 * m.s2 * t / (3 * Tc)
+                  : 2 * m.s2 * Tc / t * (1 - (3 - 4 * std::exp(-x) + std::exp(-2 * x)) / (2 * x));
+  }
+  return v;
+}
+
+/// Autocovariance per unit B^2 of the samples (interval averages over dt) at lags 0..maxLag: of a
+/// GM (variance s2, time T), lag 0 (2 s2 T^2/dt^2)(dt/T - 1 + e^(-dt/T)), lag k >= 1
+/// s2 T^2/dt^2 (1 - e^(-dt/T))^2 e^(-(k-1) dt/T).
+std::vector<double> acov(const Components& m, double dt, std::size_t maxLag) {
+  std::vector<double> r(maxLag + 1, 0.0);
+  for (int j = 0; j < m.n; ++j) {
+    const double Tc = m.tc(j), x = dt / Tc;
+    const double c2 = m.s2 / (x * x);
+    r[0] += 2 * c2 * (x - 1 + std::exp(-x));
+    for (std::size_t k = 1; k <= maxLag; ++k)
+      r[k] += c2 * std::pow(1 - std::exp(-x), 2) * std::exp(-double(k - 1) * x);
+  }
+  return r;
+}
+
+}  // namespace
+
+std::vector<Candidate> detect_bias_instability(const DetectorContext& ctx) {
+  const Units& u = ctx.units;
+  const double dt = ctx.dt;
+  const double lo = std::max(10 * dt, ctx.T / 1000), hi = ctx.T / 2;
+  Components m;
+  m.wlo = lo * std::pow(10.0, -1.5);
+  const double whi = hi * std::pow(10.0, 1.5);
+  m.n = int(std::ceil(2 * std::log10(whi / m.wlo) - 1e-9));
+  m.s2 = std::log(10.0) / (M_PI * 2);
+  Candidate c;
+  c.effect = "bias_instability";
+  c.acov = [m, dt](std::size_t maxLag) { return acov(m, dt, maxLag); };
+  c.g = ctx.shape([&](double t) { return avar(m, t); });
+  c.evidence = "a flat Allan floor the model falls below (0.664 B)";
+  c.describe = [u, lo, hi](double theta, Finding& f) {
+    const double B = std::sqrt(theta);
+    f.size = "B = " + quantity(B, u.level) + " (floor " + quantity(0.664 * B, u.level) + ")";
+    f.yaml = "{type: bias_instability, B: " + quantity(B, u.level) + ", tau_range: [" +
+             num(lo, 4) + " s, " + num(hi, 4) + " s]}";
+    f.params["B"] = B;
+  };
+  return {c};
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

@@ -1,0 +1,47 @@
+// Quantization: only on a value lattice (exact evidence); its Allan slope then tells rounding of
+// each sample (white) from an increment output with the remainder carried (slope -1). Without a
+// lattice there is no candidate: the signature is the lattice AND the short-tau excess (issue 5).
+// A short-tau excess alone is what a base model fitted to a record with a trend or a transient
+// shows (the fit bends its short-tau level), and scoring it as quantization was a false alarm
+// that grew with the hidden ramp.
+#include "errormodels/diagnose/detector.hpp"
+#include "errormodels/diagnose/significance.hpp"
+
+namespace sinsim::errormodels::diagnose::detail {
+
+std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
+  const double q = ctx.lattice, dt = ctx.dt;
+  if (!(q > 0)) return {};
+  const Units& u = ctx.units;
+  const double share = q * q / 12.0 / ctx.var;
+  const std::string ev = "values on a lattice of " + quantity(q, u.level) + " (" +
+                         "differences are integer multiples of it); rounding adds " +
+                         num(100 * share, 3) + " % of the sample variance";
+  Candidate rateLsb;
+  rateLsb.effect = "quantization";
+  rateLsb.freeSize = false;
+  rateLsb.g = ctx.shape([&](double t) { return q * q / 12.0 * dt / t; });  // white, var q^2/12
+  rateLsb.zSpecial = kMaxScore;
+  rateLsb.lsbRate = q;
+  rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
+  rateLsb.describe = [q, u](double, Finding& f) {
+    f.size = "LSB " + quantity(q, u.level) + " (rate output, each sample rounded)";
+    f.yaml = "{type: quantization, lsb: " + quantity(q, u.level) + "}";
+    f.params["lsb"] = q;
+    f.params["lattice"] = q;
+  };
+  Candidate carry = rateLsb;
+  carry.carry = true;
+  // Increment output with carry: AVAR = 3 Q^2 / tau^2, Q = q dt / sqrt(12) (IEEE 952 C).
+  carry.g = ctx.shape([&](double t) { return q * q * dt * dt / (4.0 * t * t); });
+  carry.evidence = ev + "; remainder carried (Allan slope -1)";
+  carry.describe = [q, dt, u](double, Finding& f) {
+    f.size = "LSB " + quantity(q * dt, u.increment) + " (increment output, carried)";
+    f.yaml = "{type: quantization, lsb: " + quantity(q * dt, u.increment) + "}";
+    f.params["lsb"] = q * dt;
+    f.params["lattice"] = q;
+  };
+  return {rateLsb, carry};
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

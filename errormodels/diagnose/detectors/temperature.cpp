@@ -1,0 +1,78 @@
+// Temperature: block means of the channel against block means of the sensor temperature,
+// polynomials of degree 1 and 2 in (T - T0) by least squares, T0 the first temperature.
+#include "errormodels/diagnose/detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+/// The channel's temperature polynomial sum_p coef[p-1] (T - T0)^p at every sample [SI].
+std::vector<double> polynomialSignal(const std::vector<double>& TK, double T0,
+                                     const std::vector<double>& coef) {
+  const int degree = int(coef.size());
+  std::vector<double> sig(TK.size());
+  for (std::size_t k = 0; k < TK.size(); ++k) {
+    const double d = TK[k] - T0;
+    double v = 0;
+    for (int p = degree; p >= 1; --p) v = (v + coef[std::size_t(p - 1)]) * d;
+    sig[k] = v;
+  }
+  return sig;
+}
+
+void describeTemperature(const std::vector<double>& coef, double T0, const Units& u, Finding& f) {
+  std::string list, words;
+  for (std::size_t p = 0; p < coef.size(); ++p) {
+    const std::string v = quantity(coef[p], p == 0 ? u.perKelvin : u.perKelvin2);
+    list += (p ? ", " : "") + v;
+    words += (p ? ", c" : "c") + std::to_string(p + 1) + " = " + v;
+    f.params["c" + std::to_string(p + 1)] = coef[p];
+  }
+  f.size = words + " about " + num(T0 - 273.15, 5) + " degC";
+  f.yaml = "{type: temperature, T0: " + num(T0 - 273.15, 8) + " degC, coefficients: [" + list + "]}";
+  f.params["T0"] = T0;
+}
+
+}  // namespace
+
+std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
+  const auto& TK = ctx.record.temperature;
+  const std::size_t nb = ctx.blocks.m.size();
+  if (TK.size() != ctx.N || nb < 20) return {};
+  const double tmin = *std::min_element(TK.begin(), TK.end()), tmax = *std::max_element(TK.begin(), TK.end());
+  if (!(tmax - tmin > 0.05)) return {};
+  const BlockMeans temp = blockMeans(TK, ctx.dt, 2000);
+  const double T0 = TK.front();
+  const Units& u = ctx.units;
+  Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
+  std::vector<Candidate> out;
+  for (int degree = 1; degree <= 2; ++degree) {
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), degree + 1);
+    for (std::size_t j = 0; j < nb; ++j) {
+      const double d = temp.m[j] - T0;
+      X(Eigen::Index(j), 0) = 1;
+      for (int p = 1; p <= degree; ++p) X(Eigen::Index(j), p) = std::pow(d, p);
+    }
+    Eigen::VectorXd beta;
+    const double r = leastSquares(X, yb, beta);
+    const double tot = (yb.array() - yb.mean()).square().sum();
+    const std::vector<double> coef(beta.data() + 1, beta.data() + beta.size());
+    const std::vector<double> sig = polynomialSignal(TK, T0, coef);
+    Candidate c;
+    c.effect = "temperature";
+    c.freeSize = false;
+    c.g = allanVariance(sig, ctx.setup);
+    c.signal = sig;
+    c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
+                 num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
+                 " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance";
+    c.describe = [coef, T0, u](double, Finding& f) { describeTemperature(coef, T0, u, f); };
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

@@ -1,0 +1,104 @@
+// Warm-up: e(t) = A exp(-t/tau_w) + c fitted to block means (tau_w on a log grid, then golden
+// section), and its own test: the first window-mean step against the later ones.
+#include "errormodels/diagnose/detector.hpp"
+#include "errormodels/diagnose/significance.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+struct Settling {
+  double A = 0;    // amplitude at t = 0 [SI]
+  double tau = 0;  // time constant [s]
+};
+
+Settling fitSettling(const DetectorContext& ctx) {
+  const auto& bt = ctx.blocks.t;
+  const std::size_t nb = ctx.blocks.m.size();
+  Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
+  auto rss = [&](double tw, Eigen::VectorXd& beta) {
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), 2);
+    for (std::size_t j = 0; j < nb; ++j) X(Eigen::Index(j), 0) = 1, X(Eigen::Index(j), 1) = std::exp(-bt[j] / tw);
+    return leastSquares(X, yb, beta);
+  };
+  const double lo = std::log(3.0 * double(ctx.blocks.size) * ctx.dt), hi = std::log(ctx.T / 2);
+  double bestL = lo, best = INFINITY;
+  Eigen::VectorXd beta;
+  for (int i = 0; i <= 40; ++i) {
+    const double l = lo + (hi - lo) * i / 40.0;
+    const double v = rss(std::exp(l), beta);
+    if (v < best) best = v, bestL = l;
+  }
+  double a = std::max(lo, bestL - (hi - lo) / 40), b = std::min(hi, bestL + (hi - lo) / 40);
+  const double gr = (std::sqrt(5.0) - 1) / 2;
+  for (int i = 0; i < 40; ++i) {
+    const double c1 = b - gr * (b - a), c2 = a + gr * (b - a);
+    if (rss(std::exp(c1), beta) < rss(std::exp(c2), beta)) b = c2;
+    else a = c1;
+  }
+  Settling s;
+  s.tau = std::exp(0.5 * (a + b));
+  rss(s.tau, beta);
+  s.A = beta[1];
+  return s;
+}
+
+/// Start test: the first increment of window means D_0 = ybar_1 - ybar_0 against the spread of
+/// the later increments D_j (j >= 1): t = |D_0| / rms(D_j), n - 1 dof. Stationary noise and a ramp
+/// make D_0 like the others; a settling transient makes it stand out. Windows >= 1 s with >= 16
+/// increments, Bonferroni. Returns z and the best t.
+double startTest(const DetectorContext& ctx, double& tStart) {
+  double zStart = 0;
+  tStart = 0;
+  std::size_t tested = 0;
+  for (auto m : ctx.setup.factors) {
+    if (double(m) * ctx.dt < 1.0) continue;
+    const auto wm = windowMeans(ctx.y, m);
+    if (wm.size() < 17) continue;
+    const std::size_t n = wm.size() - 2;
+    double ss = 0, md = 0;
+    for (std::size_t j = 1; j <= n; ++j) md += wm[j + 1] - wm[j];
+    md /= double(n);
+    for (std::size_t j = 1; j <= n; ++j) ss += (wm[j + 1] - wm[j] - md) * (wm[j + 1] - wm[j] - md);
+    ++tested;
+    const double rms = std::sqrt(ss / double(n - 1));
+    if (!(rms > 0)) continue;
+    const double t = std::fabs(wm[1] - wm[0] - md) / rms;
+    const double z = zFromStudentT(t, double(n - 1));
+    if (z > zStart) zStart = z, tStart = t;
+  }
+  return tested ? zFromTwoSidedP(double(tested) * std::erfc(zStart / std::sqrt(2.0))) : 0.0;
+}
+
+}  // namespace
+
+std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
+  const std::size_t nb = ctx.blocks.m.size();
+  if (nb < 20) return {};
+  const Units& u = ctx.units;
+  const Settling s = fitSettling(ctx);
+  const double A = s.A, tw = s.tau;
+  std::vector<double> w(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  Candidate c;
+  c.effect = "warmup";
+  c.freeSize = false;
+  c.g = allanVariance(w, ctx.setup);
+  c.signal = w;
+  double tStart = 0;
+  c.zSpecial = startTest(ctx, tStart);
+  c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
+               num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
+  c.describe = [A, tw, u](double, Finding& f) {
+    f.size = "A = " + quantity(A, u.level) + ", tau = " + num(tw, 4) + " s";
+    f.yaml = "{type: warmup, amplitude: " + quantity(A, u.level) + ", tau: " + num(tw, 6) + " s}";
+    f.params["amplitude"] = A;
+    f.params["tau"] = tw;
+  };
+  return {c};
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

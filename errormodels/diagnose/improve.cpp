@@ -1,0 +1,183 @@
+// improve() and compareModels() (diagnose.hpp): the requested effects sized from the data, written
+// into the model, and the comparison redone.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "common/error.hpp"
+#include "errormodels/diagnose/base_refit.hpp"
+#include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/model_text.hpp"
+#include "errormodels/diagnose/run.hpp"
+
+namespace sinsim::errormodels::diagnose {
+
+using namespace detail;
+
+namespace {
+
+/// What improve() changes in the model, per channel.
+struct Edits {
+  std::array<std::vector<std::string>, 6> addYaml;
+  std::array<double, 6> scale{1, 1, 1, 1, 1, 1};
+  std::array<std::vector<double>, 6> arReplace;
+};
+
+AxisChange changeOf(const AxisDiagnosis& b, const AxisDiagnosis& a) {
+  AxisChange ch;
+  ch.channel = b.channel;
+  ch.misfitBefore = b.misfit;
+  ch.misfitAfter = a.misfit;
+  ch.fractionOutsideBefore = b.fractionOutside;
+  ch.fractionOutsideAfter = a.fractionOutside;
+  return ch;
+}
+
+/// The requested effects of this channel ("found": its reported findings), each once, in the
+/// order of their diagnosis score.
+std::vector<std::string> wantedEffects(const AxisDiagnosis& d, const std::vector<AddRequest>& adds) {
+  std::vector<std::string> wanted;
+  for (const auto& a : adds) {
+    if (!(a.channel.empty() || a.channel == d.channel)) continue;
+    std::vector<std::string> effects{a.effect};
+    if (a.effect == "found") {
+      effects.clear();
+      for (const auto& f : d.findings)
+        if (f.reported) effects.push_back(f.effect);
+    }
+    for (const auto& e : effects)
+      if (std::find(wanted.begin(), wanted.end(), e) == wanted.end()) wanted.push_back(e);
+  }
+  std::stable_sort(wanted.begin(), wanted.end(), [&](const std::string& x, const std::string& y) {
+    auto score = [&](const std::string& e) {
+      for (const auto& f : d.findings)
+        if (f.effect == e) return f.score;
+      return -1.0;
+    };
+    return score(x) > score(y);
+  });
+  return wanted;
+}
+
+/// The wanted effects added one by one (each its best variant) with the level fixed; a note for
+/// each that has no candidate. The base noise level is then refitted only when the data ask for
+/// it: likelihood-ratio test of s = 1 against s free, chi2 difference > 9 (3 sigma, one
+/// parameter). A base fitted to the record usually has the right level, and the short-tau bands
+/// are too narrow for a level nudged by the long-tau points.
+AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wanted,
+                        const ModelText& model, std::vector<const Candidate*>& set,
+                        std::vector<std::string>& notes) {
+  AllanSolution sol = solveAllan(w.prob, {}, {}, true);
+  for (const auto& e : wanted) {
+    const Candidate* bestC = nullptr;
+    AllanSolution bestS;
+    for (const auto& c : w.cands) {
+      if (c.effect != e) continue;
+      auto trial = set;
+      trial.push_back(&c);
+      auto start = sol.theta;
+      start.push_back(-1.0);
+      auto s = solveAllan(w.prob, trial, start, true);
+      if (!bestC || s.chi2 < bestS.chi2) bestC = &c, bestS = s;
+    }
+    if (!bestC) {
+      const auto present = modelEffectTypes(model.text, w.channel);
+      std::string why = std::find(present.begin(), present.end(), e) != present.end()
+                            ? "the model already has it"
+                            : "no evidence in the record to size it (no temperature channel, no PSD "
+                              "line or no isolated samples)";
+      notes.push_back("cannot add " + e + " to " + w.d.channel + ": " + why);
+      continue;
+    }
+    set.push_back(bestC);
+    sol = bestS;
+  }
+  const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
+  if (sol.chi2 - freeLevel.chi2 > 9.0) sol = freeLevel;
+  return sol;
+}
+
+/// The change of one channel: the wanted effects sized, a base AR at the record's rate refitted
+/// (base_refit.hpp; other bases keep their parameters and take the level refit), the effects'
+/// YAML into edits.
+AxisChange improveChannel(const ChannelWork& w, const Record& record, const ModelText& model,
+                          const std::vector<AddRequest>& adds, Edits& edits,
+                          std::vector<std::string>& notes) {
+  AxisChange ch;
+  ch.channel = w.d.channel;
+  const auto wanted = wantedEffects(w.d, adds);
+  if (wanted.empty()) return ch;
+  const auto c = std::size_t(w.channel);
+  std::vector<const Candidate*> set;
+  AllanSolution sol = fitWanted(w, wanted, model, set, notes);
+  const auto arBase = arOfChannel(model.text, w.channel, record.rate_hz);
+  if (arBase) edits.arReplace[c] = refitBaseAr(w, record, arBase->size() - 1, set, sol);
+  const bool arRefitted = !edits.arReplace[c].empty();
+  for (std::size_t j = 0; j < set.size(); ++j) {
+    if (set[j]->freeSize && !(sol.theta[j] > 0)) {
+      notes.push_back(set[j]->effect + " on " + w.d.channel +
+                      ": fitted size 0 (the data do not want it), not added");
+      continue;
+    }
+    Finding f;
+    set[j]->describe(sol.theta[j], f);
+    edits.addYaml[c].push_back(f.yaml);
+    ch.added.push_back(f.yaml);
+  }
+  if (!ch.added.empty() && !arRefitted) {
+    edits.scale[c] = sol.s;
+    ch.noiseScale = sol.s;
+  }
+  if (arRefitted) notes.push_back(w.d.channel + ": base AR refitted (Burg, order " +
+                                  std::to_string(arBase->size() - 1) +
+                                  ") on the record with the added effects taken out");
+  return ch;
+}
+
+std::string improvedHeader(const ModelText& model, const Record& record,
+                           const std::vector<AxisChange>& changes) {
+  std::string header = "Improved by sinsim diagnose from " + model.name + " and " + record.source + ":";
+  for (const auto& ch : changes)
+    for (const auto& a : ch.added) header += "\n  " + ch.channel + " += " + a;
+  for (const auto& ch : changes)
+    if (!ch.added.empty() && std::fabs(ch.noiseScale - 1) > 1e-9)
+      header += "\n  " + ch.channel + ": base noise scaled by sqrt(" + num(ch.noiseScale, 6) + ")";
+  return header;
+}
+
+}  // namespace
+
+Improvement improve(const Record& record, const ModelText& model, const std::vector<AddRequest>& adds,
+                    const DiagnoseOptions& options) {
+  if (adds.empty()) throw InputError("nothing to add");
+  const Run run = diagnoseRun(record, model, options);
+  Improvement imp;
+  imp.before = run.d;
+  Edits edits;
+  std::vector<AxisChange> changes;
+  for (const auto& w : run.work) changes.push_back(improveChannel(w, record, model, adds, edits, imp.notes));
+  imp.model.name = model.name + " (improved)";
+  imp.model.text = editModel(model.text, edits.addYaml, edits.scale,
+                             improvedHeader(model, record, changes), edits.arReplace);
+  imp.after = diagnose(record, imp.model, options);
+  for (auto& ch : changes) {
+    AxisChange full = changeOf(imp.before.axis(ch.channel), imp.after.axis(ch.channel));
+    full.added = ch.added;
+    full.noiseScale = ch.noiseScale;
+    imp.changes.push_back(full);
+  }
+  return imp;
+}
+
+Improvement compareModels(const Record& record, const ModelText& before, const ModelText& after,
+                          const DiagnoseOptions& options) {
+  Improvement imp;
+  imp.before = diagnose(record, before, options);
+  imp.after = diagnose(record, after, options);
+  imp.model = after;
+  for (const auto& b : imp.before.axes) imp.changes.push_back(changeOf(b, imp.after.axis(b.channel)));
+  return imp;
+}
+
+}  // namespace sinsim::errormodels::diagnose

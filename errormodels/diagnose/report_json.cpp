@@ -1,0 +1,103 @@
+// JSON of a diagnosis and of an improvement (diagnose.hpp: toJson).
+#include <nlohmann/json.hpp>
+
+#include "errormodels/diagnose/diagnose.hpp"
+
+namespace sinsim::errormodels::diagnose {
+
+namespace {
+
+nlohmann::json curveJson(const Comparison& c, const char* xname) {
+  nlohmann::json j;
+  j[xname] = c.x;
+  j["meas"] = c.meas;
+  j["model"] = c.model;
+  j["lo"] = c.lo;
+  j["hi"] = c.hi;
+  j["outside"] = c.outside;
+  return j;
+}
+
+nlohmann::json failsJson(const std::vector<FailRange>& fails) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& f : fails)
+    j.push_back({{"statistic", f.statistic}, {"from", f.from}, {"to", f.to},
+                 {"unit", f.statistic == "adev" ? "s" : "Hz"},
+                 {"direction", f.direction > 0 ? "above" : "below"},
+                 {"worst_ratio", f.worstRatio}, {"points", f.points}});
+  return j;
+}
+
+nlohmann::json findingsJson(const std::vector<Finding>& findings) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& f : findings)
+    j.push_back({{"effect", f.effect}, {"evidence", f.evidence}, {"size", f.size},
+                 {"yaml", f.yaml}, {"params", f.params}, {"score", f.score},
+                 {"reported", f.reported}});
+  return j;
+}
+
+nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
+  nlohmann::json j;
+  j["channel"] = a.channel;
+  j["misfit"] = a.misfit;
+  j["misfit_raw"] = a.misfitRaw;
+  j["misfit_floor"] = a.misfitFloor;
+  j["fraction_outside"] = a.fractionOutside;
+  j["chi2"] = a.chi2;
+  j["chi2_points"] = a.chi2Points;
+  j["noise_scale"] = a.noiseScale;
+  j["fits"] = a.fits(threshold);
+  if (a.ljungBox)
+    j["ljung_box"] = {{"lags", a.ljungBox->lags}, {"dof", a.ljungBox->dof}, {"Q", a.ljungBox->Q},
+                      {"p", a.ljungBox->pValue}};
+  else
+    j["ljung_box"] = nullptr;
+  j["fails"] = failsJson(a.fails);
+  j["findings"] = findingsJson(a.findings);
+  j["units"] = {{"adev", "SI (rad/s or m/s^2)"}, {"psd", "SI^2/Hz"}, {"tau", "s"}, {"f", "Hz"}};
+  j["curves"] = {{"adev", curveJson(a.adev, "tau")}, {"psd", curveJson(a.psd, "f")},
+                 {"acf", curveJson(a.acf, "lag")}};
+  return j;
+}
+
+nlohmann::json diagnosisJson(const Diagnosis& d) {
+  nlohmann::json j;
+  j["data"] = d.data;
+  j["model"] = d.model;
+  j["rate_hz"] = d.rate;
+  j["samples"] = d.samples;
+  j["realisations"] = d.realisations;
+  j["threshold"] = d.threshold;
+  j["band_level"] = d.bandLevel;
+  j["axes"] = nlohmann::json::array();
+  for (const auto& a : d.axes) j["axes"].push_back(axisJson(a, d.threshold));
+  return j;
+}
+
+}  // namespace
+
+std::string toJson(const Diagnosis& d) { return diagnosisJson(d).dump(1) + "\n"; }
+
+std::string toJson(const Improvement& imp) {
+  nlohmann::json j;
+  j["model_written"] = imp.model.name;
+  j["notes"] = imp.notes;
+  j["axes"] = nlohmann::json::array();
+  for (const auto& ch : imp.changes) {
+    nlohmann::json a = axisJson(imp.before.axis(ch.channel), imp.before.threshold);
+    a["misfit_before"] = ch.misfitBefore;
+    a["misfit_after"] = ch.misfitAfter;
+    a["fraction_outside_before"] = ch.fractionOutsideBefore;
+    a["fraction_outside_after"] = ch.fractionOutsideAfter;
+    a["added"] = ch.added;
+    a["noise_scale_applied"] = ch.noiseScale;
+    a["after"] = axisJson(imp.after.axis(ch.channel), imp.after.threshold);
+    j["axes"].push_back(a);
+  }
+  j["before"] = {{"model", imp.before.model}, {"data", imp.before.data},
+                 {"realisations", imp.before.realisations}};
+  return j.dump(1) + "\n";
+}
+
+}  // namespace sinsim::errormodels::diagnose

@@ -1,0 +1,79 @@
+// The terminal table of a diagnosis and of an improvement (diagnose.hpp: summaryTable).
+#include <sstream>
+
+#include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/diagnose.hpp"
+
+namespace sinsim::errormodels::diagnose {
+
+using detail::num;
+
+namespace {
+
+/// s padded to display width w (counting UTF-8 lead bytes).
+std::string pad(std::string s, std::size_t w) {
+  std::size_t n = 0;
+  for (unsigned char ch : s) n += (ch & 0xC0) != 0x80;
+  if (n < w) s.append(w - n, ' ');
+  return s;
+}
+
+std::string findingsText(const AxisDiagnosis& a, double threshold) {
+  std::string s;
+  for (const auto& f : a.findings)
+    if (f.reported) s += (s.empty() ? "" : ", ") + f.effect + " (" + num(f.score, 3) + ")";
+  if (s.empty()) s = a.fits(threshold) ? "fits" : "no effect above threshold";
+  return s;
+}
+
+/// "gx fails: adev 5..900 s above (x4);" and one line per reported finding.
+void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
+  bool head = false;
+  for (const auto& f : a.fails) {
+    if (!head) o << a.channel << " fails:";
+    head = true;
+    o << " " << f.statistic << " " << num(f.from, 3) << ".." << num(f.to, 3)
+      << (f.statistic == "adev" ? " s " : " Hz ") << (f.direction > 0 ? "above" : "below")
+      << " (x" << num(f.worstRatio, 3) << ");";
+  }
+  if (head) o << "\n";
+  for (const auto& f : a.findings)
+    if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
+}
+
+}  // namespace
+
+std::string summaryTable(const Diagnosis& d) {
+  std::ostringstream o;
+  o << "diagnosis of " << d.data << " (" << d.samples << " samples at " << num(d.rate, 6)
+    << " Hz) against " << d.model << ", " << d.realisations << " realisations, "
+    << num(100 * d.bandLevel, 3) << " % bands, reporting threshold " << num(d.threshold, 3) << "\n";
+  o << pad("channel", 8) << pad("misfit", 8) << pad("outside", 9) << pad("chi2/K", 13)
+    << pad("Ljung-Box p", 13) << "findings (score)\n";
+  for (const auto& a : d.axes) {
+    o << pad(a.channel, 8) << pad(num(a.misfit, 3), 8)
+      << pad(num(100 * a.fractionOutside, 3) + " %", 9)
+      << pad(num(a.chi2, 4) + "/" + std::to_string(a.chi2Points), 13)
+      << pad(a.ljungBox ? num(a.ljungBox->pValue, 2) : "-", 13) << findingsText(a, d.threshold) << "\n";
+  }
+  for (const auto& a : d.axes) failsAndFindings(o, a);
+  return o.str();
+}
+
+std::string summaryTable(const Improvement& imp) {
+  std::ostringstream o;
+  o << summaryTable(imp.before) << "\n";
+  o << pad("channel", 8) << pad("misfit before", 15) << pad("after", 8) << pad("outside before", 16)
+    << pad("after", 8) << "added\n";
+  for (const auto& ch : imp.changes) {
+    std::string added;
+    for (const auto& a : ch.added) added += (added.empty() ? "" : "; ") + a;
+    o << pad(ch.channel, 8) << pad(num(ch.misfitBefore, 3), 15) << pad(num(ch.misfitAfter, 3), 8)
+      << pad(num(100 * ch.fractionOutsideBefore, 3) + " %", 16)
+      << pad(num(100 * ch.fractionOutsideAfter, 3) + " %", 8) << (added.empty() ? "-" : added) << "\n";
+  }
+  for (const auto& n : imp.notes) o << "note: " << n << "\n";
+  return o.str();
+}
+
+}  // namespace sinsim::errormodels::diagnose

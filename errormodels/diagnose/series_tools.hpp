@@ -1,0 +1,31 @@
+// Small tools on one recorded series shared by the detectors: the value lattice, window and block
+// means, the median and a least-squares solve.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+/// Lattice of values: step q [SI] when the record's increments are integer multiples of one
+/// step (>= 99 % of non-zero differences within 1 % of a multiple); 0 otherwise.
+double latticeStep(const std::vector<double>& y);
+/// Mean of y over consecutive windows of m samples.
+std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m);
+
+/// Means of consecutive blocks of `size` samples and the times of their centres [s].
+struct BlockMeans {
+  std::vector<double> t, m;
+  std::size_t size = 1;
+};
+/// At most `blocks` blocks of y sampled every dt [s].
+BlockMeans blockMeans(const std::vector<double>& y, double dt, std::size_t blocks);
+
+/// Median (the upper one for an even count); 0 for an empty vector.
+double median(std::vector<double> v);
+/// Least squares y ~ X beta; returns the residual sum of squares.
+double leastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, Eigen::VectorXd& beta);
+
+}  // namespace sinsim::errormodels::diagnose::detail
