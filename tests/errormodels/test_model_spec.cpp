@@ -70,11 +70,11 @@ std::vector<double> realisation(const ImuErrorModel& m, std::uint64_t seed) {
   auto c = m.instantiate(100.0, {seed, 3});
   std::vector<double> out;
   for (int k = 1; k <= 300; ++k) {
-    nav::ImuSample s;
+    ImuSample s;
     s.t = k / 100.0;
     s.dt = 0.01;
-    s.dtheta_b = nav::Vec3(1e-4, 0, 0);
-    s.dv_b = nav::Vec3(0, 0, -0.098);
+    s.dtheta_b = Vec3(1e-4, 0, 0);
+    s.dv_b = Vec3(0, 0, -0.098);
     c->corrupt(s, 300.0);  // [K]
     for (int i = 0; i < 3; ++i) out.push_back(s.dtheta_b[i]), out.push_back(s.dv_b[i]);
   }
