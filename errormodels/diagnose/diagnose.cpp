@@ -114,7 +114,7 @@ namespace {
 /// Central interval of a variance estimate with nu EDF around its mean: mean chi2_q(nu) / nu.
 double chi2Factor(double p, double nu) {
   if (!(nu < 1e6)) {  // the chi-square law is normal to 1e-3 here: mean (1 + z sqrt(2/nu))
-    const double z = fit::normalQuantileTwoSided(std::fabs(2 * p - 1)) * (p < 0.5 ? -1 : 1);
+    const double z = normalQuantileTwoSided(std::fabs(2 * p - 1)) * (p < 0.5 ? -1 : 1);
     return std::max(0.0, 1 + z * std::sqrt(2 / nu));
   }
   return chiSquareQuantile(p, nu) / nu;
@@ -337,7 +337,7 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
   const Setup setup = makeSetup(record.rate_hz, record.rows, o);
   const auto mc = monteCarlo(m, record, channels, setup, o);
   const std::size_t R = o.realisations, K = setup.factors.size();
-  const double zAcf = fit::normalQuantileTwoSided(o.bandLevel);
+  const double zAcf = normalQuantileTwoSided(o.bandLevel);
 
   Run run;
   run.d.data = record.source;
