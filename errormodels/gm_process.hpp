@@ -16,6 +16,18 @@
 
 namespace sinsim::errormodels {
 
+/// Allan variance [unit²] of a first-order GM process with variance s2 [unit²] and correlation
+/// time T [s] at averaging time tau [s] (IEEE Std 952-1997 Annex C, C.2.4 with q_c = 2 s2 / T):
+///   AVAR = (q_c T² / tau) [1 - (T / 2 tau)(3 - 4 e^{-tau/T} + e^{-2 tau/T})].
+/// Below tau/T = 1e-4 the bracket cancels to ~1e-8, so its series is used: with x = tau/T,
+/// 3 - 4e^{-x} + e^{-2x} = 2x - 2x³/3 + O(x⁴), hence AVAR = 2 s2 x / 3 + O(x²). Peak of the
+/// deviation: 0.618 sqrt(s2) at tau = 1.89 T; AVAR -> 2 s2 T / tau for tau >> T.
+inline double gaussMarkovAllanVariance(double s2, double T, double tau) {
+  const double x = tau / T;
+  if (x < 1e-4) return 2.0 * s2 * x / 3.0;
+  return 2.0 * s2 * T / tau * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x));
+}
+
 class ExactGaussMarkov {
  public:
   ExactGaussMarkov(double sigma, double tau, NormalStream s) : sigma_(sigma), tau_(tau), s_(s) {

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "common/constants.hpp"
 #include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/gm_process.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -49,15 +50,6 @@ const std::vector<Channel>& allChannels() {
 
 const std::vector<double>& channelData(const Record& r, const Channel& c) {
   return c.sensor == fit::SensorSignal::Gyro ? r.gyro[c.axis] : r.accel[c.axis];
-}
-
-/// Allan variance of a first-order GM process with variance s2 and correlation time T at tau
-/// (IEEE Std 952-1997 Annex C, C.2.4 in the form with q_c = 2 s2 / T):
-///   AVAR = (q_c T^2 / tau) [1 - (T / 2 tau)(3 - 4 e^{-tau/T} + e^{-2 tau/T})].
-double gmAllanVariance(double s2, double T, double tau) {
-  const double x = tau / T;
-  if (x < 1e-4) return s2 * x;  // series: AVAR ~ s2 tau / T for tau << T
-  return 2.0 * s2 * T / tau * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x));
 }
 
 /// Points of an Allan curve usable by the term fit: finite, positive dev and EDF, and
@@ -270,7 +262,7 @@ std::vector<double> AxisIdentification::modelAdev(const std::vector<double>& tau
   if (written.gaussMarkov) {
     const auto& g = *written.gaussMarkov;
     for (std::size_t i = 0; i < tau.size(); ++i)
-      avar[i] += gmAllanVariance(g.sigma * g.sigma, g.tau, tau[i]);
+      avar[i] += gaussMarkovAllanVariance(g.sigma * g.sigma, g.tau, tau[i]);
   }
   if (written.allan) {
     std::array<double, fit::kAllanTermCount> theta{};

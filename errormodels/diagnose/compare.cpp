@@ -14,7 +14,7 @@ namespace {
 /// Central interval of a variance estimate with nu EDF around its mean: mean chi2_q(nu) / nu.
 double chi2Factor(double p, double nu) {
   if (!(nu < 1e6)) {  // the chi-square law is normal to 1e-3 here: mean (1 + z sqrt(2/nu))
-    const double z = fit::normalQuantileTwoSided(std::fabs(2 * p - 1)) * (p < 0.5 ? -1 : 1);
+    const double z = normalQuantileTwoSided(std::fabs(2 * p - 1)) * (p < 0.5 ? -1 : 1);
     return std::max(0.0, 1 + z * std::sqrt(2 / nu));
   }
   return chiSquareQuantile(p, nu) / nu;
@@ -153,7 +153,7 @@ void comparePsd(const SeriesStats& meas, const std::vector<SeriesStats>& real, c
 void compareAcf(const SeriesStats& meas, const std::vector<SeriesStats>& real, const Setup& setup,
                 double level, Comparison& c) {
   const std::size_t R = real.size();
-  const double zAcf = fit::normalQuantileTwoSided(level);
+  const double zAcf = normalQuantileTwoSided(level);
   for (std::size_t l = 0; l <= setup.acfLags; ++l) {
     std::vector<double> v(R);
     for (std::size_t r = 0; r < R; ++r) v[r] = real[r].acf[l];

@@ -7,20 +7,10 @@
 // Two normals per interval from the effect's stream: z₁ < Φ⁻¹(p) decides the event (P = p
 // exactly), the sign of z₂ its sign.
 #include "errormodels/effect.hpp"
+#include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels {
 namespace {
-
-/// Φ⁻¹(p) by bisection on erfc (p in (0, 1); 200 halvings reach double precision).
-double normalQuantile(double p) {
-  double lo = -40.0, hi = 40.0;
-  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p) lo = mid;
-    else hi = mid;
-  }
-  return 0.5 * (lo + hi);
-}
 
 class OutliersState final : public AxisErrorState {
  public:

@@ -7,6 +7,7 @@
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "errormodels/fit/nnls.hpp"
+#include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -325,18 +326,6 @@ AllanFit fitAllanTerms(const std::vector<double>& tau, const std::vector<double>
     fit = fitOnce(tau, adev, edf, use, mFactor, model, options.enabled, options);
   }
   return fit;
-}
-
-double normalQuantileTwoSided(double confidence) {
-  if (!(confidence > 0.0 && confidence < 1.0))
-    throw InputError("confidence level must be in (0, 1)");
-  // P(|Z| <= z) = erf(z / sqrt 2): bisection, monotone.
-  double lo = 0.0, hi = 40.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (std::erf(mid / std::sqrt(2.0)) < confidence ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
 }
 
 double edfFromConfidenceInterval(double lo, double hi, double confidence) {

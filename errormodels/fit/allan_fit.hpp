@@ -126,7 +126,4 @@ double edfFromConfidenceInterval(double lo, double hi, double confidence);
 double edfOverlappingWhite(std::size_t M, std::size_t m);
 double edfOverlappingRandomWalk(std::size_t M, std::size_t m);
 
-/// Two-sided standard normal quantile z with P(|Z| <= z) = confidence.
-double normalQuantileTwoSided(double confidence);
-
 }  // namespace sinsim::errormodels::fit

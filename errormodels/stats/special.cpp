@@ -77,7 +77,42 @@ void checkDomain(double a, double x, const char* who) {
   }
 }
 
+/// z with Q(z) = erfc(z/√2) / 2 = q, 0 < q < 1, by bisection on [-40, 40] (Q(40) underflows
+/// below the smallest double, so the root is inside). 200 halvings shrink the bracket below
+/// 1e-58, so erfc's own ~1 ulp accuracy is the limit: the upper tail is evaluated directly, never
+/// as 1 - Φ, which keeps full relative accuracy for tiny q.
+double upperTailQuantile(double q) {
+  double lo = -40.0, hi = 40.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (0.5 * std::erfc(mid / std::sqrt(2.0)) > q ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 }  // namespace
+
+double normalCdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+double normalQuantile(double p) {
+  if (!(p >= 0.0 && p <= 1.0)) throw InputError("normal quantile: probability must be in [0, 1]");
+  if (p == 0.0) return -std::numeric_limits<double>::infinity();
+  if (p == 1.0) return std::numeric_limits<double>::infinity();
+  return -upperTailQuantile(p);  // Φ(z) = Q(-z)
+}
+
+double normalQuantileTwoSided(double confidence) {
+  if (!(confidence > 0.0 && confidence < 1.0))
+    throw InputError("confidence level must be in (0, 1)");
+  return upperTailQuantile(0.5 * (1.0 - confidence));
+}
+
+double normalTwoSidedCritical(double p) {
+  if (!(p >= 0.0 && p <= 1.0))
+    throw InputError("two-sided normal critical value: probability must be in [0, 1]");
+  if (p == 0.0) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, upperTailQuantile(0.5 * p));
+}
 
 double regularizedGammaP(double a, double x) {
   checkDomain(a, x, "regularizedGammaP");

@@ -1,14 +1,8 @@
 // The HTML page: escaped text blocks, tables and inline SVG, one inline style sheet, written
-// atomically (temporary file in the target folder, then rename(2), which POSIX makes atomic).
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
+// atomically (common/atomic_file.hpp).
 #include <string>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "sim/report/report.hpp"
 
@@ -107,44 +101,6 @@ std::string HtmlPage::html() const {
          "</body>\n</html>\n";
 }
 
-void HtmlPage::write(const std::string& path) const {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError("cannot write report " + path + ": folder " + dir.string() +
-                     " does not exist");
-  std::string tmp = (dir / ("." + target.filename().string() + ".tmp.XXXXXX")).string();
-  const int fd = ::mkstemp(tmp.data());
-  if (fd < 0)
-    throw InputError("cannot write report " + path + ": " + std::strerror(errno));
-  const std::string text = html();
-  const char* p = text.data();
-  std::size_t left = text.size();
-  bool ok = true;
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      ok = false;
-      break;
-    }
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  const int savedErrno = errno;
-  ok = ok && ::fchmod(fd, 0644) == 0;  // mkstemp makes 0600; a report is meant to be shared
-  ok = (::close(fd) == 0) && ok;
-  if (!ok) {
-    ::unlink(tmp.c_str());
-    throw Error("write error on report " + path + ": " + std::strerror(savedErrno));
-  }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int e = errno;
-    ::unlink(tmp.c_str());
-    throw Error("cannot move " + tmp + " to " + path + ": " + std::strerror(e));
-  }
-}
+void HtmlPage::write(const std::string& path) const { writeFileAtomic(path, html()); }
 
 }  // namespace sinsim::report

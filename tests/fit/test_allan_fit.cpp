@@ -9,9 +9,11 @@
 #include "common/error.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
+#include "errormodels/stats/special.hpp"
 #include "fit_test_util.hpp"
 
 using namespace sinsim::errormodels::fit;
+using sinsim::errormodels::normalQuantileTwoSided;
 using fit_test::overlappingAvar;
 
 TEST_CASE("NNLS satisfies the Karush-Kuhn-Tucker conditions", "[fit][nnls]") {

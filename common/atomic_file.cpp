@@ -1,0 +1,95 @@
+#include "common/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+#include <utility>
+
+#include "common/error.hpp"
+
+namespace sinsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Opens a fresh hidden temporary beside `path`: ".NAME.tmp.PID.N", N a process-wide counter, so
+/// threads and processes writing the same target never share one; O_EXCL never reuses a stale
+/// file.
+std::FILE* openTemporary(const std::string& path, std::string& temp) {
+  static std::atomic<unsigned long> counter{0};
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError("cannot write " + path + ": folder " + dir.string() + " does not exist");
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    temp = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
+                   std::to_string(counter++)))
+               .string();
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0 && errno == EEXIST) continue;
+    if (fd < 0) throw InputError("cannot write " + path + ": " + std::strerror(errno));
+    std::FILE* f = ::fdopen(fd, "wb");
+    if (!f) {
+      const int e = errno;
+      ::close(fd);
+      ::unlink(temp.c_str());
+      throw Error("cannot write " + path + ": " + std::strerror(e));
+    }
+    return f;
+  }
+  throw Error("cannot write " + path + ": no free temporary name beside it");
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  fp_ = openTemporary(path_, temp_);
+}
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : path_(std::move(other.path_)), temp_(std::move(other.temp_)), fp_(other.fp_) {
+  other.fp_ = nullptr;
+  other.temp_.clear();
+}
+
+AtomicFile::~AtomicFile() { discard(); }
+
+void AtomicFile::commit() {
+  if (!fp_) throw Error("cannot write " + path_ + ": already committed");
+  const bool bad = std::ferror(fp_) != 0;
+  const bool closeFailed = std::fclose(fp_) != 0;
+  const int e = errno;
+  fp_ = nullptr;
+  if (bad || closeFailed) {
+    discard();
+    throw Error("write error on " + path_ + " (disk full?): " + std::strerror(e));
+  }
+  if (::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int re = errno;
+    discard();
+    throw Error("cannot move " + temp_ + " to " + path_ + ": " + std::strerror(re));
+  }
+  temp_.clear();
+}
+
+void AtomicFile::discard() noexcept {
+  if (fp_) std::fclose(fp_);
+  fp_ = nullptr;
+  if (!temp_.empty()) ::unlink(temp_.c_str());
+  temp_.clear();
+}
+
+void writeFileAtomic(const std::string& path, std::string_view text) {
+  AtomicFile out(path);
+  if (!text.empty() && std::fwrite(text.data(), 1, text.size(), out.file()) != text.size())
+    throw Error("write error on " + path + " (disk full?): " + std::strerror(errno));
+  out.commit();
+}
+
+}  // namespace sinsim

@@ -1,0 +1,44 @@
+// Output files that appear whole or not at all: written to a hidden temporary in the target's
+// folder (".NAME.tmp.PID.N") and renamed over the final name, which POSIX rename(2) makes atomic.
+// On any failure, or when an AtomicFile is destroyed without commit(), the temporary is removed
+// and an existing file at the target is left untouched.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace sinsim {
+
+/// Writes `text` to `path` atomically. Throws InputError when the folder does not exist or the
+/// temporary cannot be created, Error on a write or rename failure.
+void writeFileAtomic(const std::string& path, std::string_view text);
+
+/// The streaming form: write through file(), then commit(). Not copyable; movable.
+class AtomicFile {
+ public:
+  /// Creates the temporary beside `path` (mode 0666 less the umask, like fopen).
+  /// Throws InputError when the folder does not exist or is not writable.
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(AtomicFile&& other) noexcept;
+  AtomicFile& operator=(AtomicFile&&) = delete;
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// The open temporary (binary mode); valid until commit() or destruction.
+  std::FILE* file() const { return fp_; }
+  /// Flushes, closes and renames the temporary over the target. Throws Error on an I/O failure
+  /// (after removing the temporary).
+  void commit();
+
+  const std::string& path() const { return path_; }
+  const std::string& tempPath() const { return temp_; }
+
+ private:
+  void discard() noexcept;
+  std::string path_, temp_;
+  std::FILE* fp_ = nullptr;
+};
+
+}  // namespace sinsim
