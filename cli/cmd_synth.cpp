@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/imu_model.hpp"
@@ -31,7 +32,7 @@ nav::Vec3 parseAttitude(const std::string& text) {
     std::string p = part;
     // A plain number is read as degrees: the README's examples write "0,0,90".
     Quantity q = parseQuantity(p);
-    if (q.dim == Dimension::none()) q.si *= M_PI / 180.0;
+    if (q.dim == Dimension::none()) q.si *= kRadPerDeg;
     else if (q.dim != Dimension::angle())
       throw InputError("--attitude: \"" + p + "\" is not an angle");
     rpy[i++] = q.si;

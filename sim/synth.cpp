@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "nav/attitude.hpp"
@@ -16,8 +17,6 @@
 
 namespace sinsim::sim {
 namespace {
-
-constexpr double kZeroCelsius = 273.15;  // [K]
 
 char* put(char* p, char* end, double v, int precision) {
   return std::to_chars(p, end, v, std::chars_format::general, precision).ptr;
@@ -94,7 +93,7 @@ long long writeStaticRecord(const errormodels::ImuErrorModel& model, const Stati
                             const RecordTemperature& temperature, const std::string& path) {
   if (!(std::isfinite(o.rate) && o.rate > 0)) throw InputError("--rate must be positive");
   if (!(std::isfinite(o.duration) && o.duration > 0)) throw InputError("--duration must be positive");
-  if (!(std::fabs(o.lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");
+  if (!(std::fabs(o.lat) <= kPi / 2)) throw InputError("--latitude must be within ±90 deg");
 
   const nav::Earth earth;
   const nav::Mat3 C_bn = nav::dcmFromEuler(o.rpy).transpose();
