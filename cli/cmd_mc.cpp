@@ -23,6 +23,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
@@ -84,7 +85,7 @@ double parseAngle(const std::string& text, const std::string& what) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (end && end != text.c_str() && std::string(end).find_first_not_of(" \t") == std::string::npos)
-    return v * M_PI / 180.0;
+    return degToRad(v);  // as "v deg" reads
   try {
     return parseQuantityAs(text, Dimension::angle());
   } catch (const InputError& e) {

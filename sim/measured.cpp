@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "nav/attitude.hpp"
 
@@ -24,14 +25,14 @@ nav::Vec3 levelAttitude(const errormodels::Record& record, std::size_t n, double
 Scenario staticScenario(const std::string& name, const MotionStart& start, double imuRate,
                         double outputRate, const nav::StrapdownOptions& strapdown,
                         double duration) {
-  constexpr double kMaxLatitude = 89.0 * M_PI / 180.0;  // as the scenario file's start.latitude
+  constexpr double kMaxLatitude = 89.0 * kRadPerDeg;  // as the scenario file's start.latitude
   if (!(std::isfinite(start.lat) && std::abs(start.lat) <= kMaxLatitude))
     throw InputError(name + ": expected a latitude within ±89 deg (the NED frame is singular at "
                      "the poles)");
   if (!(std::isfinite(start.lon) && std::isfinite(start.h) && std::isfinite(start.roll) &&
         std::isfinite(start.pitch) && std::isfinite(start.heading)))
     throw InputError(name + ": the start position and attitude must be finite");
-  if (!(std::abs(start.pitch) < M_PI / 2))
+  if (!(std::abs(start.pitch) < kPi / 2))
     throw InputError(name + ": expected a pitch within ±90 deg");
   if (!(std::isfinite(imuRate) && imuRate > 0 && std::isfinite(outputRate) && outputRate > 0))
     throw InputError(name + ": expected positive IMU and output rates");

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 #include "nav/strapdown.hpp"
 #include "sim/imu_source.hpp"
@@ -18,16 +19,14 @@
 namespace sinsim::sim {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
-
 const char* kStateHeader = "t_s,lat_deg,lon_deg,h_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg\n";
 const char* kErrorHeader = "t_s,north_m,east_m,down_m,vn_mps,ve_mps,vd_mps,roll_rad,pitch_rad,yaw_rad\n";
 
 // 12 decimals of a degree are 0.1 µm on the ground: the CSV does not hide sub-millimetre drifts.
 void writeState(std::FILE* f, const nav::NavState& s) {
-  const nav::Vec3 e = nav::eulerFromQuat(s.q_nb) * kRadToDeg;
-  std::fprintf(f, "%.6f,%.12f,%.12f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f\n", s.t, s.lat * kRadToDeg,
-               s.lon * kRadToDeg, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
+  const nav::Vec3 e = nav::eulerFromQuat(s.q_nb) * kDegPerRad;
+  std::fprintf(f, "%.6f,%.12f,%.12f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f\n", s.t, s.lat * kDegPerRad,
+               s.lon * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
 }
 
 void writeError(std::FILE* f, const NavError& e) {
