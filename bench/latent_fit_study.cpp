@@ -92,7 +92,7 @@ std::vector<double> record(const std::string& yaml, double rate, double duration
 
 int main(int argc, char** argv) {
   int seeds = 200;
-  double penalty = 0.0;
+  double penalty = fit::LatentFitOptions{}.penaltyPerTerm;
   std::string only;
   std::vector<double> rates{100.0, 1000.0}, durations{1200.0, 7200.0};
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
           const auto x = record(cs.yaml, rate, duration, 1000 + std::uint64_t(s));
           fit::LatentFitOptions o;
           o.sampleInterval = 1.0 / rate;
-          o.penaltyPerParameter = penalty;
+          o.penaltyPerTerm = penalty;
           fit::LatentFit f;
           try {
             f = fit::fitLatentModel(x, o);

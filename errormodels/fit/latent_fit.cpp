@@ -19,6 +19,11 @@ std::size_t LatentTermSet::parameterCount() const {
          std::size_t(randomWalk) + std::size_t(drift);
 }
 
+std::size_t LatentTermSet::termCount() const {
+  return std::size_t(quantization) + std::size_t(white) + std::size_t(gm) + std::size_t(flicker) +
+         std::size_t(randomWalk) + std::size_t(drift);
+}
+
 std::string LatentTermSet::name() const {
   LatentModel m;
   m.quantization = quantization, m.white = white, m.flicker = flicker;
@@ -71,6 +76,7 @@ struct Problem {
   Eigen::VectorXd y;  ///< Allan variance [U^2]
   double dt = 0.0;
   std::size_t N = 0;
+  double minT = 0.0;  ///< [s] shortest GM tau searched
   Eigen::MatrixXd W;
 };
 
@@ -146,7 +152,7 @@ SetFit goldenT(const Problem& p, const LatentTermSet& s, std::vector<double> T, 
 
 SetFit fitSet(const Problem& p, const LatentTermSet& s) {
   if (s.gm == 0) return solveFixedT(p, s, {});
-  const double tLo = 0.5 * p.dt, tHi = 0.5 * p.dt * static_cast<double>(p.N);
+  const double tLo = p.minT, tHi = 0.5 * p.dt * static_cast<double>(p.N);
   SetFit best;
   if (s.gm == 1) {
     const double step = std::sqrt(2.0);
@@ -220,9 +226,6 @@ Eigen::VectorXd modelLevels(const Problem& p, const LatentModel& m) {
   return l;
 }
 
-double penaltyOf(const Problem& p, const LatentFitOptions& o) {
-  return o.penaltyPerParameter > 0.0 ? o.penaltyPerParameter : std::log(double(p.m.size()));
-}
 
 /// Best valid set under the current p.W (every set fitted); all fits returned, best first.
 std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<LatentTermSet>& sets,
@@ -235,7 +238,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
     c.terms = s;
     c.model = modelOf(f);
     c.chi2 = f.chi2;
-    c.score = f.chi2 + penalty * double(s.parameterCount());
+    c.score = f.chi2 + penalty * double(s.termCount());
     c.valid = f.allPositive && std::isfinite(f.chi2);
     out.push_back(c);
     if (fits) fits->push_back(f);
@@ -269,7 +272,7 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
       f = fitSet(p, s);
     }
     if (!f.allPositive) continue;
-    const double score = f.chi2 + penalty * double(s.parameterCount());
+    const double score = f.chi2 + penalty * double(s.termCount());
     if (!best || score < best->score) best = LatentCandidate{s, modelOf(f), f.chi2, score, true};
   }
   if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
@@ -352,6 +355,8 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
   Problem p;
   p.dt = dt;
   p.N = samples;
+  if (!(options.minGmTauSamples > 0.0)) throw InputError("latent fit: minGmTauSamples must be > 0");
+  p.minT = options.minGmTauSamples * dt;
   std::vector<double> y;
   for (std::size_t i = 0; i < m.size(); ++i) {
     if (m[i] < 1 || (i > 0 && m[i] <= m[i - 1]))
@@ -372,7 +377,8 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
     throw InputError("latent fit: " + std::to_string(p.m.size()) + " Allan points in the range (m <= N/10, tau in [" +
                      fmt(options.tauMin) + ", " + fmt(options.tauMax) + "] s): too few for " +
                      std::to_string(minPar) + " parameters");
-  const double penalty = penaltyOf(p, options);
+  const double penalty = options.penaltyPerTerm;
+  if (!(std::isfinite(penalty) && penalty >= 0.0)) throw InputError("latent fit: penalty must be >= 0");
 
   // Pass 2 with Omega from the preliminary model; repeated (at most 3 times) while the winner
   // changes, as Omega depends on the model.

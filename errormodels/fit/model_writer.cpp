@@ -108,6 +108,50 @@ void writeAllanTerm(std::ostringstream& out, const AllanFit& fit, AllanTermKind 
   }
 }
 
+/// The latent fit's terms, each with its 1-sigma as a comment (latent_fit.hpp).
+void writeLatent(std::ostringstream& out, const LatentFit& f, const Units& u) {
+  const double rate = 1.0 / f.sampleInterval;
+  out << "    # composite latent-process fit (GLS on the octave Allan variance, tau "
+      << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
+      << "; chi2 " << num(f.chi2, 4) << " / " << f.dof << " dof (p = " << num(f.pValue, 3) << ")";
+  if (const LatentCandidate* r = f.runnerUp())
+    out << "; runner-up " << r->terms.name() << " (score +" << num(r->score - f.candidates.front().score, 3) << ")";
+  out << "\n";
+  for (const auto& w : f.warnings) out << "    # WARNING: " << w << "\n";
+  auto sd = [&](const std::string& name, const char* unit, double scale = 1.0) {
+    return q(scale * f.parameter(name).stdError, unit);
+  };
+  const LatentModel& m = f.model;
+  if (m.quantization > 0.0) {
+    out << "    # quantization lsb +- " << sd("quantization", u.increment, std::sqrt(12.0)) << " (1 sigma)\n";
+    out << "    - {type: quantization, lsb: " << q(std::sqrt(12.0) * m.quantization, u.increment) << "}\n";
+  }
+  if (m.white > 0.0) {
+    out << "    # white +- " << sd("white", u.density) << " (1 sigma)\n";
+    out << "    - {type: white, density: " << q(m.white, u.density) << "}\n";
+  }
+  for (std::size_t g = 0; g < m.gm.size(); ++g) {
+    const std::string n = "gm" + std::to_string(g + 1);
+    out << "    # " << n << ": sigma +- " << sd(n + ".sigma", u.level) << ", tau +- "
+        << num(f.parameter(n + ".tau").stdError, 4) << " s (1 sigma)\n";
+    out << "    - {type: gauss_markov, sigma: " << q(m.gm[g].sigma, u.level) << ", tau: "
+        << num(m.gm[g].tau, 7) << " s, rate: " << num(rate, 10) << " Hz}\n";
+  }
+  if (m.flicker > 0.0) {
+    out << "    # flicker +- " << sd("flicker", u.level) << " (1 sigma)\n";
+    out << "    - {type: bias_instability, B: " << q(m.flicker, u.level) << ", tau_range: ["
+        << num(f.tau.front(), 6) << " s, " << num(f.tau.back(), 6) << " s]}\n";
+  }
+  if (m.randomWalk > 0.0) {
+    out << "    # random_walk +- " << sd("random_walk", u.walk) << " (1 sigma)\n";
+    out << "    - {type: random_walk, K: " << q(m.randomWalk, u.walk) << "}\n";
+  }
+  if (m.drift > 0.0) {
+    out << "    # drift (ramp) +- " << sd("drift", u.slope) << " (1 sigma; the Allan variance does not give its sign)\n";
+    out << "    - {type: ramp, slope: " << q(m.drift, u.slope) << "}\n";
+  }
+}
+
 }  // namespace
 
 std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvenance& p) {
@@ -166,6 +210,7 @@ std::string modelYaml(const std::vector<AxisFitResult>& axes, const ModelProvena
         out << "    - {type: gauss_markov, sigma: " << q(g.sigma, u.level)
             << ", tau: " << num(g.tau, 7) << " s}\n";
       }
+      if (ax.latent) writeLatent(out, *ax.latent, u);
       if (ax.allan) {
         out << "    # Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
             << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6)
