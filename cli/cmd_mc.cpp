@@ -26,9 +26,11 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
+#include "sim/mc_models.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/measured.hpp"
 #include "sim/montecarlo.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/scenario.hpp"
 
 namespace sinsim::cli {
@@ -144,6 +146,29 @@ struct MpiSession {
 };
 #endif
 
+// The --measured options as values (angles and times parsed, SI).
+sim::MeasuredOptions measuredOptions(const Args& a) {
+  sim::MeasuredOptions o;
+  o.path = a.measured;
+  o.record = recordOptions(a.record);
+  o.lat = parseAngle(a.latitude, "--latitude");
+  o.lon = parseAngle(a.longitude, "--longitude");
+  o.h = parseQuantityAs(a.height, Dimension::length());
+  if (!a.attitude.empty()) {
+    const auto parts = splitList(a.attitude);
+    if (parts.size() != 3) throw InputError("--attitude: expected roll,pitch,yaw");
+    o.attitude = nav::Vec3(parseAngle(parts[0], "--attitude"), parseAngle(parts[1], "--attitude"),
+                           parseAngle(parts[2], "--attitude"));
+  }
+  o.heading = parseAngle(a.heading, "--heading");
+  if (!a.biasWindow.empty()) o.biasWindow = parseTime(a.biasWindow, "--bias-window");
+  if (!a.skip.empty()) o.skip = parseTime(a.skip, "--skip");
+  if (!a.duration.empty()) o.duration = parseTime(a.duration, "--duration");
+  o.strapdown.vertical = sim::verticalChannel(a.vertical, "--vertical");
+  o.outputRate = a.outputRate;
+  return o;
+}
+
 int runMc(const Args& a) {
   int rank = 0, size = 1;
   sim::McPartition partition;
@@ -173,96 +198,23 @@ int runMc(const Args& a) {
     // ---- the reference: a scenario, or a static one matching a measured record ------------------
     sim::Scenario sc;
     std::string scenarioIdentity;
-    std::optional<errormodels::Record> record;
+    std::optional<sim::MeasuredSetup> measuredSetup;
     double biasWindow = a.biasWindow.empty() ? 0.0 : parseTime(a.biasWindow, "--bias-window");
     if (!a.measured.empty()) {
       if (!a.scenario.empty())
         throw InputError("give either a scenario or --measured (the measured record defines a "
                          "static scenario), not both");
       if (a.models.empty()) throw InputError("--measured needs at least one --model to compare with");
-      record = errormodels::loadRecord(a.measured, recordOptions(a.record));
-      for (int ax = 0; ax < 3; ++ax)
-        if (!record->hasGyro(ax) || !record->hasAccel(ax))
-          throw InputError(a.measured + ": the record needs the columns gx, gy, gz, ax, ay, az");
-      const double rate = record->rate_hz;
-      if (!a.skip.empty()) {  // drop a warm-up: the navigation starts after it
-        const double s = parseTime(a.skip, "--skip");
-        const auto k = std::size_t(std::llround(std::max(0.0, s) * rate));
-        if (k >= record->size())
-          throw InputError("--skip " + a.skip + " leaves nothing of " + a.measured);
-        auto drop = [k](std::vector<double>& v) {
-          if (!v.empty()) v.erase(v.begin(), v.begin() + long(k));
-        };
-        for (int ax = 0; ax < 3; ++ax) {
-          drop(record->gyro[ax]);
-          drop(record->accel[ax]);
-        }
-        drop(record->t);
-        drop(record->temperature);
-        record->rows -= k;
-      }
-      std::size_t n = record->size();
-      if (!a.duration.empty()) {
-        const double d = parseTime(a.duration, "--duration");
-        if (!(d > 0)) throw InputError("--duration must be positive");
-        n = std::min(n, std::size_t(std::llround(d * rate)));
-      }
-      const auto perOut = std::llround(rate / a.outputRate);
-      n -= n % std::size_t(perOut);  // whole output epochs
-      if (n == 0) throw InputError(a.measured + ": the record is shorter than one output epoch");
-      if (a.biasWindow.empty()) biasWindow = std::min(60.0, 0.1 * double(n) / rate);
-      // Attitude: stated, or levelled from the mean specific force over the bias window.
-      nav::Vec3 rpy;
-      if (!a.attitude.empty()) {
-        const auto parts = splitList(a.attitude);
-        if (parts.size() != 3) throw InputError("--attitude: expected roll,pitch,yaw");
-        rpy = nav::Vec3(parseAngle(parts[0], "--attitude"), parseAngle(parts[1], "--attitude"),
-                        parseAngle(parts[2], "--attitude"));
-      } else {
-        rpy = sim::levelAttitude(*record, std::size_t(std::llround(std::max(biasWindow, 1.0) * rate)),
-                                 parseAngle(a.heading, "--heading"));
-      }
-      const std::string yaml = sim::staticScenarioYaml(
-          "measured-" + fs::path(a.measured).stem().stem().string(),
-          parseAngle(a.latitude, "--latitude"), parseAngle(a.longitude, "--longitude"),
-          parseQuantityAs(a.height, Dimension::length()), rpy, rate, a.outputRate, a.vertical,
-          double(n) / rate);
-      sc = sim::parseScenario(yaml, "(static scenario of " + a.measured + ")");
-      scenarioIdentity = yaml;
+      measuredSetup = sim::prepareMeasured(measuredOptions(a));
+      sc = measuredSetup->scenario;
+      scenarioIdentity = measuredSetup->identity;
+      biasWindow = measuredSetup->biasWindow;
     } else {
       if (a.scenario.empty()) throw InputError("name a scenario file (or give --measured DATA.csv)");
       sc = sim::loadScenario(a.scenario);
       scenarioIdentity = slurp(a.scenario);
     }
-
-    // ---- models ------------------------------------------------------------------------------------
-    std::vector<sim::McModel> models;
-    auto addModel = [&](sim::McModel m) {
-      std::string base = m.label;
-      for (int k = 2;; ++k) {
-        bool clash = false;
-        for (const auto& o : models) clash = clash || o.label == m.label;
-        if (!clash) break;
-        m.label = base + "-" + std::to_string(k);
-      }
-      models.push_back(std::move(m));
-    };
-    if (a.models.empty()) {
-      addModel({"scenario-errors", sc.errors, "inline/scenario:" + scenarioIdentity});
-    }
-    for (const auto& f : a.models) {
-      if (f == "none") {
-        addModel({"none", errormodels::ImuErrorModel::none(), "none"});
-        continue;
-      }
-      sim::McModel m{fs::path(f).stem().string(), errormodels::ImuErrorModel::load(f), slurp(f)};
-      if (!m.model.empty() && m.model.needsTemperature() && !sc.temperature.present)
-        throw InputError("the error model " + f + " has temperature-dependent effects but the "
-                         "scenario has no temperature profile");
-      addModel(std::move(m));
-    }
-    for (const auto& m : models)  // refuse a model that cannot run at the IMU rate, before any file
-      if (!m.model.empty()) m.model.instantiate(sc.imuRate, {0, 0});
+    const std::vector<sim::McModel> models = sim::loadMcModels(a.models, sc, scenarioIdentity);
 
     sim::McOptions opt;
     opt.runs = a.runs;
@@ -288,11 +240,8 @@ int runMc(const Args& a) {
     const sim::Reference ref = sim::buildReference(sc);
 
     sim::McMeasured measured;
-    if (record) {
-      measured.source = a.measured;
-      measured.errors.resize(ref.epochs() * sim::kErrorFields);
-      sim::RecordReplay replay(*record, ref.imuRate);
-      sim::navigateRealisation(ref, &replay, opt.navigate, measured.errors.data());
+    if (measuredSetup) {
+      measured = sim::navigateMeasured(*measuredSetup, ref, opt.navigate);
       opt.measured = &measured;
     }
 
@@ -316,6 +265,13 @@ int runMc(const Args& a) {
     if (tty) std::fputs("\n", stderr);
 
     if (rank != 0) return r.complete ? 0 : 130;
+    if (!r.damaged.empty()) {
+      std::cerr << "sinsim mc: " << r.damaged.size()
+                << " damaged checkpoint(s) (checksum mismatch, truncated or unreadable) were "
+                   "recomputed:";
+      for (const auto& p : r.damaged) std::cerr << " " << p;
+      std::cerr << "\n";
+    }
     const double steps = double(r.runsComputedAll) * double(ref.samples.size());
     if (!r.complete) {
       std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
@@ -331,32 +287,15 @@ int runMc(const Args& a) {
     for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
     std::cout << ")\n  " << r.runsComputedAll << " runs computed";
     if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
+    if (!r.damaged.empty()) std::cout << " (" << r.damaged.size() << " damaged checkpoint(s) recomputed)";
     std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
               << " s CPU, " << r.threads << " thread(s)"
               << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
               << "; " << fmt(steps / std::max(r.wallTime, 1e-9) / 1e6, "%.2f")
               << " M IMU steps/s\n";
-    // One line per model at the last report time.
-    sim::McBatch batch(ref);
-    batch.runs = opt.runs;
-    for (std::size_t m = 0; m < models.size(); ++m) {
-      batch.entries.push_back({models[m].label, "", -1, ""});
-    }
-    batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models.size()));
-    const std::size_t eLast = ref.epochs() - 1;
-    for (std::size_t m = 0; m < models.size(); ++m) {
-      auto v = sim::metricAcrossRuns(batch, m, eLast, sim::kHorizontal);
-      std::sort(v.begin(), v.end());
-      const double n = double(v.size());
-      auto pct = [&](double p) {
-        const double h = (n - 1) * p / 100;
-        const std::size_t i = std::size_t(h);
-        return i + 1 < v.size() ? v[i] + (h - double(i)) * (v[i + 1] - v[i]) : v.back();
-      };
-      std::cout << "  " << models[m].label << ": horizontal error at " << ref.epochTime(eLast)
-                << " s: CEP " << fmt(pct(50), "%.4g") << " m, R95 " << fmt(pct(95), "%.4g")
-                << " m\n";
-    }
+    for (const sim::McHeadline& h : sim::mcHeadlines(ref, r, models.size()))
+      std::cout << "  " << h.label << ": horizontal error at " << h.t << " s: CEP "
+                << fmt(h.cep, "%.4g") << " m, R95 " << fmt(h.r95, "%.4g") << " m\n";
     return 0;
   } catch (...) {
 #ifdef SINSIM_HAVE_MPI

@@ -1,11 +1,15 @@
 // sinsim — strapdown INS simulator and inertial-sensor error-model lab.
 // Exit codes: 0 success, 1 bad input or failed run (message on stderr), 2 bad command line.
+#include <csignal>
 #include <iostream>
 
 #include "cli/commands.hpp"
 #include "common/error.hpp"
 
 int main(int argc, char** argv) {
+  // Beyond a file size limit (ulimit -f) a write fails with EFBIG and is reported with the file's
+  // name, instead of SIGXFSZ killing the process without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"sinsim: strapdown INS simulator and inertial-sensor error-model lab"};
   app.require_subcommand(0, 1);
   sinsim::cli::Action action;

@@ -4,15 +4,17 @@
 #   1. fit AR(5) per channel as the seed paper does (Burg, order 5, raw record)
 #   2. diagnose the AR(5) model against the record (JSON + HTML)
 #   3. add every reported finding and the warm-up, refit, diagnose again (before -> after)
-#   4. screenshots of the reports (headless Chromium) for docs/diagnose/
-# Usage: scripts/diagnose_walkthrough.sh [BUILD_DIR] [OUT_DIR]     (defaults build, build/walkthrough)
+#   4. screenshots of the reports (headless Chromium), cropped into PICTURE_DIR
+# Usage: scripts/diagnose_walkthrough.sh [BUILD_DIR] [OUT_DIR] [PICTURE_DIR]
+#        (defaults build, build/walkthrough, OUT_DIR; scripts/figures.sh docs passes docs/diagnose)
 set -eu
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 out=${2:-$build/walkthrough}
+pictures=${3:-$out}
 data=${SINSIM_DATA:-$here/../shared/data/adis16405/run1.csv.gz}
 units="--rate 100 --gyro-unit deg/s --accel-unit g"
-mkdir -p "$out"
+mkdir -p "$out" "$pictures"
 "$build/sinsim" fit "$data" $units --kind ar --order 5 -o "$out/ar5.yaml" -q
 /usr/bin/time -f "diagnose wall %e s, CPU %U s user" \
   "$build/sinsim" diagnose "$data" $units --model "$out/ar5.yaml" \
@@ -26,9 +28,9 @@ if command -v chromium >/dev/null 2>&1; then
       --window-size=1150,3300 --screenshot="$out/$page.png" "file://$out/$page.html" >/dev/null 2>&1
   done
   rm -rf "$profile"
-  # The README's pictures (Debian python3-pil): the overview with gx, and gx before -> after.
+  # The docs' pictures (Debian python3-pil): the overview with gx, and gx before -> after.
   # The crop boxes fit the page as laid out for this record.
-  /usr/bin/python3 - "$out" "$here/docs/diagnose" <<'PY' || echo "(no PIL: pictures not cropped)"
+  /usr/bin/python3 - "$out" "$pictures" <<'PY' || echo "(no PIL: pictures not cropped)"
 import sys
 from PIL import Image
 out, docs = sys.argv[1], sys.argv[2]

@@ -1,9 +1,12 @@
 #include "sim/measured.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <cstdio>
+#include <filesystem>
 
 #include "common/error.hpp"
+#include "nav/attitude.hpp"
 
 namespace sinsim::sim {
 
@@ -18,31 +21,127 @@ nav::Vec3 levelAttitude(const errormodels::Record& record, std::size_t n, double
   return nav::Vec3(std::atan2(-f[1], -f[2]), std::atan2(f[0], std::hypot(f[1], f[2])), yaw);
 }
 
-std::string staticScenarioYaml(const std::string& name, double lat, double lon, double h,
-                               const nav::Vec3& rpy, double imuRate, double outputRate,
-                               const std::string& vertical, double duration) {
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  std::ostringstream y;
-  y.precision(17);
-  y << "name: " << name << "\n"
-    << "start:\n  latitude: " << lat * kDeg << " deg\n  longitude: " << lon * kDeg << " deg\n"
-    << "  height: " << h << " m\n"
-    << "  attitude: {roll: " << rpy.x() * kDeg << " deg, pitch: " << rpy.y() * kDeg
-    << " deg, yaw: " << rpy.z() * kDeg << " deg}\n"
-    << "imu_rate: " << imuRate << " Hz\noutput_rate: " << outputRate << " Hz\n"
-    << "vertical: " << vertical << "\nerrors: none\n"
-    << "segments:\n  - {type: static, duration: " << duration << " s}\n";
-  return y.str();
+Scenario staticScenario(const std::string& name, const MotionStart& start, double imuRate,
+                        double outputRate, const nav::StrapdownOptions& strapdown,
+                        double duration) {
+  constexpr double kMaxLatitude = 89.0 * M_PI / 180.0;  // as the scenario file's start.latitude
+  if (!(std::isfinite(start.lat) && std::abs(start.lat) <= kMaxLatitude))
+    throw InputError(name + ": expected a latitude within ±89 deg (the NED frame is singular at "
+                     "the poles)");
+  if (!(std::isfinite(start.lon) && std::isfinite(start.h) && std::isfinite(start.roll) &&
+        std::isfinite(start.pitch) && std::isfinite(start.heading)))
+    throw InputError(name + ": the start position and attitude must be finite");
+  if (!(std::abs(start.pitch) < M_PI / 2))
+    throw InputError(name + ": expected a pitch within ±90 deg");
+  if (!(std::isfinite(imuRate) && imuRate > 0 && std::isfinite(outputRate) && outputRate > 0))
+    throw InputError(name + ": expected positive IMU and output rates");
+  const double ratio = imuRate / outputRate;
+  if (!(ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) < 1e-6))
+    throw InputError(name + ": the output rate must divide the IMU rate into a whole number of "
+                     "samples");
+  Scenario sc;
+  sc.name = name;
+  sc.start = start;
+  sc.start.lon = nav::wrapAngle(start.lon);
+  sc.start.speed = 0.0;
+  sc.imuRate = imuRate;
+  sc.outputRate = outputRate;
+  sc.strapdown = strapdown;
+  Segment seg;
+  seg.kind = SegmentKind::Static;
+  seg.type = "static";
+  seg.duration = duration;
+  PlanCursor c;
+  c.heading = sc.start.heading;
+  c.h = sc.start.h;
+  const std::string problem = planSegment(seg, c);
+  if (!problem.empty()) throw InputError(name + ": " + problem);
+  sc.segments.push_back(seg);
+  return sc;
 }
 
-void RecordReplay::corrupt(nav::ImuSample& s, double) {
-  const long long k = std::llround(s.t * rate_) - 1;
-  if (k < 0 || std::size_t(k) >= rec_.size())
-    throw InputError(rec_.source + ": the record has no sample for t = " + std::to_string(s.t) + " s");
-  for (int a = 0; a < 3; ++a) {
-    s.dtheta_b[a] = rec_.gyro[a][std::size_t(k)] * s.dt;
-    s.dv_b[a] = rec_.accel[a][std::size_t(k)] * s.dt;
+namespace {
+
+void dropHead(errormodels::Record& r, std::size_t k) {
+  auto drop = [k](std::vector<double>& v) {
+    if (!v.empty()) v.erase(v.begin(), v.begin() + long(k));
+  };
+  for (int ax = 0; ax < 3; ++ax) {
+    drop(r.gyro[ax]);
+    drop(r.accel[ax]);
   }
+  drop(r.t);
+  drop(r.temperature);
+  r.rows -= k;
+}
+
+// Every value the static scenario is built from, exactly (hexadecimal floats), for resume checks.
+std::string identityText(const Scenario& sc) {
+  char buf[512];
+  const MotionStart& s = sc.start;
+  std::snprintf(buf, sizeof buf,
+                "static %s lat %a lon %a h %a roll %a pitch %a yaw %a imu %a out %a vertical %d "
+                "tau %a duration %a",
+                sc.name.c_str(), s.lat, s.lon, s.h, s.roll, s.pitch, s.heading, sc.imuRate,
+                sc.outputRate, int(sc.strapdown.vertical), sc.strapdown.dampingTimeConstant,
+                sc.duration());
+  return buf;
+}
+
+}  // namespace
+
+MeasuredSetup prepareMeasured(const MeasuredOptions& o) {
+  MeasuredSetup m;
+  m.record = errormodels::loadRecord(o.path, o.record);
+  errormodels::Record& rec = m.record;
+  for (int ax = 0; ax < 3; ++ax)
+    if (!rec.hasGyro(ax) || !rec.hasAccel(ax))
+      throw InputError(o.path + ": the record needs the columns gx, gy, gz, ax, ay, az");
+  const double rate = rec.rate_hz;
+  if (o.skip != 0.0) {  // drop a warm-up: the navigation starts after it
+    const auto k = std::size_t(std::llround(std::max(0.0, o.skip) * rate));
+    if (k >= rec.size())
+      throw InputError("--skip " + std::to_string(o.skip) + " s leaves nothing of " + o.path);
+    dropHead(rec, k);
+  }
+  std::size_t n = rec.size();
+  if (o.duration) {
+    if (!(*o.duration > 0)) throw InputError("--duration must be positive");
+    n = std::min(n, std::size_t(std::llround(*o.duration * rate)));
+  }
+  if (!(std::isfinite(o.outputRate) && o.outputRate > 0))
+    throw InputError("--output-rate must be positive");
+  const auto perOut = std::llround(rate / o.outputRate);
+  if (perOut < 1) throw InputError(o.path + ": the output rate exceeds the record's rate");
+  n -= n % std::size_t(perOut);  // whole output epochs
+  if (n == 0) throw InputError(o.path + ": the record is shorter than one output epoch");
+  m.biasWindow = o.biasWindow ? *o.biasWindow : std::min(60.0, 0.1 * double(n) / rate);
+
+  MotionStart start;
+  start.lat = o.lat;
+  start.lon = o.lon;
+  start.h = o.h;
+  const nav::Vec3 rpy =
+      o.attitude ? *o.attitude
+                 : levelAttitude(rec, std::size_t(std::llround(std::max(m.biasWindow, 1.0) * rate)),
+                                 o.heading);
+  start.roll = rpy.x();
+  start.pitch = rpy.y();
+  start.heading = rpy.z();
+  const std::string name = "measured-" + std::filesystem::path(o.path).stem().stem().string();
+  m.scenario = staticScenario(name, start, rate, o.outputRate, o.strapdown, double(n) / rate);
+  m.identity = identityText(m.scenario);
+  return m;
+}
+
+McMeasured navigateMeasured(const MeasuredSetup& setup, const Reference& ref,
+                            const NavigateOptions& options) {
+  McMeasured measured;
+  measured.source = setup.record.source;
+  measured.errors.resize(ref.epochs() * kErrorFields);
+  RecordSource source(ref, setup.record);
+  navigateErrors(source, ref, options, measured.errors.data());
+  return measured;
 }
 
 }  // namespace sinsim::sim

@@ -1,14 +1,19 @@
 // A measured static record as a Monte Carlo participant: the static scenario it was recorded in,
-// the attitude levelled from its data, and a corruptor that replays it in place of the ideal IMU,
-// so that it runs through exactly the same navigation (and initial-bias removal) as the models.
+// the attitude levelled from its data, and its replay (RecordSource, sim/imu_source.hpp) through
+// exactly the same navigation loop (and initial-bias removal) as the models' runs.
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <vector>
 
-#include "errormodels/imu_model.hpp"
 #include "errormodels/stats/record.hpp"
+#include "nav/strapdown.hpp"
 #include "nav/types.hpp"
+#include "sim/montecarlo.hpp"
+#include "sim/reference.hpp"
+#include "sim/scenario.hpp"
 
 namespace sinsim::sim {
 
@@ -17,22 +22,45 @@ namespace sinsim::sim {
 /// (Titterton & Weston 2004 §10.2, coarse levelling). Returns (roll, pitch, yaw).
 nav::Vec3 levelAttitude(const errormodels::Record& record, std::size_t n, double yaw);
 
-/// Scenario text of a vehicle at rest at (lat, lon [rad], h [m]) with attitude rpy [rad] for
-/// duration [s], IMU at imuRate, statistics at outputRate [Hz], vertical channel `vertical`.
-std::string staticScenarioYaml(const std::string& name, double lat, double lon, double h,
-                               const nav::Vec3& rpy, double imuRate, double outputRate,
-                               const std::string& vertical, double duration);
-
-/// Replaces the ideal increments of sample k (ending at t = (k + 1)/rate) by the record's rates
-/// times dt. The record must outlive the replay and hold every sample asked for.
-class RecordReplay final : public errormodels::ImuCorruptor {
- public:
-  RecordReplay(const errormodels::Record& record, double rate) : rec_(record), rate_(rate) {}
-  void corrupt(nav::ImuSample& sample, double temperature) override;
-
- private:
-  const errormodels::Record& rec_;
-  double rate_;  // [Hz]
+/// Where and how a static record was taken, and how much of it to use (sinsim mc --measured).
+struct MeasuredOptions {
+  std::string path;                   // CSV (or .gz) with gx, gy, gz, ax, ay, az
+  errormodels::RecordOptions record;  // units, rate, irregular time
+  double lat = 0.0, lon = 0.0;        // [rad]
+  double h = 0.0;                     // [m] above the WGS-84 ellipsoid
+  /// Roll, pitch, yaw [rad]; unset: levelled from the mean specific force over
+  /// max(bias window, 1 s), yaw = heading.
+  std::optional<nav::Vec3> attitude;
+  double heading = 0.0;                 // [rad]
+  std::optional<double> biasWindow;     // [s]; unset: min(60 s, 10 % of the used record)
+  double skip = 0.0;                    // [s] dropped from the start (a warm-up)
+  std::optional<double> duration;       // [s] used after the skip; unset: all
+  nav::StrapdownOptions strapdown{nav::VerticalChannel::Held, 100.0};
+  double outputRate = 1.0;              // [Hz] statistics epochs
 };
+
+/// The record (warm-up dropped) and the static scenario it defines.
+struct MeasuredSetup {
+  errormodels::Record record;
+  Scenario scenario;   // at rest for the whole epochs of the record used, no error model
+  double biasWindow;   // [s]
+  std::string identity;  // text that identifies the scenario for checkpoint resume checks
+};
+
+/// Loads and checks the record and builds its static scenario (a typed value: no YAML round
+/// trip). Throws InputError naming the file for a record without the six IMU columns, a skip
+/// that leaves nothing, a record shorter than one output epoch, or an invalid place.
+MeasuredSetup prepareMeasured(const MeasuredOptions& options);
+
+/// A vehicle at rest at start (lat, lon, h, roll, pitch, heading) for `duration` [s], IMU at
+/// imuRate, statistics at outputRate [Hz]. Throws InputError for values a scenario file could
+/// not hold (latitude beyond ±89°, rates that do not divide, non-positive duration).
+Scenario staticScenario(const std::string& name, const MotionStart& start, double imuRate,
+                        double outputRate, const nav::StrapdownOptions& strapdown,
+                        double duration);
+
+/// The record navigated along ref (built from setup.scenario): its errors at every output epoch.
+McMeasured navigateMeasured(const MeasuredSetup& setup, const Reference& ref,
+                            const NavigateOptions& options);
 
 }  // namespace sinsim::sim

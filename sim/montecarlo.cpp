@@ -16,155 +16,13 @@
 #include <thread>
 
 #include "common/error.hpp"
+#include "sim/mc_checkpoint.hpp"
 #include "sim/mc_output.hpp"
 
 namespace sinsim::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ---- fingerprints (FNV-1a 64): what a checkpoint was computed from -----------------------------
-
-struct Fnv {
-  std::uint64_t h = 1469598103934665603ull;
-  void bytes(const void* p, std::size_t n) {
-    const auto* c = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) {
-      h ^= c[i];
-      h *= 1099511628211ull;
-    }
-  }
-  void text(const std::string& s) {
-    const std::uint64_t n = s.size();
-    bytes(&n, sizeof n);
-    bytes(s.data(), s.size());
-  }
-  template <class T>
-  void value(const T& v) {
-    bytes(&v, sizeof v);
-  }
-};
-
-std::uint64_t referenceFingerprint(const Reference& ref, const McOptions& opt) {
-  Fnv f;
-  f.text("sinsim-mc 1");
-  f.text(opt.scenarioIdentity);
-  f.value(ref.imuRate);
-  f.value(ref.decimation);
-  f.value(int(ref.strapdown.vertical));
-  f.value(ref.strapdown.dampingTimeConstant);
-  f.value(ref.temperature.present);
-  f.value(ref.temperature.start);
-  f.value(ref.temperature.rate);
-  const nav::NavState& s0 = ref.initial;
-  f.value(s0.lat);
-  f.value(s0.lon);
-  f.value(s0.h);
-  f.bytes(s0.v_n.data(), 3 * sizeof(double));
-  f.bytes(s0.q_nb.coeffs().data(), 4 * sizeof(double));
-  for (const auto& s : ref.samples) {
-    f.value(s.t);
-    f.value(s.dt);
-    f.bytes(s.dtheta_b.data(), 3 * sizeof(double));
-    f.bytes(s.dv_b.data(), 3 * sizeof(double));
-  }
-  f.bytes(ref.hRef.data(), ref.hRef.size() * sizeof(double));
-  f.value(opt.seed);
-  f.value(opt.navigate.biasWindow);
-  f.value(kChunkRuns);
-  return f.h;
-}
-
-std::uint64_t modelFingerprint(std::uint64_t base, const McModel& m) {
-  Fnv f;
-  f.value(base);
-  f.text(m.identity);
-  for (const auto& n : m.model.effectNames()) f.text(n);
-  return f.h;
-}
-
-std::string fileSafe(const std::string& s) {
-  std::string r;
-  for (char c : s)
-    r += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
-  return r;
-}
-
-// ---- chunk files ---------------------------------------------------------------------------------
-
-constexpr char kMagic[8] = {'S', 'S', 'M', 'C', 'C', 'H', 'K', '1'};
-
-struct ChunkHeader {
-  char magic[8];
-  std::uint64_t fingerprint;
-  std::uint64_t first;
-  std::uint64_t count;
-  std::uint64_t epochs;
-  std::uint64_t fields;
-};
-
-struct Work {
-  std::size_t model;
-  std::uint64_t first, count;
-};
-
-std::string chunkPath(const std::string& dir, const std::string& modelDir, std::uint64_t first) {
-  char name[32];
-  std::snprintf(name, sizeof name, "r%09llu.bin", static_cast<unsigned long long>(first));
-  return (fs::path(dir) / "runs" / modelDir / name).string();
-}
-
-enum class ChunkState { missing, valid, foreign };
-
-// Reads a chunk file into out (count × epochs × fields floats) when it matches.
-ChunkState readChunk(const std::string& path, std::uint64_t fingerprint, const Work& w,
-                     std::size_t epochs, float* out) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return ChunkState::missing;
-  ChunkHeader h{};
-  ChunkState st = ChunkState::missing;  // damaged or short: recompute
-  if (std::fread(&h, sizeof h, 1, f) == 1 && std::memcmp(h.magic, kMagic, 8) == 0) {
-    if (h.fingerprint != fingerprint) {
-      st = ChunkState::foreign;
-    } else if (h.first == w.first && h.count == w.count && h.epochs == epochs &&
-               h.fields == kErrorFields) {
-      const std::size_t n = std::size_t(w.count) * epochs * kErrorFields;
-      if (!out) {
-        // only check the size
-        std::fseek(f, 0, SEEK_END);
-        if (std::size_t(std::ftell(f)) == sizeof h + n * sizeof(float)) st = ChunkState::valid;
-      } else if (std::fread(out, sizeof(float), n, f) == n && std::fgetc(f) == EOF) {
-        st = ChunkState::valid;
-      }
-    }
-  }
-  std::fclose(f);
-  return st;
-}
-
-void writeChunk(const std::string& path, std::uint64_t fingerprint, const Work& w,
-                std::size_t epochs, const float* data) {
-  ChunkHeader h{};
-  std::memcpy(h.magic, kMagic, 8);
-  h.fingerprint = fingerprint;
-  h.first = w.first;
-  h.count = w.count;
-  h.epochs = epochs;
-  h.fields = kErrorFields;
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid()) + "." +
-                          std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw Error("cannot write " + tmp);
-  const std::size_t n = std::size_t(w.count) * epochs * kErrorFields;
-  bool ok = std::fwrite(&h, sizeof h, 1, f) == 1 && std::fwrite(data, sizeof(float), n, f) == n;
-  ok = (std::fclose(f) == 0) && ok;
-  std::error_code ec;
-  if (ok) fs::rename(tmp, path, ec);
-  if (!ok || ec) {
-    fs::remove(tmp, ec);
-    throw Error("cannot write checkpoint " + path + " (disk full?)");
-  }
-}
 
 double processCpuTime() {
   timespec ts{};
@@ -230,74 +88,38 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
 
   const std::uint64_t base = referenceFingerprint(ref, opt);
   std::vector<std::uint64_t> fps;
-  std::vector<std::string> dirs;
+  std::vector<std::string> labels;
   for (const auto& m : models) {
     fps.push_back(modelFingerprint(base, m));
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fps.back()));
-    dirs.push_back(fileSafe(m.label).substr(0, 80) + "-" + std::string(hex, 8));
+    labels.push_back(m.label);
   }
+  CheckpointStore store(opt.outDir, ref.epochs(), labels, fps);
 
-  std::vector<Work> all;
+  std::vector<ChunkKey> all;
   for (std::uint64_t first = 0; first < opt.runs; first += kChunkRuns)
     for (std::size_t m = 0; m < models.size(); ++m)
       all.push_back({m, first, std::min(kChunkRuns, opt.runs - first)});
 
-  // ---- the folder (rank 0 prepares it; the others wait) ------------------------------------------
-  const fs::path runsDir = fs::path(opt.outDir) / "runs";
-  if (opt.partition.rank == 0) {
-    std::error_code ec;
-    if (fs::exists(opt.outDir, ec) && !fs::is_directory(opt.outDir, ec))
-      throw InputError("output folder " + opt.outDir + " exists and is not a folder");
-    if (!opt.resume && fs::exists(runsDir, ec) && !fs::is_empty(runsDir, ec))
-      throw InputError(opt.outDir + " holds the checkpoints of a batch (" + runsDir.string() +
-                       "); pass --resume to continue it, or choose another folder");
-    if (opt.resume && fs::exists(runsDir, ec)) {
-      // Chunks computed from other inputs mean the user is resuming the wrong batch.
-      for (std::size_t m = 0; m < models.size(); ++m) {
-        if (fs::exists(runsDir / dirs[m], ec)) continue;
-        for (const auto& entry : fs::directory_iterator(runsDir, ec)) {
-          const std::string n = entry.path().filename().string();
-          const std::string stem = fileSafe(models[m].label).substr(0, 80) + "-";
-          if (n.rfind(stem, 0) == 0)
-            throw InputError("cannot resume " + opt.outDir + ": its checkpoints of model " +
-                             models[m].label + " were computed from other inputs (scenario, "
-                             "model, seed or bias window changed); remove " +
-                             (runsDir / n).string() + " or choose another folder");
-        }
-      }
-    }
-    // Temporaries of a process that was killed while writing: never valid, remove them.
-    if (fs::exists(opt.outDir, ec)) {
-      std::vector<fs::path> stale;
-      for (auto it = fs::recursive_directory_iterator(opt.outDir, ec);
-           it != fs::recursive_directory_iterator(); it.increment(ec))
-        if (it->is_regular_file(ec) && it->path().filename().string().find(".tmp.") != std::string::npos)
-          stale.push_back(it->path());
-      for (const auto& p : stale) fs::remove(p, ec);
-    }
-    for (const auto& d : dirs) {
-      fs::create_directories(runsDir / d, ec);
-      if (ec) throw InputError("cannot create " + (runsDir / d).string() + ": " + ec.message());
-    }
-  }
+  // ---- the folder (rank 0 prepares and locks it; the others wait) -------------------------------
+  if (opt.partition.rank == 0) store.prepare(opt.resume);
   if (opt.partition.barrier) opt.partition.barrier();
 
   // ---- this process's pending chunks --------------------------------------------------------------
   McResult result;
   result.runsTotal = opt.runs * models.size();
-  std::vector<Work> pending;
+  std::vector<ChunkKey> pending;
   std::uint64_t pendingRuns = 0;
   for (std::size_t w = 0; w < all.size(); ++w) {
-    const Work& wk = all[w];
-    const std::string path = chunkPath(opt.outDir, dirs[wk.model], wk.first);
-    const ChunkState st = readChunk(path, fps[wk.model], wk, ref.epochs(), nullptr);
-    if (st == ChunkState::foreign)
-      throw InputError("cannot resume: checkpoint " + path + " was computed from other inputs");
-    if (st == ChunkState::valid) {
+    const ChunkKey& wk = all[w];
+    const CheckpointStore::State st = store.read(wk, nullptr);
+    if (st == CheckpointStore::State::foreign)
+      throw InputError("cannot resume: checkpoint " + store.path(wk) +
+                       " was computed from other inputs");
+    if (st == CheckpointStore::State::valid) {
       result.runsResumed += wk.count;
       continue;
     }
+    if (st == CheckpointStore::State::damaged) result.damaged.push_back(store.path(wk));
     if (int(w % std::size_t(opt.partition.size)) != opt.partition.rank) continue;
     pending.push_back(wk);
     pendingRuns += wk.count;
@@ -336,7 +158,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
         if (g >= pendingRuns) break;
         const auto ci = std::size_t(
             std::upper_bound(chunkStart.begin(), chunkStart.end(), g) - chunkStart.begin() - 1);
-        const Work& wk = pending[ci];
+        const ChunkKey& wk = pending[ci];
         const std::uint64_t r = g - chunkStart[ci];
         OpenChunk* oc = nullptr;
         {
@@ -357,8 +179,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
         const std::uint64_t done = runsDone.fetch_add(1) + 1;
         if (opt.stopAfterRuns && done >= opt.stopAfterRuns) stop.store(true);
         if (oc->remaining.fetch_sub(1) == 1) {  // the chunk's last run: every other is stored
-          writeChunk(chunkPath(opt.outDir, dirs[wk.model], wk.first), fps[wk.model], wk,
-                     ref.epochs(), oc->buf.data());
+          store.write(wk, oc->buf.data());
           std::lock_guard<std::mutex> lock(mu);
           open[ci].reset();
         }
@@ -411,11 +232,9 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     bool complete = true;
     batch.errors.assign(models.size(), {});
     for (std::size_t m = 0; m < models.size(); ++m) batch.errors[m].resize(opt.runs * perRun);
-    for (const Work& wk : all) {
+    for (const ChunkKey& wk : all) {
       float* dst = batch.errors[wk.model].data() + wk.first * perRun;
-      if (readChunk(chunkPath(opt.outDir, dirs[wk.model], wk.first), fps[wk.model], wk,
-                    ref.epochs(), dst) != ChunkState::valid)
-        complete = false;
+      if (store.read(wk, dst) != CheckpointStore::State::valid) complete = false;
     }
     result.complete = complete;
     if (complete) {

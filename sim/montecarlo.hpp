@@ -9,10 +9,11 @@
 // Results are stored per (model, run) and reduced in run order, so every output file is
 // bit-identical for any thread count, rank count, and after interruption + --resume.
 //
-// Checkpoints. Runs are grouped in chunks of kChunkRuns consecutive runs of one model; each
-// finished chunk is written to DIR/runs/ as a binary file via a temporary + rename, so a chunk file
-// is either complete or absent. An interrupted batch (Ctrl-C, kill, power cut between chunks)
-// resumes from the chunks present; a chunk is recomputed when its file is missing or damaged.
+// Checkpoints (sim/mc_checkpoint.hpp). Runs are grouped in chunks of kChunkRuns consecutive runs
+// of one model; each finished chunk is written to DIR/runs/ with a CRC-32, via a temporary +
+// rename. An interrupted batch (Ctrl-C, kill, power cut between chunks) resumes from the chunks
+// present; a chunk is recomputed when its file is missing or damaged (McResult::damaged). The
+// folder is locked (flock) while a batch runs: a second process is refused.
 // Threads take single runs (not chunks), so they stay busy to the end of a batch.
 #pragma once
 
@@ -93,6 +94,9 @@ struct McResult {
   std::uint64_t runsComputedAll = 0;  // by every process (MPI ranks) in this session
   std::uint64_t runsResumed = 0;   // found in checkpoints at the start
   std::uint64_t runsTotal = 0;     // runs × (models incl. budget variants)
+  /// Checkpoints found damaged (checksum mismatch, truncated, zeroed, older format) and
+  /// therefore recomputed by this session (their paths; rank 0 sees every one).
+  std::vector<std::string> damaged;
   std::vector<std::string> files;  // outputs written (rank 0, when complete)
   double wallTime = 0.0;           // [s]
   double cpuTime = 0.0;            // [s] of this process

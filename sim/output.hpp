@@ -37,4 +37,28 @@ class OutputFiles {
   std::vector<File> files_;
 };
 
+/// An advisory lock (flock) on an output folder, held for the object's lifetime, so that two
+/// sinsim processes never write into one folder at once (the second is refused, even with
+/// --resume). Advisory: it guards against sinsim, not against other programs.
+class FolderLock {
+ public:
+  /// Locks the existing folder dir; throws InputError when another process holds it.
+  explicit FolderLock(const std::string& dir);
+  ~FolderLock();
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+/// Removes the temporaries a killed sinsim left in dir (and its subfolders when recursive): files
+/// named as sinsim names them (".NAME.tmp.PID", "NAME.tmp.PID.THREAD"), nothing else. Call only
+/// while holding the folder's FolderLock. Returns how many were removed.
+std::size_t removeStaleTemporaries(const std::string& dir, bool recursive);
+
+/// "cannot write PATH: <strerror(err)>", with a hint for a full disk or a file size limit
+/// (ulimit -f; sinsim ignores SIGXFSZ so that the write fails with EFBIG instead of killing it).
+std::string writeErrorMessage(const std::string& path, int err);
+
 }  // namespace sinsim::sim

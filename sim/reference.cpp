@@ -4,6 +4,7 @@
 
 #include "common/error.hpp"
 #include "sim/ideal_imu.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/run.hpp"
 #include "sim/trajectory.hpp"
 
@@ -12,11 +13,6 @@ namespace sinsim::sim {
 std::size_t Reference::bytes() const {
   return samples.size() * sizeof(nav::ImuSample) + hRef.size() * sizeof(double) +
          truth.size() * sizeof(nav::NavState);
-}
-
-const nav::Earth& sharedEarth() {
-  static const nav::Earth earth;
-  return earth;
 }
 
 Reference buildReference(const Scenario& sc) {
@@ -58,54 +54,25 @@ void store(float* row, const NavError& e) {
 
 }  // namespace
 
+bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptions& options,
+                    float* out, const std::atomic<bool>* cancel) {
+  NavLoopOptions loop;
+  loop.strapdown = ref.strapdown;
+  loop.biasWindow = options.biasWindow;
+  loop.cancel = cancel;
+  const nav::Earth& earth = sharedEarth();
+  const auto dec = ref.decimation;
+  return navigate(source, loop, [&](const ImuEpoch& e, const nav::NavState& nav) {
+    if (e.index % dec == 0)
+      store(out + std::size_t(e.index / dec) * kErrorFields, navError(earth, nav, e.truth));
+  });
+}
+
 bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corruptor,
                          const NavigateOptions& options, float* out,
                          const std::atomic<bool>* cancel) {
-  const nav::Earth& earth = sharedEarth();
-  nav::Strapdown strapdown(earth, ref.initial, ref.strapdown);
-  store(out, navError(earth, strapdown.state(), ref.truth[0]));
-  const std::size_t n = ref.samples.size();
-  const auto dec = std::size_t(ref.decimation);
-
-  auto measure = [&](std::size_t k) {
-    nav::ImuSample s = ref.samples[k];  // a copy: the ideal sample stays as it is
-    if (corruptor) corruptor->corrupt(s, ref.temperature.at(s.t - 0.5 * s.dt));
-    return s;
-  };
-
-  // Initial bias removal (NavigateOptions::biasWindow): the head of the realisation is measured
-  // first, its mean error rate estimated, then replayed.
-  std::vector<nav::ImuSample> head;
-  nav::Vec3 biasGyro = nav::Vec3::Zero(), biasAccel = nav::Vec3::Zero();  // [rad/s], [m/s^2]
-  if (options.biasWindow > 0.0) {
-    const auto nb = std::min<std::size_t>(n, std::size_t(std::llround(options.biasWindow * ref.imuRate)));
-    if (nb == 0) throw InputError("the bias window is shorter than one IMU interval");
-    head.reserve(nb);
-    double T = 0.0;
-    for (std::size_t k = 0; k < nb; ++k) {
-      head.push_back(measure(k));
-      biasGyro += head.back().dtheta_b - ref.samples[k].dtheta_b;
-      biasAccel += head.back().dv_b - ref.samples[k].dv_b;
-      T += ref.samples[k].dt;
-    }
-    biasGyro /= T;
-    biasAccel /= T;
-  }
-
-  for (std::size_t k = 0; k < n; ++k) {
-    nav::ImuSample s = k < head.size() ? head[k] : measure(k);
-    if (options.biasWindow > 0.0) {
-      s.dtheta_b -= biasGyro * s.dt;
-      s.dv_b -= biasAccel * s.dt;
-    }
-    strapdown.update(s, ref.hRef[k]);
-    if ((k + 1) % dec == 0) {
-      const std::size_t e = (k + 1) / dec;
-      store(out + e * kErrorFields, navError(earth, strapdown.state(), ref.truth[e]));
-    }
-    if (cancel && (k & 0xffff) == 0xffff && cancel->load(std::memory_order_relaxed)) return false;
-  }
-  return true;
+  ReferenceSource source(ref, corruptor);
+  return navigateErrors(source, ref, options, out, cancel);
 }
 
 }  // namespace sinsim::sim

@@ -12,6 +12,8 @@
 #include "nav/earth.hpp"
 #include "nav/strapdown.hpp"
 #include "nav/types.hpp"
+#include "sim/imu_source.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/scenario.hpp"
 
 namespace sinsim::sim {
@@ -42,9 +44,6 @@ struct Reference {
   std::size_t bytes() const;
 };
 
-/// The WGS-84 Earth shared by every run (GeographicLib objects are immutable once built).
-const nav::Earth& sharedEarth();
-
 /// Generates the ideal IMU and truth of a scenario (sim/ideal_imu.hpp) once.
 Reference buildReference(const Scenario& scenario);
 
@@ -56,6 +55,13 @@ struct NavigateOptions {
   /// gravity). 0: nothing removed.
   double biasWindow = 0.0;
 };
+
+/// Navigates `source` (one whose output epochs are the reference's: a ReferenceSource or a
+/// RecordSource of ref) through the navigation loop (sim/nav_loop.hpp) and writes the error at
+/// every output epoch to out[e · kErrorFields + field] (epochs() × kErrorFields floats). Returns
+/// false, leaving out partly written, when `cancel` becomes true (checked every 65536 samples).
+bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptions& options,
+                    float* out, const std::atomic<bool>* cancel = nullptr);
 
 /// Navigates one realisation along the reference: `corruptor` (nullptr: the perfect IMU) turns
 /// each ideal sample into a measured one, the strapdown integrates it from the true initial

@@ -10,7 +10,8 @@
 
 #include "nav/attitude.hpp"
 #include "nav/strapdown.hpp"
-#include "sim/ideal_imu.hpp"
+#include "sim/imu_source.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/output.hpp"
 #include "sim/trajectory.hpp"
 
@@ -33,15 +34,6 @@ void writeError(std::FILE* f, const NavError& e) {
   std::fprintf(f, "%.6f,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", e.t, e.pos_n.x(),
                e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(), e.euler.x(),
                e.euler.y(), e.euler.z());
-}
-
-const char* verticalName(nav::VerticalChannel v) {
-  switch (v) {
-    case nav::VerticalChannel::Free: return "free";
-    case nav::VerticalChannel::Held: return "held";
-    case nav::VerticalChannel::Damped: return "damped";
-  }
-  return "?";
 }
 
 nlohmann::json errorJson(const NavError& e) {
@@ -101,17 +93,19 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   std::unique_ptr<errormodels::ImuCorruptor> corruptor;
   if (!model.empty()) corruptor = model.instantiate(sc.imuRate, {seed, opt.runIndex});
 
-  const nav::Earth earth;
+  const nav::Earth& earth = sharedEarth();
   const Trajectory trajectory(earth, sc.motion());
-  IdealImu imu(trajectory, sc.imuRate);
-  nav::Strapdown strapdown(earth, imu.truth(), sc.strapdown);
+  TrajectorySource source(trajectory, sc.imuRate, corruptor.get(), sc.temperature);
   const long long decimation = sc.decimation();
 
   // --- outputs --------------------------------------------------------------------------------
   std::unique_ptr<OutputFiles> out;
+  std::unique_ptr<FolderLock> lock;
   std::FILE *fTruth = nullptr, *fNav = nullptr, *fErr = nullptr;
   if (!opt.outDir.empty()) {
     out = std::make_unique<OutputFiles>(opt.outDir);
+    lock = std::make_unique<FolderLock>(opt.outDir);  // a second writer is refused
+    removeStaleTemporaries(opt.outDir, false);            // of a run killed while writing
     fTruth = out->open("truth.csv");
     fNav = out->open("nav.csv");
     fErr = out->open("errors.csv");
@@ -124,48 +118,43 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   s.scenario = sc.name;
   s.model = model.source();
   s.seed = seed;
-  s.duration = static_cast<double>(imu.sampleCount()) * imu.dt();
-  s.imuSamples = imu.sampleCount();
+  s.duration = static_cast<double>(source.sampleCount()) * (1.0 / sc.imuRate);  // as IdealImu::dt()
+  s.imuSamples = source.sampleCount();
   double sumH2 = 0.0, sumV2 = 0.0;
   long long rows = 0;
-  auto emit = [&](const NavError& e) {
-    sumH2 += e.horizontal() * e.horizontal();
-    sumV2 += e.vertical() * e.vertical();
+  double prevSpeed = source.initial().v_n.norm();
+  NavError err;
+  auto onEpoch = [&](const ImuEpoch& e, const nav::NavState& navState) {
+    err = navError(earth, navState, e.truth);
+    if (e.index > 0) {
+      const double speed = e.truth.v_n.norm();
+      s.distance += 0.5 * (prevSpeed + speed) * e.ideal.dt;  // trapezoid
+      prevSpeed = speed;
+      if (err.horizontal() > s.maxHorizontal || !std::isfinite(err.horizontal())) {
+        s.maxHorizontal = err.horizontal();
+        s.maxHorizontalTime = err.t;
+      }
+      if (err.vertical() > s.maxVertical || !std::isfinite(err.vertical())) {
+        s.maxVertical = err.vertical();
+        s.maxVerticalTime = err.t;
+      }
+    }
+    if (e.index % decimation != 0) return;
+    sumH2 += err.horizontal() * err.horizontal();
+    sumV2 += err.vertical() * err.vertical();
     ++rows;
-    if (opt.onRow) opt.onRow(e);
+    if (opt.onRow) opt.onRow(err);
     if (out) {
-      writeState(fTruth, imu.truth());
-      writeState(fNav, strapdown.state());
-      writeError(fErr, e);
+      writeState(fTruth, e.truth);
+      writeState(fNav, navState);
+      writeError(fErr, err);
     }
   };
-
-  NavError err = navError(earth, strapdown.state(), imu.truth());
-  emit(err);
-  double prevSpeed = imu.truth().v_n.norm();
-  while (!imu.done()) {
-    nav::ImuSample sample = imu.next();  // ideal: kept apart from what the sensor reports
-    if (corruptor) {
-      nav::ImuSample measured = sample;
-      corruptor->corrupt(measured, sc.temperature.at(sample.t - 0.5 * sample.dt));
-      strapdown.update(measured, imu.truth().h);
-    } else {
-      strapdown.update(sample, imu.truth().h);
-    }
-    const double speed = imu.truth().v_n.norm();
-    s.distance += 0.5 * (prevSpeed + speed) * sample.dt;  // trapezoid
-    prevSpeed = speed;
-    err = navError(earth, strapdown.state(), imu.truth());
-    if (err.horizontal() > s.maxHorizontal || !std::isfinite(err.horizontal())) {
-      s.maxHorizontal = err.horizontal();
-      s.maxHorizontalTime = err.t;
-    }
-    if (err.vertical() > s.maxVertical || !std::isfinite(err.vertical())) {
-      s.maxVertical = err.vertical();
-      s.maxVerticalTime = err.t;
-    }
-    if (imu.index() % decimation == 0) emit(err);
-  }
+  NavLoopOptions loop;
+  loop.strapdown = sc.strapdown;
+  loop.biasWindow = opt.biasWindow;
+  loop.aiding = opt.aiding;
+  navigate(source, loop, onEpoch);
   s.final = err;
   s.rmsHorizontal = std::sqrt(sumH2 / static_cast<double>(rows));
   s.rmsVertical = std::sqrt(sumV2 / static_cast<double>(rows));

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "nav/types.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/scenario.hpp"
 
 namespace sinsim::sim {
@@ -40,6 +41,10 @@ struct RunOptions {
   std::optional<std::string> model;
   /// Monte Carlo run index (the realisation of the error model), 0 for a single run.
   std::uint64_t runIndex = 0;
+  /// Initial-bias removal window [s] (NavLoopOptions::biasWindow); 0: none.
+  double biasWindow = 0.0;
+  /// Aiding filter plugged into the navigation loop (not owned); nullptr: pure inertial.
+  NavAiding* aiding = nullptr;
   /// Called with the error of every output row (t = 0 and every 1/outputRate s), in time order,
   /// whether or not files are written: for statistics without CSV round trips.
   std::function<void(const NavError&)> onRow;

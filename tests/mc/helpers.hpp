@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -61,6 +62,26 @@ inline std::vector<std::string> listFiles(const fs::path& dir) {
 inline const std::string& sourceDir() {
   static const std::string s = SINSIM_SOURCE_DIR;
   return s;
+}
+
+inline bool anyChunk(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir / "runs", ec)) return false;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "runs", ec))
+    if (e.path().extension() == ".bin") return true;
+  return false;
+}
+
+// Starts sinsim in the background (stdout/stderr to files in tmp); returns its pid.
+inline pid_t spawn(const std::string& args, const fs::path& tmp) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string cmd = "exec '" + sinsimPath() + "' " + args + " > '" +
+                            (tmp / "bg.out").string() + "' 2> '" + (tmp / "bg.err").string() + "'";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
 }
 
 }  // namespace mctest

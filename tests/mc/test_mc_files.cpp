@@ -51,26 +51,6 @@ void requireSameFolders(const fs::path& a, const fs::path& b) {
   }
 }
 
-bool anyChunk(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::exists(dir / "runs", ec)) return false;
-  for (const auto& e : fs::recursive_directory_iterator(dir / "runs", ec))
-    if (e.path().extension() == ".bin") return true;
-  return false;
-}
-
-// Starts sinsim in the background (stdout/stderr to files in tmp); returns its pid.
-pid_t spawn(const std::string& args, const fs::path& tmp) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const std::string cmd = "exec '" + sinsimPath() + "' " + args + " > '" +
-                            (tmp / "bg.out").string() + "' 2> '" + (tmp / "bg.err").string() + "'";
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
 // Waits until the first checkpoint chunk appears (or the child ends), then sends sig.
 int interruptAfterFirstChunk(pid_t pid, const fs::path& out, int sig) {
   const auto start = std::chrono::steady_clock::now();

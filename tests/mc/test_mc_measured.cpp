@@ -23,10 +23,15 @@ TEST_CASE("measured path: a replayed model realisation gives that run's drift an
   // Tilted by levelling-sized angles so that the attitude path matters.
   const nav::Vec3 rpy(0.01, -0.02, 0.3);
   const double rate = 100, duration = 120;
-  const sim::Scenario sc = sim::parseScenario(
-      sim::staticScenarioYaml("replay", 51.08 * M_PI / 180, -114.13 * M_PI / 180, 1100, rpy, rate,
-                              1.0, "held", duration),
-      "replay.yaml");
+  sim::MotionStart start;
+  start.lat = 51.08 * M_PI / 180;
+  start.lon = -114.13 * M_PI / 180;
+  start.h = 1100;
+  start.roll = rpy.x();
+  start.pitch = rpy.y();
+  start.heading = rpy.z();
+  const sim::Scenario sc = sim::staticScenario("replay", start, rate, 1.0,
+                                               {nav::VerticalChannel::Held, 100.0}, duration);
   const sim::Reference ref = sim::buildReference(sc);
   const auto model = errormodels::ImuErrorModel::fromString(
       "gyro:\n  all: [{type: white, density: 0.3 deg/sqrt(h)}, {type: bias, sigma: 20 deg/h}]\n"
@@ -54,8 +59,8 @@ TEST_CASE("measured path: a replayed model realisation gives that run's drift an
   sim::McMeasured measured;
   measured.source = rec.source;
   measured.errors.resize(ref.epochs() * sim::kErrorFields);
-  sim::RecordReplay replay(rec, rate);
-  REQUIRE(sim::navigateRealisation(ref, &replay, nopt, measured.errors.data()));
+  sim::RecordSource replay(ref, rec);
+  REQUIRE(sim::navigateErrors(replay, ref, nopt, measured.errors.data()));
 
   sim::McOptions opt;
   opt.runs = 16;

@@ -1,0 +1,74 @@
+#include "sim/imu_source.hpp"
+
+#include <string>
+
+#include "common/error.hpp"
+#include "sim/reference.hpp"
+
+namespace sinsim::sim {
+
+TrajectorySource::TrajectorySource(const Trajectory& trajectory, double imuRate,
+                                   errormodels::ImuCorruptor* corruptor,
+                                   const TemperatureProfile& temperature)
+    : imu_(trajectory, imuRate),
+      rate_(imuRate),
+      corruptor_(corruptor),
+      temperature_(temperature),
+      initial_(imu_.truth()) {}
+
+bool TrajectorySource::next(ImuEpoch& e) {
+  if (imu_.done()) return false;
+  e.ideal = imu_.next();
+  e.measured = e.ideal;
+  // The temperature at the interval's midpoint, as the sensor sees it while integrating.
+  if (corruptor_) corruptor_->corrupt(e.measured, temperature_.at(e.ideal.t - 0.5 * e.ideal.dt));
+  e.index = imu_.index();
+  e.truth = imu_.truth();
+  e.hTrue = e.truth.h;
+  e.hasTruth = true;
+  return true;
+}
+
+ReferenceSource::ReferenceSource(const Reference& ref, errormodels::ImuCorruptor* corruptor)
+    : ref_(ref), corruptor_(corruptor) {}
+
+const nav::NavState& ReferenceSource::initial() const { return ref_.initial; }
+double ReferenceSource::rate() const { return ref_.imuRate; }
+long long ReferenceSource::sampleCount() const { return static_cast<long long>(ref_.samples.size()); }
+
+bool ReferenceSource::next(ImuEpoch& e) {
+  if (k_ >= ref_.samples.size()) return false;
+  e.ideal = ref_.samples[k_];
+  e.measured = e.ideal;
+  if (corruptor_)
+    corruptor_->corrupt(e.measured, ref_.temperature.at(e.ideal.t - 0.5 * e.ideal.dt));
+  e.hTrue = ref_.hRef[k_];
+  ++k_;
+  e.index = static_cast<long long>(k_);
+  const auto dec = static_cast<std::size_t>(ref_.decimation);
+  e.hasTruth = k_ % dec == 0;
+  if (e.hasTruth) e.truth = ref_.truth[k_ / dec];
+  return true;
+}
+
+RecordSource::RecordSource(const Reference& ref, const errormodels::Record& record)
+    : ideal_(ref, nullptr), record_(record) {}
+
+const nav::NavState& RecordSource::initial() const { return ideal_.initial(); }
+double RecordSource::rate() const { return ideal_.rate(); }
+long long RecordSource::sampleCount() const { return ideal_.sampleCount(); }
+
+bool RecordSource::next(ImuEpoch& e) {
+  if (!ideal_.next(e)) return false;
+  if (k_ >= record_.size())
+    throw InputError(record_.source + ": the record has no sample for t = " +
+                     std::to_string(e.ideal.t) + " s");
+  for (int a = 0; a < 3; ++a) {
+    e.measured.dtheta_b[a] = record_.gyro[a][k_] * e.measured.dt;
+    e.measured.dv_b[a] = record_.accel[a][k_] * e.measured.dt;
+  }
+  ++k_;
+  return true;
+}
+
+}  // namespace sinsim::sim

@@ -1,0 +1,72 @@
+#include "sim/mc_models.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "sim/mc_output.hpp"
+#include "sim/mc_stats.hpp"
+
+namespace sinsim::sim {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void addUnique(std::vector<McModel>& models, McModel m) {
+  const std::string base = m.label;
+  for (int k = 2;; ++k) {
+    bool clash = false;
+    for (const auto& o : models) clash = clash || o.label == m.label;
+    if (!clash) break;
+    m.label = base + "-" + std::to_string(k);
+  }
+  models.push_back(std::move(m));
+}
+
+}  // namespace
+
+std::vector<McModel> loadMcModels(const std::vector<std::string>& files, const Scenario& sc,
+                                  const std::string& scenarioIdentity) {
+  std::vector<McModel> models;
+  if (files.empty()) addUnique(models, {"scenario-errors", sc.errors, "inline/scenario:" + scenarioIdentity});
+  for (const auto& f : files) {
+    if (f == "none") {
+      addUnique(models, {"none", errormodels::ImuErrorModel::none(), "none"});
+      continue;
+    }
+    McModel m{std::filesystem::path(f).stem().string(), errormodels::ImuErrorModel::load(f),
+              slurp(f)};
+    if (!m.model.empty() && m.model.needsTemperature() && !sc.temperature.present)
+      throw InputError("the error model " + f + " has temperature-dependent effects but the "
+                       "scenario has no temperature profile");
+    addUnique(models, std::move(m));
+  }
+  for (const auto& m : models)  // refuse a model that cannot run at the IMU rate, before any file
+    if (!m.model.empty()) m.model.instantiate(sc.imuRate, {0, 0});
+  return models;
+}
+
+std::vector<McHeadline> mcHeadlines(const Reference& ref, const McResult& r, std::size_t models) {
+  McBatch batch(ref);
+  batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / (ref.epochs() * kErrorFields);
+  for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});
+  batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models));
+  const std::size_t eLast = ref.epochs() - 1;
+  std::vector<McHeadline> out;
+  for (std::size_t m = 0; m < models; ++m) {
+    auto v = metricAcrossRuns(batch, m, eLast, kHorizontal);
+    std::sort(v.begin(), v.end());
+    out.push_back({r.labels[m], ref.epochTime(eLast), mcstats::percentileSorted(v, 50),
+                   mcstats::percentileSorted(v, 95)});
+  }
+  return out;
+}
+
+}  // namespace sinsim::sim

@@ -1,0 +1,97 @@
+#include "sim/nav_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "common/error.hpp"
+
+namespace sinsim::sim {
+
+const nav::Earth& sharedEarth() {
+  static const nav::Earth earth;
+  return earth;
+}
+
+const char* verticalName(nav::VerticalChannel v) {
+  switch (v) {
+    case nav::VerticalChannel::Free: return "free";
+    case nav::VerticalChannel::Held: return "held";
+    case nav::VerticalChannel::Damped: return "damped";
+  }
+  return "?";
+}
+
+nav::VerticalChannel verticalChannel(const std::string& name, const std::string& what) {
+  for (auto v : {nav::VerticalChannel::Free, nav::VerticalChannel::Held, nav::VerticalChannel::Damped})
+    if (name == verticalName(v)) return v;
+  throw InputError(what + ": \"" + name + "\" is not one of: free, held, damped");
+}
+
+namespace {
+
+// The mean error rates (measured − ideal) over the head [rad/s], [m/s^2].
+struct Bias {
+  nav::Vec3 gyro = nav::Vec3::Zero();
+  nav::Vec3 accel = nav::Vec3::Zero();
+};
+
+Bias meanBias(const std::vector<ImuEpoch>& head) {
+  Bias b;
+  double T = 0.0;  // [s]
+  for (const ImuEpoch& e : head) {
+    b.gyro += e.measured.dtheta_b - e.ideal.dtheta_b;
+    b.accel += e.measured.dv_b - e.ideal.dv_b;
+    T += e.ideal.dt;
+  }
+  b.gyro /= T;
+  b.accel /= T;
+  return b;
+}
+
+}  // namespace
+
+bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sink) {
+  const nav::Earth& earth = sharedEarth();
+  nav::Strapdown strapdown(earth, source.initial(), opt.strapdown);
+  ImuEpoch e;
+  e.hasTruth = true;
+  e.truth = source.initial();
+  e.hTrue = e.truth.h;
+  sink(e, strapdown.state());
+
+  // Initial bias removal: the head of the run is read first, its mean error rate estimated, then
+  // replayed.
+  std::vector<ImuEpoch> head;
+  Bias bias;
+  const bool removeBias = opt.biasWindow > 0.0;
+  if (removeBias) {
+    const auto nb = std::min<long long>(source.sampleCount(),
+                                        std::llround(opt.biasWindow * source.rate()));
+    if (nb <= 0) throw InputError("the bias window is shorter than one IMU interval");
+    head.resize(std::size_t(nb));
+    for (ImuEpoch& h : head)
+      if (!source.next(h)) throw NumericalError("IMU source ended inside the bias window");
+    bias = meanBias(head);
+  }
+
+  for (std::size_t k = 0;; ++k) {
+    if (k < head.size()) {
+      e = head[k];
+    } else if (!source.next(e)) {
+      break;
+    }
+    if (removeBias) {
+      e.measured.dtheta_b -= bias.gyro * e.measured.dt;
+      e.measured.dv_b -= bias.accel * e.measured.dt;
+    }
+    strapdown.update(e.measured, e.hTrue);
+    if (opt.aiding) opt.aiding->epoch(e, strapdown);
+    sink(e, strapdown.state());
+    if (opt.cancel && (k & 0xffff) == 0xffff && opt.cancel->load(std::memory_order_relaxed))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace sinsim::sim
