@@ -18,14 +18,14 @@
 
 #include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/imu_model.hpp"
-#include "nav/types.hpp"
+#include "common/constants.hpp"
+#include "common/types.hpp"
 
 namespace {
 
 using namespace sinsim;
 using namespace sinsim::errormodels;
 
-constexpr double kDeg = M_PI / 180.0;
 
 struct Case {
   std::string name;
@@ -38,10 +38,10 @@ struct Case {
 std::vector<Case> cases(double rate, double duration) {
   // Chosen so that every term dominates (>= ~40 % of the Allan variance) at least one octave of
   // tau <= duration / 10 (the range fitted) at both rates and lengths.
-  const double N = 0.2 * kDeg / 60.0;            // 0.2 deg/sqrt(h) [rad/sqrt(s)]
+  const double N = 0.2 * kRadPerDeg / 60.0;            // 0.2 deg/sqrt(h) [rad/sqrt(s)]
   const double T1 = duration / 2400.0;           // GM tau [s]: 0.5 s (20 min), 3 s (2 h)
-  const double s1 = 0.005 * kDeg;                // GM sigma [rad/s]
-  const double T2 = 10.0 * T1, s2 = 0.003 * kDeg;  // second GM, a decade slower
+  const double s1 = 0.005 * kRadPerDeg;                // GM sigma [rad/s]
+  const double T2 = 10.0 * T1, s2 = 0.003 * kRadPerDeg;  // second GM, a decade slower
   const double K = 200.0 * N / duration;         // random walk [rad/s/sqrt(s)]
   const double B = 40.0 * N / std::sqrt(duration);  // flicker [rad/s]
   const double Kf = 2.0 * K;  // random walk beside the flicker: dominates the last ~3 octaves
@@ -79,7 +79,7 @@ std::vector<double> record(const std::string& yaml, double rate, double duration
   const double dt = 1.0 / rate;
   std::vector<double> x(n);
   for (std::size_t k = 0; k < n; ++k) {
-    nav::ImuSample s;
+    ImuSample s;
     s.t = double(k + 1) * dt;
     s.dt = dt;
     c->corrupt(s, 298.15);

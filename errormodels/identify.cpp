@@ -621,6 +621,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         }
         fit::LatentFitOptions lo;
         lo.sampleInterval = dt;
+        lo.scanStart = true;
         if (opt.kind == IdentifyKind::Gm) lo.minGmTauSamples = 2.0;
         if (opt.kind == IdentifyKind::Gm)
           lo.candidates = {{false, false, 1, false, false, false}, {false, true, 1, false, false, false},

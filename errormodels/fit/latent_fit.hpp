@@ -11,7 +11,7 @@
 //     (Q^2, N^2, sigma_j^2, B^2, K^2, R^2) and non-linear only in the GM correlation times, so
 //     the fit is by variable projection (Golub & Pereyra 1973): the variances by non-negative
 //     least squares (Lawson-Hanson) for given T_j, the T_j (log scale) by a grid of starts
-//     (factor sqrt 2 over [dt / 2, N dt / 2] for one GM; factor 2, T_2 >= 2 T_1, for two) refined
+//     (factor sqrt 2 over [dt / 2, tau_max] for one GM, tau_max the largest tau used; factor 2, T_2 >= 2 T_1, for two) refined
 //     by golden-section search (coordinate-wise for two GMs). This finds the global minimum over
 //     T that a Gauss-Newton/LM run from a few slope-read starts may miss (the GM hump can hide
 //     under white noise or a random walk).
@@ -75,6 +75,11 @@ struct LatentFitOptions {
   /// Shortest GM correlation time searched, in sample intervals (`sinsim fit --kind gm` uses 2:
   /// a GM faster than that is white noise to a navigation filter at this rate).
   double minGmTauSamples = 0.5;
+  /// Start-of-range scan: when the fit over all points is inconsistent (p-value < 0.001), move
+  /// the first Allan point up one octave at a time (keeping >= 6 points) and take the first
+  /// consistent start, else the one with the smallest chi^2 / dof. Real sensors show features at
+  /// short tau no term carries (an internal filter's hump); `sinsim fit` turns this on.
+  bool scanStart = false;
   /// Penalty per term in the score (a GM is one term); see the selection rule above.
   double penaltyPerTerm = 5.41;
 };
@@ -104,6 +109,7 @@ struct LatentFit {
   double chi2 = 0.0;
   std::size_t dof = 0;
   double pValue = 0.0;     ///< P(chi^2_dof >= chi2)
+  bool consistent = true;  ///< pValue >= 0.001 (with scanStart: at the chosen start)
   double birgeScale = 1.0; ///< applied to logCovariance
   double sampleInterval = 0.0;  ///< [s]
   std::size_t samples = 0;      ///< N
