@@ -65,6 +65,13 @@ void printSummary(const errormodels::Identification& id) {
     }
     if (a.written.gaussMarkov)
       std::printf(", GM tau %.4g s", a.written.gaussMarkov->tau);
+    if (a.written.latent) {
+      const auto& f = *a.written.latent;
+      std::printf(": %s (chi2 %.3g / %zu dof, p %.2g", f.terms.name().c_str(), f.chi2, f.dof, f.pValue);
+      if (const auto* r = f.runnerUp()) std::printf("; runner-up %s", r->terms.name().c_str());
+      std::printf(")");
+      for (const auto& g : f.model.gm) std::printf(", GM tau %.4g s", g.tau);
+    }
     std::printf("\n");
   }
 }
@@ -111,6 +118,7 @@ int runFit(const FitArgs& a) {
                  rec.irregular_count, a.data.c_str());
 
   const errormodels::Identification id = errormodels::identify(rec, opt);
+  for (const auto& w : id.warnings) std::fprintf(stderr, "fit: warning: %s\n", w.c_str());
   id.writeModel(a.output);  // temporary + rename: never half-written
   if (!a.quiet) printSummary(id);
   std::printf("fit: wrote %s\n", a.output.c_str());
@@ -128,7 +136,7 @@ void addFitCommand(CLI::App& app, Action& action) {
       ->required();
   c->add_option("-o,--output", a->output, "model file to write (YAML)")->required();
   c->add_option("--axes", a->axes, "channels to fit, e.g. gx,gy,gz (default: all in the record)");
-  c->add_option("--kind", a->kind, "ar | gm | allan | auto (default auto: see README)");
+  c->add_option("--kind", a->kind, "ar | gm | allan | latent | auto (default auto: see README; gm and latent: docs/fitting.md)");
   c->add_option("--order", a->order, "AR order P or auto (default auto: by --criterion)");
   c->add_option("--criterion", a->criterion, "order criterion: mdl (default) | bic | aic | fpe | paper");
   c->add_option("--max-order", a->max_order, "largest AR order tried (default 20)");

@@ -221,6 +221,7 @@ std::string toString(IdentifyKind kind) {
     case IdentifyKind::Gm: return "gm";
     case IdentifyKind::Allan: return "allan";
     case IdentifyKind::Auto: return "auto";
+    case IdentifyKind::Latent: return "latent";
   }
   return "?";
 }
@@ -230,7 +231,8 @@ IdentifyKind identifyKindByName(const std::string& name) {
   if (name == "gm") return IdentifyKind::Gm;
   if (name == "allan") return IdentifyKind::Allan;
   if (name == "auto") return IdentifyKind::Auto;
-  throw InputError("unknown model kind \"" + name + "\" (known: ar, gm, allan, auto)");
+  if (name == "latent") return IdentifyKind::Latent;
+  throw InputError("unknown model kind \"" + name + "\" (known: ar, gm, allan, auto, latent)");
 }
 
 fit::OrderCriterion orderCriterionByName(const std::string& name) {
@@ -264,6 +266,18 @@ std::vector<double> AxisIdentification::modelAdev(const std::vector<double>& tau
     for (std::size_t i = 0; i < tau.size(); ++i)
       avar[i] += gaussMarkovAllanVariance(g.sigma * g.sigma, g.tau, tau[i]);
   }
+  if (written.latent) {
+    const double dtl = written.latent->sampleInterval;
+    std::vector<std::size_t> m(tau.size());
+    for (std::size_t i = 0; i < tau.size(); ++i) {
+      m[i] = static_cast<std::size_t>(std::llround(tau[i] / dtl));
+      if (m[i] < 1 || std::fabs(m[i] * dtl - tau[i]) > 1e-6 * tau[i])
+        throw InputError("model Allan deviation: tau " + fmt(tau[i]) +
+                         " s is not a multiple of the latent model's sample interval");
+    }
+    const auto v = fit::latentAllanVariance(written.latent->model, dtl, m);
+    for (std::size_t i = 0; i < tau.size(); ++i) avar[i] += v[i];
+  }
   if (written.allan) {
     std::array<double, fit::kAllanTermCount> theta{};
     for (std::size_t j = 0; j < fit::kAllanTermCount; ++j) {
@@ -293,7 +307,7 @@ std::string Identification::method() const {
                                              (o.denoiseOptions.mode == ThresholdMode::Soft ? ", soft" : ", hard") +
                                              ") before the ACF"
                                        : ", no denoising";
-  if (o.kind != IdentifyKind::Allan && o.kind != IdentifyKind::Gm) {
+  if (o.kind == IdentifyKind::Ar || o.kind == IdentifyKind::Auto) {
     m += ", Burg AR on the " + std::string(o.arOnDenoised ? "DENOISED" : "raw") + " record, order ";
     m += o.order ? std::to_string(*o.order) + " (forced)"
                  : "by " + fit::toString(o.criterion) + " over 0.." + std::to_string(o.maxOrder);
@@ -301,6 +315,10 @@ std::string Identification::method() const {
   m += ", overlapping ADEV (octave tau, Greenhall EDF)";
   if (o.kind == IdentifyKind::Allan || o.kind == IdentifyKind::Auto)
     m += ", IEEE 952 Allan-term GLS fit";
+  if (o.kind == IdentifyKind::Gm || o.kind == IdentifyKind::Latent)
+    m += ", composite latent-process GLS fit (" +
+         std::string(o.kind == IdentifyKind::Gm ? "white + GM (+ random walk)" : "all term sets") +
+         ", BIC; docs/fitting.md)";
   return m;
 }
 
@@ -326,6 +344,7 @@ fit::ModelProvenance Identification::provenance() const {
     p.notes.push_back("denoising: the written AR is fitted on the DENOISED record (the paper's "
                       "pipeline): its driving noise underestimates the sensor's white noise.");
   p.notes.push_back("uncertainties are 1 sigma; units: values in the file, SI in comments marked (SI)");
+  for (const auto& w : warnings) p.notes.push_back("WARNING: " + w);
   return p;
 }
 
@@ -430,6 +449,19 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   out.decision.push_back("long-tau terms (start >= 60 T_c = " + fmt(tauMin, 3) + " s) on " +
                          describeRange(longTau) + ": " + describeAllan(*out.allanLongTau) +
                          "; B, K, R written when detected");
+}
+
+/// A static accelerometer reads |f| = g = 9.8 m/s^2. Means whose norm is 0.5..1.5 "m/s^2" (or a
+/// single axis mean of that size when only one is fitted) are g units read as m/s^2.
+void warnAccelUnit(Identification& id) {
+  double s2 = 0.0;
+  int count = 0;
+  for (const auto& a : id.axes)
+    if (a.sensor == fit::SensorSignal::Accel) s2 += a.mean * a.mean, ++count;
+  const double norm = std::sqrt(s2);
+  if (count > 0 && norm > 0.5 && norm < 1.5)
+    id.warnings.push_back("accelerometer mean |f| = " + fmt(norm, 4) +
+                          " m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?");
 }
 
 }  // namespace
@@ -571,12 +603,27 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.written.arRate = record.rate_hz;
         break;
       }
-      case IdentifyKind::Gm: {
+      case IdentifyKind::Gm:
+      case IdentifyKind::Latent: {
         fit::GaussMarkovFitOptions go;
         go.recordLength = n;
-        ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
-        ax.kind = IdentifyKind::Gm;
-        ax.written.gaussMarkov = ax.gaussMarkov;
+        if (opt.kind == IdentifyKind::Gm) {
+          ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
+          ax.written.notes.push_back("for comparison, GM from the ACF (not written): sigma " +
+                                     friendly(ax.gaussMarkov->sigma, c.sensor) + ", tau " +
+                                     fmt(ax.gaussMarkov->tau, 4) + " s");
+        }
+        fit::LatentFitOptions lo;
+        lo.sampleInterval = dt;
+        lo.scanStart = true;
+        if (opt.kind == IdentifyKind::Gm) lo.minGmTauSamples = 2.0;
+        if (opt.kind == IdentifyKind::Gm)
+          lo.candidates = {{false, false, 1, false, false, false}, {false, true, 1, false, false, false},
+                           {false, false, 1, false, true, false}, {false, true, 1, false, true, false}};
+        ax.latent = fit::fitLatentModel(x, lo);
+        ax.kind = opt.kind;
+        ax.written.latent = ax.latent;
+        for (const auto& w : ax.latent->warnings) out.warnings.push_back(c.name + ": " + w);
         break;
       }
       case IdentifyKind::Allan: {
@@ -605,6 +652,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
     }
     out.axes.push_back(std::move(ax));
   }
+  warnAccelUnit(out);
   return out;
 }
 

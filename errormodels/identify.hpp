@@ -6,8 +6,12 @@
 //
 // Kinds (IdentifyOptions::kind):
 //   Ar     Burg AR(p) on the raw, demeaned record; order forced or by criterion (MDL default).
-//   Gm     first-order Gauss-Markov (sigma, tau) from the biased autocovariance (Bartlett
-//          covariance for the uncertainty).
+//   Gm     white + first-order Gauss-Markov (+ random walk when selected): the composite
+//          latent-process fit (fit/latent_fit.hpp) over the sets {gm, white + gm, gm + rw,
+//          white + gm + rw}. The ACF GM fit (Bartlett covariance) is kept beside it for
+//          comparison (AxisIdentification::gaussMarkov), not written.
+//   Latent the composite latent-process fit over all 48 term sets (white, quantization, 0-2 GM,
+//          flicker, random walk, drift), chosen by BIC; docs/fitting.md.
 //   Allan  IEEE 952 five-term fit (Q, N, B, K, R) of the Allan variance, correlated-point GLS;
 //          only detected terms are written.
 //   Auto   what the data ask for (the rule is stated in identify.cpp, above chooseAuto, and in the
@@ -47,8 +51,8 @@
 
 namespace sinsim::errormodels {
 
-enum class IdentifyKind { Ar, Gm, Allan, Auto };
-std::string toString(IdentifyKind kind);                    ///< "ar", "gm", "allan", "auto"
+enum class IdentifyKind { Ar, Gm, Allan, Auto, Latent };
+std::string toString(IdentifyKind kind);  ///< "ar", "gm", "allan", "auto", "latent"
 IdentifyKind identifyKindByName(const std::string& name);   ///< InputError listing the known ones
 /// "mdl" | "bic" | "aic" | "fpe" | "paper" -> criterion; InputError otherwise.
 fit::OrderCriterion orderCriterionByName(const std::string& name);
@@ -103,6 +107,7 @@ struct AxisIdentification {
   std::optional<fit::OrderSelection> arDenoised;   ///< AR on the denoised signal (denoise = Db5)
   std::optional<fit::ArRandomWalkFit> composite;   ///< AR + random walk (Auto)
   std::optional<fit::GaussMarkovFit> gaussMarkov;
+  std::optional<fit::LatentFit> latent;            ///< composite latent fit (Gm, Latent)
   std::optional<fit::AllanFit> allanFit;           ///< five-term fit of the whole curve
   /// Allan terms fitted beside an AR on the long-tau part (Auto); the AR carries N and Q.
   std::optional<fit::AllanFit> allanLongTau;
@@ -125,6 +130,10 @@ struct Identification {
   double duration() const { return rate_hz > 0 ? samples / rate_hz : 0.0; }  ///< [s] used
   IdentifyOptions options;
   std::vector<AxisIdentification> axes;
+  /// Sanity findings (also in the model's comments): GM tau outside [2 dt, duration / 3], a
+  /// parameter less certain than its value, an accelerometer mean that looks like g units read
+  /// as m/s^2.
+  std::vector<std::string> warnings;
 
   const AxisIdentification& axis(const std::string& channel) const;  ///< InputError if absent
   std::string method() const;  ///< one line: kind, denoise, criterion/order

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "common/constants.hpp"
@@ -63,21 +64,14 @@ double simpsonLog(const F& f, double a, double b, int n) {
                  std::log(b), n);
 }
 
-// Discrete two-sided PSD of the model [U^2 per rad/sample] at w in (0, pi] (see header).
-double modelPsd(const std::array<double, kAllanTermCount>& th, double dt, double w) {
-  const double s2 = std::sin(0.5 * w) * std::sin(0.5 * w);
-  return th[0] * 4.0 * s2 / (dt * dt) + th[1] / dt + th[2] / w + th[3] * dt / (4.0 * s2);
-}
-
 // (1/pi) int_0^pi S^2 |G_a|^2 |G_b|^2 dw for averaging factors ma <= mb. Oscillating factors
 // sin^4(m w / 2) are integrated exactly over their first 20 periods and replaced by their mean
 // beyond: 3/8 each, 35/128 for the product when ma == mb, 7/64 when mb == 2 ma (the only ratios
 // with resonant harmonics; sin^4 has harmonics 0, 2, 4 only).
-double pairIntegral(const std::array<double, kAllanTermCount>& th, double dt, std::size_t ma,
-                    std::size_t mb) {
+double pairIntegral(const std::function<double(double)>& psd, std::size_t ma, std::size_t mb) {
   const double a = static_cast<double>(ma), b = static_cast<double>(mb);
   auto envelope = [&](double w) {  // 4 S^2 / (ma^2 mb^2 sin^4(w/2))
-    const double s = std::sin(0.5 * w), S = modelPsd(th, dt, w);
+    const double s = std::sin(0.5 * w), S = psd(w);
     return 4.0 * S * S / (a * a * b * b * s * s * s * s);
   };
   auto sin4 = [](double x) { const double s = std::sin(x); return s * s * s * s; };
@@ -101,10 +95,20 @@ double pairIntegral(const std::array<double, kAllanTermCount>& th, double dt, st
 
 }  // namespace
 
+double allanTermsPsd(const std::array<double, kAllanTermCount>& th, double dt, double w) {
+  const double s2 = std::sin(0.5 * w) * std::sin(0.5 * w);
+  return th[0] * 4.0 * s2 / (dt * dt) + th[1] / dt + th[2] / w + th[3] * dt / (4.0 * s2);
+}
+
 Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount>& theta,
                                         const std::vector<std::size_t>& m, double dt,
                                         std::size_t M) {
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("Allan covariance: dt must be > 0");
+  return allanEstimateCovariance([&](double w) { return allanTermsPsd(theta, dt, w); }, m, M);
+}
+
+Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double)>& psd,
+                                        const std::vector<std::size_t>& m, std::size_t M) {
   const auto n = static_cast<Eigen::Index>(m.size());
   Eigen::MatrixXd C(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
@@ -113,7 +117,7 @@ Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount
       const std::size_t lo = std::min(mi, mj), hi = std::max(mi, mj);
       if (lo == 0 || 2 * hi >= M) throw InputError("Allan covariance: need 1 <= m < M / 2");
       const double L = static_cast<double>(M - 2 * hi);
-      C(i, j) = C(j, i) = 2.0 / L * pairIntegral(theta, dt, lo, hi);
+      C(i, j) = C(j, i) = 2.0 / L * pairIntegral(psd, lo, hi);
     }
   return C;
 }
@@ -121,7 +125,10 @@ Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount
 Eigen::MatrixXd allanEstimateCorrelation(const std::array<double, kAllanTermCount>& theta,
                                          const std::vector<std::size_t>& m, double dt,
                                          std::size_t M) {
-  const Eigen::MatrixXd C = allanEstimateCovariance(theta, m, dt, M);
+  return correlationOfCovariance(allanEstimateCovariance(theta, m, dt, M));
+}
+
+Eigen::MatrixXd correlationOfCovariance(const Eigen::MatrixXd& C) {
   const Eigen::VectorXd d = C.diagonal().cwiseSqrt().cwiseInverse();
   Eigen::MatrixXd R = d.asDiagonal() * C * d.asDiagonal();
   // The quadrature of the pair integrals is least accurate for random-walk-dominated points at

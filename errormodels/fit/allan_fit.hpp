@@ -34,6 +34,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,17 @@ Eigen::MatrixXd allanEstimateCorrelation(const std::array<double, kAllanTermCoun
 Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount>& theta,
                                         const std::vector<std::size_t>& m, double dt,
                                         std::size_t M);
+/// The same for any stationary model given by its discrete two-sided PSD psd(w) [U^2 per
+/// rad/sample], w in (0, pi], normalised so that (1/pi) int_0^pi psd = the sample variance (a
+/// white sequence of variance s^2 has psd = s^2). Used by the latent-process fit (GM terms).
+Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double)>& psd,
+                                        const std::vector<std::size_t>& m, std::size_t M);
+/// Correlation matrix of a covariance C, projected onto the positive-definite correlation
+/// matrices (eigenvalues floored at 1e-3, unit diagonal restored) when the quadrature made it
+/// indefinite (see allanEstimateCorrelation).
+Eigen::MatrixXd correlationOfCovariance(const Eigen::MatrixXd& C);
+/// The five-term model's discrete PSD [U^2 per rad/sample] at w in (0, pi] (see above).
+double allanTermsPsd(const std::array<double, kAllanTermCount>& theta, double dt, double w);
 
 /// Allan deviation [U] of the five-term model theta = (Q^2, N^2, B^2, K^2, R^2) at tau [s].
 std::vector<double> allanModelAdev(const std::array<double, kAllanTermCount>& theta,

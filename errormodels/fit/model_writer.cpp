@@ -146,6 +146,73 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
   }
 }
 
+/// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec.
+void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal) {
+  const double rate = 1.0 / f.sampleInterval;
+  b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
+         << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
+         << "; chi2 " << num(f.chi2, 4) << " / " << f.dof << " dof (p = " << num(f.pValue, 3) << ")";
+  if (const LatentCandidate* r = f.runnerUp())
+    b.line << "; runner-up " << r->terms.name() << " (score +"
+           << num(r->score - f.candidates.front().score, 3) << ")";
+  b.endComment();
+  for (const auto& w : f.warnings) {
+    b.line << "WARNING: " << w;
+    b.endComment();
+  }
+  auto sd = [&](const std::string& name) { return f.parameter(name).stdError; };
+  const Dimension time = Dimension::time();
+  const LatentModel& m = f.model;
+  if (m.quantization > 0.0) {
+    const double k = std::sqrt(12.0);
+    b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma)";
+    b.endComment();
+    b.add(EffectSpec::make("quantization", {withSigma(ParamSpec::quantity("lsb", k * m.quantization,
+                                                                          signal * time),
+                                                      {k * sd("quantization")})}));
+  }
+  if (m.white > 0.0) {
+    b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma)";
+    b.endComment();
+    b.add(EffectSpec::make("white", {withSigma(ParamSpec::quantity("density", m.white,
+                                                                   signal * time.sqrt()),
+                                               {sd("white")})}));
+  }
+  for (std::size_t g = 0; g < m.gm.size(); ++g) {
+    const std::string n = "gm" + std::to_string(g + 1);
+    b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << ", tau +- "
+           << num(sd(n + ".tau"), 4) << " s (1 sigma)";
+    b.endComment();
+    b.add(EffectSpec::make(
+        "gauss_markov",
+        {withSigma(ParamSpec::quantity("sigma", m.gm[g].sigma, signal), {sd(n + ".sigma")}),
+         withSigma(ParamSpec::quantity("tau", m.gm[g].tau, time), {sd(n + ".tau")}),
+         ParamSpec::quantity("rate", rate, Dimension::frequency())}));
+  }
+  if (m.flicker > 0.0) {
+    b.line << "flicker +- " << q(sd("flicker"), u.level) << " (1 sigma)";
+    b.endComment();
+    b.add(EffectSpec::make(
+        "bias_instability",
+        {withSigma(ParamSpec::quantity("B", m.flicker, signal), {sd("flicker")}),
+         ParamSpec::quantities("tau_range", {f.tau.front(), f.tau.back()}, time)}));
+  }
+  if (m.randomWalk > 0.0) {
+    b.line << "random_walk +- " << q(sd("random_walk"), u.walk) << " (1 sigma)";
+    b.endComment();
+    b.add(EffectSpec::make("random_walk", {withSigma(ParamSpec::quantity("K", m.randomWalk,
+                                                                         signal / time.sqrt()),
+                                                     {sd("random_walk")})}));
+  }
+  if (m.drift > 0.0) {
+    b.line << "drift (ramp) +- " << q(sd("drift"), u.slope)
+           << " (1 sigma; the Allan variance does not give its sign)";
+    b.endComment();
+    b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", m.drift, signal / time),
+                                              {sd("drift")})}));
+  }
+}
+
 void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
   const Units& u = unitsFor(ax.sensor);
   const Dimension signal = signalOf(ax.sensor);
@@ -184,6 +251,7 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
         {withSigma(ParamSpec::quantity("sigma", g.sigma, signal), {g.sigmaStdError}),
          withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
   }
+  if (ax.latent) addLatent(b, *ax.latent, u, signal);
   if (ax.allan) {
     b.line << "Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
            << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6) << " s, chi2 "

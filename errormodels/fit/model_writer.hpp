@@ -25,6 +25,7 @@
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/composite_fit.hpp"
 #include "errormodels/fit/gauss_markov_fit.hpp"
+#include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/fit/order_selection.hpp"
 #include "errormodels/model_spec.hpp"
 
@@ -45,6 +46,10 @@ struct AxisFitResult {
   /// white term off when an AR model already carries the short-term noise.
   std::array<bool, kAllanTermCount> allanWrite{true, true, true, true, true};
   std::optional<ArRandomWalkFit> composite;  ///< writes its AR and (if detected) its K
+  /// Composite latent-process fit (latent_fit.hpp): every term of its chosen set, GM terms with
+  /// `rate:` = the record's rate (the discrete AR(1) the fit modelled), 1-sigma and fit quality
+  /// as comments.
+  std::optional<LatentFit> latent;
   std::vector<std::string> notes;            ///< extra comment lines for this axis
 };
 

@@ -1,0 +1,464 @@
+#include "errormodels/fit/latent_fit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "common/error.hpp"
+#include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/nnls.hpp"
+#include "errormodels/stats/allan.hpp"
+#include "errormodels/stats/special.hpp"
+
+namespace sinsim::errormodels::fit {
+
+std::size_t LatentTermSet::parameterCount() const {
+  return std::size_t(quantization) + std::size_t(white) + 2 * std::size_t(gm) + std::size_t(flicker) +
+         std::size_t(randomWalk) + std::size_t(drift);
+}
+
+std::size_t LatentTermSet::termCount() const {
+  return std::size_t(quantization) + std::size_t(white) + std::size_t(gm) + std::size_t(flicker) +
+         std::size_t(randomWalk) + std::size_t(drift);
+}
+
+std::string LatentTermSet::name() const {
+  LatentModel m;
+  m.quantization = quantization, m.white = white, m.flicker = flicker;
+  m.randomWalk = randomWalk, m.drift = drift;
+  m.gm.resize(static_cast<std::size_t>(gm));
+  return m.termNames();
+}
+
+bool LatentTermSet::operator==(const LatentTermSet& o) const {
+  return quantization == o.quantization && white == o.white && gm == o.gm && flicker == o.flicker &&
+         randomWalk == o.randomWalk && drift == o.drift;
+}
+
+std::vector<LatentTermSet> latentCandidateSets(bool quantization, int maxGm, bool flicker,
+                                               bool randomWalk, bool drift) {
+  std::vector<LatentTermSet> out;
+  for (int q = 0; q <= int(quantization); ++q)
+    for (int g = 0; g <= std::clamp(maxGm, 0, 2); ++g)
+      for (int b = 0; b <= int(flicker); ++b)
+        for (int k = 0; k <= int(randomWalk); ++k)
+          for (int r = 0; r <= int(drift); ++r) out.push_back({q == 1, true, g, b == 1, k == 1, r == 1});
+  return out;
+}
+
+const LatentParameter& LatentFit::parameter(const std::string& name) const {
+  for (const auto& p : parameters)
+    if (p.name == name) return p;
+  throw InputError("latent fit has no parameter \"" + name + "\" (model: " + terms.name() + ")");
+}
+
+const LatentCandidate* LatentFit::runnerUp() const {
+  int seen = 0;
+  for (const auto& c : candidates)
+    if (c.valid && ++seen == 2) return &c;
+  return nullptr;
+}
+
+namespace {
+
+std::string fmt(double v, int digits = 4) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+/// The Allan points and the current whitening W (Omega^-1 = W' W).
+struct Problem {
+  std::vector<std::size_t> m;
+  std::vector<double> tau;
+  Eigen::VectorXd y;  ///< Allan variance [U^2]
+  double dt = 0.0;
+  std::size_t N = 0;
+  double minT = 0.0;  ///< [s] shortest GM tau searched
+  Eigen::MatrixXd W;
+};
+
+/// Column of a five-term Allan basis function (index in AllanTermKind order) at the points.
+Eigen::VectorXd allanColumn(const Problem& p, std::size_t kind) {
+  std::array<double, kAllanTermCount> th{};
+  th[kind] = 1.0;
+  const std::vector<double> a = allanModelAdev(th, p.tau);
+  Eigen::VectorXd c(static_cast<Eigen::Index>(a.size()));
+  for (std::size_t i = 0; i < a.size(); ++i) c(Eigen::Index(i)) = a[i] * a[i];
+  return c;
+}
+
+Eigen::VectorXd gmColumn(const Problem& p, double T) {
+  Eigen::VectorXd c(static_cast<Eigen::Index>(p.m.size()));
+  for (std::size_t i = 0; i < p.m.size(); ++i) c(Eigen::Index(i)) = gmDiscreteAllanVariance(1.0, T, p.dt, p.m[i]);
+  return c;
+}
+
+/// A fit of one term set: the variance coefficients in design order (Q, N, gm..., B, K, R).
+struct SetFit {
+  LatentTermSet set;
+  std::vector<double> T;      ///< GM correlation times [s]
+  Eigen::VectorXd theta;      ///< variance coefficients
+  double chi2 = std::numeric_limits<double>::infinity();
+  bool allPositive = false;
+};
+
+Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
+  std::vector<Eigen::VectorXd> cols;
+  if (s.quantization) cols.push_back(allanColumn(p, 0));
+  if (s.white) cols.push_back(allanColumn(p, 1));
+  for (double t : T) cols.push_back(gmColumn(p, t));
+  if (s.flicker) cols.push_back(allanColumn(p, 2));
+  if (s.randomWalk) cols.push_back(allanColumn(p, 3));
+  if (s.drift) cols.push_back(allanColumn(p, 4));
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(p.m.size()), static_cast<Eigen::Index>(cols.size()));
+  for (std::size_t j = 0; j < cols.size(); ++j) X.col(Eigen::Index(j)) = cols[j];
+  return X;
+}
+
+SetFit solveFixedT(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
+  const Eigen::MatrixXd X = design(p, s, T);
+  const NnlsResult r = nnls(p.W * X, p.W * p.y);
+  SetFit f;
+  f.set = s;
+  f.T = T;
+  f.theta = r.x;
+  f.chi2 = (p.W * (p.y - X * r.x)).squaredNorm();
+  f.allPositive = r.free.all();
+  return f;
+}
+
+/// Golden-section minimum of chi2 over log T_k in [lo, hi] (T_other fixed).
+SetFit goldenT(const Problem& p, const LatentTermSet& s, std::vector<double> T, std::size_t k,
+               double lo, double hi) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = std::log(lo), b = std::log(hi);
+  auto at = [&](double u) { T[k] = std::exp(u); return solveFixedT(p, s, T); };
+  double c = b - g * (b - a), d = a + g * (b - a);
+  SetFit fc = at(c), fd = at(d);
+  for (int it = 0; it < 28; ++it) {
+    if (fc.chi2 <= fd.chi2) {
+      b = d, d = c, fd = fc;
+      c = b - g * (b - a), fc = at(c);
+    } else {
+      a = c, c = d, fc = fd;
+      d = a + g * (b - a), fd = at(d);
+    }
+  }
+  return fc.chi2 <= fd.chi2 ? fc : fd;
+}
+
+SetFit fitSet(const Problem& p, const LatentTermSet& s) {
+  if (s.gm == 0) return solveFixedT(p, s, {});
+  // A GM is identified only when its hump (near 1.9 T) falls inside the fitted tau range; a slower
+  // one is a random walk or drift there and would only compete with them (seen: white + GM + RW
+  // fitted as two GMs). So T <= the largest tau used.
+  const double tLo = p.minT, tHi = std::max(p.tau.back(), 2.0 * p.minT);
+  SetFit best;
+  if (s.gm == 1) {
+    const double step = std::sqrt(2.0);
+    for (double t = tLo; t <= tHi; t *= step) {
+      SetFit f = solveFixedT(p, s, {t});
+      if (f.chi2 < best.chi2) best = f;
+    }
+    return goldenT(p, s, best.T, 0, std::max(tLo, best.T[0] / step), std::min(tHi, best.T[0] * step));
+  }
+  for (double t1 = tLo; t1 <= tHi; t1 *= 2.0)
+    for (double t2 = 2.0 * t1; t2 <= tHi; t2 *= 2.0) {
+      SetFit f = solveFixedT(p, s, {t1, t2});
+      if (f.chi2 < best.chi2) best = f;
+    }
+  // Coordinate-wise golden sections; the two taus trade off along a valley, so several rounds
+  // with narrowing brackets (stops when a round improves chi2 by < 1e-10 relative).
+  for (int round = 0; round < 12; ++round) {
+    const double r = round == 0 ? 2.0 : round == 1 ? std::sqrt(2.0) : 1.2;
+    const double before = best.chi2;
+    const double t1 = best.T[0], t2 = best.T[1];
+    best = goldenT(p, s, best.T, 0, std::max(tLo, t1 / r), std::min(t2 / 1.5, t1 * r));
+    best = goldenT(p, s, best.T, 1, std::max(1.5 * best.T[0], t2 / r), std::min(tHi, t2 * r));
+    if (round >= 2 && best.chi2 >= before * (1.0 - 1e-10)) break;
+  }
+  return best;
+}
+
+LatentModel modelOf(const SetFit& f) {
+  LatentModel m;
+  Eigen::Index j = 0;
+  auto next = [&]() { return std::sqrt(std::max(f.theta(j++), 0.0)); };
+  if (f.set.quantization) m.quantization = next();
+  if (f.set.white) m.white = next();
+  for (double t : f.T) m.gm.push_back({next(), t});
+  if (f.set.flicker) m.flicker = next();
+  if (f.set.randomWalk) m.randomWalk = next();
+  if (f.set.drift) m.drift = next();
+  return m;
+}
+
+/// Diagonal whitening from levels (the Allan variance a point is expected to have): the
+/// variance of an estimate with nu EDF is 2 level^2 / nu; nu of white noise (fit::edfOverlappingWhite).
+Eigen::MatrixXd diagonalWhitening(const Problem& p, const Eigen::VectorXd& level) {
+  Eigen::VectorXd w(level.size());
+  for (Eigen::Index i = 0; i < level.size(); ++i) {
+    const double nu = edfOverlappingWhite(p.N, p.m[std::size_t(i)]);
+    w(i) = std::sqrt(nu / 2.0) / level(i);
+  }
+  return w.asDiagonal();
+}
+
+/// Whitening from the covariance of the Allan estimates under `model` (GLS).
+Eigen::MatrixXd modelWhitening(const Problem& p, const LatentModel& model) {
+  const Eigen::MatrixXd C =
+      allanEstimateCovariance([&](double w) { return latentPsd(model, p.dt, w); }, p.m, p.N);
+  const Eigen::VectorXd sd = C.diagonal().cwiseMax(0.0).cwiseSqrt();
+  if (!(sd.minCoeff() > 0.0)) throw NumericalError("latent fit: zero modelled Allan variance");
+  const Eigen::MatrixXd R = correlationOfCovariance(C);
+  const Eigen::MatrixXd Cp = sd.asDiagonal() * R * sd.asDiagonal();
+  Eigen::LLT<Eigen::MatrixXd> llt(Cp);
+  if (llt.info() != Eigen::Success)
+    throw NumericalError("latent fit: covariance of the Allan points is not positive definite");
+  const auto n = static_cast<Eigen::Index>(p.m.size());
+  return llt.matrixL().solve(Eigen::MatrixXd::Identity(n, n));
+}
+
+Eigen::VectorXd modelLevels(const Problem& p, const LatentModel& m) {
+  const std::vector<double> v = latentAllanVariance(m, p.dt, p.m);
+  Eigen::VectorXd l(static_cast<Eigen::Index>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) l(Eigen::Index(i)) = v[i] > 0.0 ? v[i] : p.y(Eigen::Index(i));
+  return l;
+}
+
+
+/// Best valid set under the current p.W (every set fitted); all fits returned, best first.
+std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<LatentTermSet>& sets,
+                                      double penalty, std::vector<SetFit>* fits) {
+  std::vector<LatentCandidate> out;
+  for (const auto& s : sets) {
+    if (s.parameterCount() + 1 > p.m.size()) continue;  // needs dof >= 1
+    SetFit f = fitSet(p, s);
+    LatentCandidate c;
+    c.terms = s;
+    c.model = modelOf(f);
+    c.chi2 = f.chi2;
+    c.score = f.chi2 + penalty * double(s.termCount());
+    c.valid = f.allPositive && std::isfinite(f.chi2);
+    out.push_back(c);
+    if (fits) fits->push_back(f);
+  }
+  std::vector<std::size_t> idx(out.size());
+  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+    if (out[a].valid != out[b].valid) return out[a].valid;
+    return out[a].score < out[b].score;
+  });
+  std::vector<LatentCandidate> sorted;
+  std::vector<SetFit> sortedFits;
+  for (std::size_t i : idx) {
+    sorted.push_back(out[i]);
+    if (fits) sortedFits.push_back((*fits)[i]);
+  }
+  if (fits) *fits = sortedFits;
+  return sorted;
+}
+
+/// Pass 1: each set with diagonal weights from its own model levels (two reweightings).
+LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, double penalty) {
+  const Eigen::MatrixXd W0 = diagonalWhitening(p, p.y);
+  std::optional<LatentCandidate> best;
+  for (const auto& s : sets) {
+    if (s.parameterCount() + 1 > p.m.size()) continue;
+    p.W = W0;
+    SetFit f = fitSet(p, s);
+    for (int it = 0; it < 2 && f.allPositive; ++it) {
+      p.W = diagonalWhitening(p, modelLevels(p, modelOf(f)));
+      f = fitSet(p, s);
+    }
+    if (!f.allPositive) continue;
+    const double score = f.chi2 + penalty * double(s.termCount());
+    if (!best || score < best->score) best = LatentCandidate{s, modelOf(f), f.chi2, score, true};
+  }
+  if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
+  return best->model;
+}
+
+/// Parameters, their log-space covariance and the sanity warnings of the final fit.
+void describe(const Problem& p, const SetFit& f, LatentFit& out) {
+  struct Par { std::string name; double p; bool amplitude; };
+  std::vector<Par> pars;
+  const LatentModel& m = out.model;
+  Eigen::Index j = 0;
+  auto var = [&](const std::string& name) { pars.push_back({name, std::log(f.theta(j++)), true}); };
+  if (f.set.quantization) var("quantization");
+  if (f.set.white) var("white");
+  for (std::size_t g = 0; g < f.T.size(); ++g) {
+    const std::string gn = "gm" + std::to_string(g + 1);
+    var(gn + ".sigma");
+    pars.push_back({gn + ".tau", std::log(f.T[g]), false});
+  }
+  if (f.set.flicker) var("flicker");
+  if (f.set.randomWalk) var("random_walk");
+  if (f.set.drift) var("drift");
+
+  // Jacobian of the model Allan variance in p (central differences in p: exact enough, the
+  // model is smooth and p is log scale).
+  auto modelAt = [&](const std::vector<double>& pv) {
+    SetFit g = f;
+    std::vector<double> T;
+    Eigen::VectorXd th(f.theta.size());
+    Eigen::Index k = 0;
+    for (std::size_t i = 0; i < pars.size(); ++i) {
+      if (pars[i].amplitude) th(k++) = std::exp(pv[i]);
+      else T.push_back(std::exp(pv[i]));
+    }
+    return Eigen::VectorXd(design(p, f.set, T) * th);
+  };
+  std::vector<double> p0;
+  for (const auto& q : pars) p0.push_back(q.p);
+  const auto n = static_cast<Eigen::Index>(p.m.size()), k = static_cast<Eigen::Index>(pars.size());
+  Eigen::MatrixXd J(n, k);
+  for (Eigen::Index c = 0; c < k; ++c) {
+    std::vector<double> a = p0, b = p0;
+    const double h = 1e-5;
+    a[std::size_t(c)] += h, b[std::size_t(c)] -= h;
+    J.col(c) = (modelAt(a) - modelAt(b)) / (2.0 * h);
+  }
+  const Eigen::MatrixXd Jw = p.W * J;
+  out.birgeScale = out.dof > 0 ? std::max(1.0, out.chi2 / double(out.dof)) : 1.0;
+  out.logCovariance = (Jw.transpose() * Jw).ldlt().solve(Eigen::MatrixXd::Identity(k, k)) * out.birgeScale;
+  for (Eigen::Index c = 0; c < k; ++c) {
+    const Par& q = pars[std::size_t(c)];
+    const double sdp = std::sqrt(std::max(out.logCovariance(c, c), 0.0));
+    const double value = q.amplitude ? std::exp(0.5 * q.p) : std::exp(q.p);
+    out.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
+  }
+  const double duration = p.dt * double(p.N);
+  for (std::size_t g = 0; g < m.gm.size(); ++g) {
+    const double T = m.gm[g].tau;
+    if (T < 2.0 * p.dt)
+      out.warnings.push_back("gm" + std::to_string(g + 1) + ".tau " + fmt(T) + " s is below two sample intervals (" +
+                             fmt(2.0 * p.dt) + " s): the GM is indistinguishable from white noise there");
+    if (T > duration / 3.0)
+      out.warnings.push_back("gm" + std::to_string(g + 1) + ".tau " + fmt(T) + " s is above a third of the record (" +
+                             fmt(duration / 3.0) + " s): poorly determined, it acts as a random walk");
+  }
+  for (const auto& q : out.parameters)
+    if (q.stdError > q.value)
+      out.warnings.push_back(q.name + ": 1-sigma uncertainty " + fmt(q.stdError) + " exceeds the value " +
+                             fmt(q.value));
+}
+
+}  // namespace
+
+namespace {
+
+LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& avar,
+                   std::size_t samples, const LatentFitOptions& options) {
+  const double dt = options.sampleInterval;
+  if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent fit: sample interval must be > 0");
+  if (m.size() != avar.size()) throw InputError("latent fit: m and avar differ in length");
+  Problem p;
+  p.dt = dt;
+  p.N = samples;
+  if (!(options.minGmTauSamples > 0.0)) throw InputError("latent fit: minGmTauSamples must be > 0");
+  p.minT = options.minGmTauSamples * dt;
+  std::vector<double> y;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m[i] < 1 || (i > 0 && m[i] <= m[i - 1]))
+      throw InputError("latent fit: averaging factors must be >= 1 and increasing");
+    const double tau = double(m[i]) * dt;
+    if (10 * m[i] > samples || tau < options.tauMin || tau > options.tauMax) continue;
+    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
+    p.m.push_back(m[i]);
+    p.tau.push_back(tau);
+    y.push_back(avar[i]);
+  }
+  p.y = Eigen::Map<Eigen::VectorXd>(y.data(), Eigen::Index(y.size()));
+  const std::vector<LatentTermSet> sets =
+      options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
+  std::size_t minPar = 1000;
+  for (const auto& s : sets) minPar = std::min(minPar, s.parameterCount());
+  if (p.m.size() < minPar + 1)
+    throw InputError("latent fit: " + std::to_string(p.m.size()) + " Allan points in the range (m <= N/10, tau in [" +
+                     fmt(options.tauMin) + ", " + fmt(options.tauMax) + "] s): too few for " +
+                     std::to_string(minPar) + " parameters");
+  const double penalty = options.penaltyPerTerm;
+  if (!(std::isfinite(penalty) && penalty >= 0.0)) throw InputError("latent fit: penalty must be >= 0");
+
+  // Pass 2 with Omega from the preliminary model; repeated (at most 3 times) while the winner
+  // changes, as Omega depends on the model.
+  LatentModel omegaModel = preliminaryModel(p, sets, penalty);
+  std::vector<LatentCandidate> cands;
+  std::vector<SetFit> fits;
+  for (int it = 0; it < 3; ++it) {
+    p.W = modelWhitening(p, omegaModel);
+    fits.clear();
+    cands = scoreAll(p, sets, penalty, &fits);
+    if (cands.empty() || !cands.front().valid) throw NumericalError("latent fit: no valid candidate set");
+    const bool same = cands.front().model.termNames() == omegaModel.termNames();
+    omegaModel = cands.front().model;
+    if (same) break;
+  }
+  // Final: Omega from the winner, the winner refitted.
+  p.W = modelWhitening(p, omegaModel);
+  const SetFit best = fitSet(p, cands.front().terms);
+
+  LatentFit out;
+  out.terms = best.set;
+  out.model = modelOf(best);
+  out.chi2 = best.chi2;
+  out.dof = p.m.size() - best.set.parameterCount();
+  out.pValue = out.dof > 0 ? 1.0 - chiSquareCdf(out.chi2, double(out.dof)) : 1.0;
+  out.sampleInterval = dt;
+  out.samples = samples;
+  out.m = p.m;
+  out.tau = p.tau;
+  out.avar = y;
+  out.modelAvar = latentAllanVariance(out.model, dt, p.m);
+  out.candidates = cands;
+  out.consistent = out.pValue >= 1e-3;
+  if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
+  describe(p, best, out);
+  return out;
+}
+
+}  // namespace
+
+LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<double>& avar,
+                         std::size_t samples, const LatentFitOptions& options) {
+  LatentFit fit = fitRange(m, avar, samples, options);
+  if (!options.scanStart || fit.consistent) return fit;
+  LatentFit best = fit;
+  for (std::size_t start = 1; start < fit.tau.size() && fit.tau.size() - start >= 6; ++start) {
+    LatentFitOptions o = options;
+    o.tauMin = std::max(options.tauMin, fit.tau[start] * (1.0 - 1e-9));
+    LatentFit f;
+    try {
+      f = fitRange(m, avar, samples, o);
+    } catch (const Error&) {
+      break;
+    }
+    if (f.consistent) return f;
+    if (f.chi2 / double(std::max<std::size_t>(f.dof, 1)) < best.chi2 / double(std::max<std::size_t>(best.dof, 1)))
+      best = f;
+  }
+  best.warnings.push_back("no start of the tau range gives a consistent fit (p >= 0.001): least-bad start " +
+                          fmt(best.tau.front()) + " s kept");
+  return best;
+}
+
+LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options) {
+  if (!(std::isfinite(options.sampleInterval) && options.sampleInterval > 0.0))
+    throw InputError("latent fit: sample interval must be > 0");
+  if (x.size() < 40) throw InputError("latent fit: need at least 40 samples, got " + std::to_string(x.size()));
+  AllanOptions ao;
+  ao.grid = TauGrid::Octave;
+  ao.max_factor = x.size() / 10;
+  ao.confidence_intervals = false;
+  const AllanCurve c = allanDeviation(x, 1.0 / options.sampleInterval, AllanVariant::Overlapping, ao);
+  std::vector<double> avar(c.dev.size());
+  for (std::size_t i = 0; i < avar.size(); ++i) avar[i] = c.dev[i] * c.dev[i];
+  return fitLatentModel(c.m, avar, x.size(), options);
+}
+
+}  // namespace sinsim::errormodels::fit

@@ -1,0 +1,135 @@
+// Composite latent-process fit (GMWM-style): white + quantization + one or two first-order
+// Gauss-Markov + random walk + flicker + drift, fitted jointly to the overlapping Allan variance
+// of a record over all octave tau, with the terms chosen by an information criterion.
+//
+// Method (Guerrier et al. 2013, JASA 108(503), "GMWM"; the Haar wavelet variance is half the
+// Allan variance, so the two criteria are the same up to a factor):
+//  1. Allan variance nu_i at tau_i = m_i dt, m = 1, 2, 4, ... <= N / 10 (beyond, < ~10 EDF and
+//     the modelled covariance below is unreliable, see identify.cpp usablePoints).
+//  2. For a term set, minimise the GLS criterion (nu - nu(theta))' Omega^-1 (nu - nu(theta)).
+//     nu(theta) is latent_model.hpp's closed form. It is linear in the variance coefficients
+//     (Q^2, N^2, sigma_j^2, B^2, K^2, R^2) and non-linear only in the GM correlation times, so
+//     the fit is by variable projection (Golub & Pereyra 1973): the variances by non-negative
+//     least squares (Lawson-Hanson) for given T_j, the T_j (log scale) by a grid of starts
+//     (factor sqrt 2 over [dt / 2, tau_max] for one GM, tau_max the largest tau used; factor 2, T_2 >= 2 T_1, for two) refined
+//     by golden-section search (coordinate-wise for two GMs). This finds the global minimum over
+//     T that a Gauss-Newton/LM run from a few slope-read starts may miss (the GM hump can hide
+//     under white noise or a random walk).
+//  3. Omega: the covariance of the overlapping Allan-variance estimates under a model, from its
+//     PSD (fit::allanEstimateCovariance: Isserlis + Parseval, large-sample). Pass 1 selects a
+//     preliminary model with diagonal weights 2 nu(theta)^2 / edf (model-based levels, white-noise
+//     EDF); Omega is then computed from that model and held FIXED while every candidate set is
+//     fitted (pass 2), so their criteria are comparable (GMWM keeps Omega fixed likewise).
+//     Finally Omega is recomputed from the winner and the winner refitted once.
+//  4. Selection: score = chi^2 + c t, t the number of terms (a GM is one term), c = 5.41: a term
+//     enters only when it lowers the GLS chi^2 by more than c, the likelihood-ratio test of its
+//     variance = 0 at 1 % false inclusion (on the boundary the statistic is the mixture
+//     (chi^2_0 + chi^2_1) / 2, so P(> c) = P(chi^2_1 > c) / 2 = 0.01; Self & Liang 1987). With ~5
+//     optional terms that bounds false inclusions near 5 %. BIC (c = ln n per parameter, 2.6
+//     for 14 points) let in ~5 % per term and chose the right set in only 72-82 % of seeds
+//     (docs/fitting.md). A set whose fit puts a variance at the zero bound is not a candidate
+//     (it is a smaller set). The runner-up is reported.
+//  5. Uncertainty: p = log of every parameter (variance coefficients and T_j); the Gauss-Newton
+//     covariance (J' Omega^-1 J)^-1 of p at the optimum, scaled by max(1, chi^2 / dof) (Birge
+//     ratio); 1-sigma of an amplitude A = sqrt(theta) is A sd(p) / 2, of T it is T sd(p).
+//  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "errormodels/fit/latent_model.hpp"
+
+namespace sinsim::errormodels::fit {
+
+/// The terms of a candidate model.
+struct LatentTermSet {
+  bool quantization = false;
+  bool white = true;
+  int gm = 0;  ///< 0, 1 or 2 first-order GM terms
+  bool flicker = false;
+  bool randomWalk = false;
+  bool drift = false;
+
+  std::size_t parameterCount() const;  ///< GM counts 2
+  std::size_t termCount() const;       ///< GM counts 1
+  std::string name() const;            ///< "white + gm + random_walk"
+  bool operator==(const LatentTermSet& o) const;
+};
+
+/// Every set of the terms allowed: white always; quantization, flicker, random walk, drift each
+/// on or off; 0..maxGm GM terms (48 sets with everything allowed).
+std::vector<LatentTermSet> latentCandidateSets(bool quantization, int maxGm, bool flicker,
+                                               bool randomWalk, bool drift);
+
+struct LatentFitOptions {
+  double sampleInterval = 0.0;  ///< dt [s] (required)
+  /// Candidate term sets; empty: latentCandidateSets(true, 2, true, true, true).
+  std::vector<LatentTermSet> candidates;
+  double tauMin = 0.0;  ///< [s] Allan points outside [tauMin, tauMax] are not used
+  double tauMax = std::numeric_limits<double>::infinity();
+  /// Shortest GM correlation time searched, in sample intervals (`sinsim fit --kind gm` uses 2:
+  /// a GM faster than that is white noise to a navigation filter at this rate).
+  double minGmTauSamples = 0.5;
+  /// Start-of-range scan: when the fit over all points is inconsistent (p-value < 0.001), move
+  /// the first Allan point up one octave at a time (keeping >= 6 points) and take the first
+  /// consistent start, else the one with the smallest chi^2 / dof. Real sensors show features at
+  /// short tau no term carries (an internal filter's hump); `sinsim fit` turns this on.
+  bool scanStart = false;
+  /// Penalty per term in the score (a GM is one term); see the selection rule above.
+  double penaltyPerTerm = 5.41;
+};
+
+/// One parameter of the fitted model with its 1-sigma uncertainty (SI of the channel, see
+/// latent_model.hpp for the units).
+struct LatentParameter {
+  std::string name;  ///< "white", "quantization", "gm1.sigma", "gm1.tau", "random_walk", ...
+  double value = 0.0;
+  double stdError = 0.0;
+};
+
+/// A fitted candidate set and its score.
+struct LatentCandidate {
+  LatentTermSet terms;
+  LatentModel model;
+  double chi2 = 0.0;
+  double score = 0.0;  ///< chi2 + k * penalty
+  bool valid = false;  ///< every variance strictly positive
+};
+
+struct LatentFit {
+  LatentTermSet terms;
+  LatentModel model;
+  std::vector<LatentParameter> parameters;
+  Eigen::MatrixXd logCovariance;  ///< of p = log(parameters) in `parameters` order (variances, T)
+  double chi2 = 0.0;
+  std::size_t dof = 0;
+  double pValue = 0.0;     ///< P(chi^2_dof >= chi2)
+  bool consistent = true;  ///< pValue >= 0.001 (with scanStart: at the chosen start)
+  double birgeScale = 1.0; ///< applied to logCovariance
+  double sampleInterval = 0.0;  ///< [s]
+  std::size_t samples = 0;      ///< N
+  std::vector<std::size_t> m;   ///< averaging factors used
+  std::vector<double> tau, avar, modelAvar;  ///< [s], [U^2], [U^2]
+  std::vector<LatentCandidate> candidates;   ///< pass-2 fits, best score first (valid first)
+  /// Sanity findings (GM tau < 2 dt or > duration / 3, uncertainty above the value).
+  std::vector<std::string> warnings;
+
+  const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
+  const LatentCandidate* runnerUp() const;  ///< second valid candidate, nullptr if none
+};
+
+/// Fits the record x [U] (any mean; sampled at options.sampleInterval). Throws InputError for bad
+/// options, non-finite samples, or too few Allan points for the smallest candidate.
+LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options);
+
+/// The same from a precomputed overlapping Allan variance: avar[i] at m[i] (octave or any
+/// increasing factors) of a record of `samples` samples.
+LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<double>& avar,
+                         std::size_t samples, const LatentFitOptions& options);
+
+}  // namespace sinsim::errormodels::fit

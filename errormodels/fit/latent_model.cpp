@@ -1,0 +1,85 @@
+#include "errormodels/fit/latent_model.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "common/error.hpp"
+#include "errormodels/fit/allan_fit.hpp"
+
+namespace sinsim::errormodels::fit {
+
+namespace {
+
+std::array<double, kAllanTermCount> allanTheta(const LatentModel& mdl) {
+  const auto sq = [](double v) { return v * v; };
+  return {sq(mdl.quantization), sq(mdl.white), sq(mdl.flicker), sq(mdl.randomWalk), sq(mdl.drift)};
+}
+
+}  // namespace
+
+std::string LatentModel::termNames() const {
+  std::string s;
+  auto add = [&](bool on, const char* name) {
+    if (!on) return;
+    if (!s.empty()) s += " + ";
+    s += name;
+  };
+  add(quantization > 0.0, "quantization");
+  add(white > 0.0, "white");
+  for (std::size_t i = 0; i < gm.size(); ++i) add(true, "gm");
+  add(flicker > 0.0, "flicker");
+  add(randomWalk > 0.0, "random_walk");
+  add(drift > 0.0, "drift");
+  return s.empty() ? "none" : s;
+}
+
+double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m) {
+  if (m == 0 || !(T > 0.0) || !(dt > 0.0))
+    throw InputError("GM Allan variance: need m >= 1, tau > 0 and dt > 0");
+  const double phi = std::exp(-dt / T);
+  const double omp = -std::expm1(-dt / T);  // 1 - phi without cancellation
+  const double md = static_cast<double>(m);
+  const double phim = std::pow(phi, md);
+  const double omPhim = -std::expm1(-md * dt / T);  // 1 - phi^m
+  // The bracket m (1 - phi^2) - phi (1 - phi^m)(3 - phi^m) is ~(2/3) m^3 u^3 (u = 1 - phi) while
+  // its terms are ~2 m u: for m u < 1e-4 (digits lost > 8) use its expansion in u, exact to
+  // O((m u)^2) relative (sympy; checked against the closed form in tests/fit/test_latent_model.cpp):
+  //   bracket = m (2 m^2 + 1)/3 u^3 - m (m - 1)(3 m^2 + m + 1)/6 u^4 + O(u^5).
+  if (md * omp < 1e-4) {
+    const double u = omp;
+    return s2 * u * (2.0 * md * md + 1.0) / (3.0 * md) *
+           (1.0 - (md - 1.0) * (3.0 * md * md + md + 1.0) * u / (2.0 * (2.0 * md * md + 1.0)));
+  }
+  const double bracket = md * omp * (1.0 + phi) - phi * omPhim * (3.0 - phim);
+  return s2 * bracket / (md * md * omp * omp);
+}
+
+std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
+                                        const std::vector<std::size_t>& m) {
+  if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent model: dt must be > 0");
+  std::vector<double> tau(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m[i] == 0) throw InputError("latent model: averaging factor m must be >= 1");
+    tau[i] = static_cast<double>(m[i]) * dt;
+  }
+  std::vector<double> avar = allanModelAdev(allanTheta(model), tau);
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    avar[i] *= avar[i];
+    for (const GmTerm& g : model.gm) avar[i] += gmDiscreteAllanVariance(g.sigma * g.sigma, g.tau, dt, m[i]);
+  }
+  return avar;
+}
+
+double latentPsd(const LatentModel& model, double dt, double w) {
+  auto th = allanTheta(model);
+  th[4] = 0.0;  // the ramp is deterministic
+  double S = allanTermsPsd(th, dt, w);
+  for (const GmTerm& g : model.gm) {
+    // AR(1): sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2
+    const double phi = std::exp(-dt / g.tau);
+    S += g.sigma * g.sigma * (1.0 - phi * phi) / (1.0 - 2.0 * phi * std::cos(w) + phi * phi);
+  }
+  return S;
+}
+
+}  // namespace sinsim::errormodels::fit

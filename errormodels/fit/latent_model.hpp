@@ -1,0 +1,66 @@
+// A composite latent error process of one sensor channel, as GMWM calls it (Guerrier, Skaloud,
+// Stebler & Victoria-Feser 2013, "Wavelet-variance-based estimation for composite stochastic
+// processes", JASA 108(503)): independent terms whose Allan variances add.
+//
+// Terms and their Allan variance at tau = m dt (m >= 1, dt the record's sample interval), each
+// exact for the process as a static IMU record holds it (rate = increment / dt):
+//   quantization Q   3 Q^2 / tau^2        increment rounding with carry: the rate error is
+//                                         (e_k - e_{k-1}) / dt, e white of variance Q^2 [(U s)^2]
+//                                         (IEEE Std 952-1997 Annex C; exact for white e)
+//   white N          N^2 / tau            continuous white noise averaged over each interval
+//   flicker B        (2 ln 2 / pi) B^2    two-sided PSD B^2 / (2 pi f): the flat floor (IEEE 952
+//                                         C); exact for a 1/f process over the tau it spans
+//   random walk K    K^2 tau / 3          continuous Brownian bias averaged over each interval
+//   drift R          R^2 tau^2 / 2        deterministic ramp of slope R
+// (the five above are fit::allanModelAdev's, their one home), and per Gauss-Markov term (sigma, T)
+// the discrete first-order GM, i.e. AR(1) at the record's interval, phi = exp(-dt / T),
+// autocovariance sigma^2 phi^|k|. Its Allan variance, from AVAR = Var(mean of m) - Cov(two
+// adjacent means of m) summed in closed form:
+//   AVAR(m) = sigma^2 [m (1 - phi^2) - phi (1 - phi^m)(3 - phi^m)] / (m^2 (1 - phi)^2)
+// (m = 1: sigma^2 (1 - phi); dt -> 0 with m dt = tau: the continuous IEEE 952 C form
+// 2 sigma^2 T / tau [1 - T (3 - 4 e^{-tau/T} + e^{-2 tau/T}) / (2 tau)]). The fitted GM is written
+// with `rate:` = the record's rate, so the simulator draws exactly this AR(1).
+//
+// Units: U is the channel's SI unit (rad/s, m/s^2). Q [U s], N [U sqrt(s)], B [U], K [U/sqrt(s)],
+// R [U/s], sigma [U], T [s].
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sinsim::errormodels::fit {
+
+/// A first-order Gauss-Markov term.
+struct GmTerm {
+  double sigma = 0.0;  ///< [U] stationary standard deviation
+  double tau = 0.0;    ///< [s] correlation time
+};
+
+/// The composite model; a term is absent when its coefficient is 0 (no GM: empty list).
+struct LatentModel {
+  double quantization = 0.0;  ///< Q [U s]
+  double white = 0.0;         ///< N [U sqrt(s)]
+  double flicker = 0.0;       ///< B [U]
+  double randomWalk = 0.0;    ///< K [U / sqrt(s)]
+  double drift = 0.0;         ///< R [U / s]
+  std::vector<GmTerm> gm;     ///< first-order GM terms, in increasing tau
+
+  /// "white + gm + random_walk": the terms present, in the order above.
+  std::string termNames() const;
+};
+
+/// Allan variance [U^2] of the discrete GM (AR(1)) with variance s2 [U^2], correlation time T [s],
+/// sampled at dt [s], at tau = m dt. Throws InputError for m = 0 or non-positive T, dt.
+double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m);
+
+/// Allan variance [U^2] of the composite model at tau = m dt for each m (>= 1).
+std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
+                                        const std::vector<std::size_t>& m);
+
+/// Discrete two-sided PSD of the model's random terms [U^2 per rad/sample] at w in (0, pi]
+/// (normalised so that (1/pi) int_0^pi = the sample variance); the drift is deterministic and
+/// adds nothing. For the covariance of Allan-variance estimates (fit::allanEstimateCovariance).
+double latentPsd(const LatentModel& model, double dt, double w);
+
+}  // namespace sinsim::errormodels::fit
