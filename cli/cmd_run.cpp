@@ -42,6 +42,7 @@ void addRunCommand(CLI::App& app, Action& action) {
     std::string outDir;
     std::optional<std::uint64_t> seed;
     std::string model;
+    bool imu = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -55,6 +56,9 @@ void addRunCommand(CLI::App& app, Action& action) {
                                         "scenario's seed:)");
   cmd->add_option("--model", args->model,
                   "Sensor error model file, or none for a perfect IMU (overrides errors:)");
+  cmd->add_flag("--imu", args->imu,
+                "Also write imu.csv: ideal and measured IMU as rates and increments (one row per "
+                "IMU interval)");
   cmd->callback([&action, args]() {
     action = [args]() {
       const std::string file = args->scenario.empty() ? defaultScenario() : args->scenario;
@@ -63,6 +67,7 @@ void addRunCommand(CLI::App& app, Action& action) {
       opt.outDir = args->outDir.empty() ? (fs::path("out") / sc.name).string() : args->outDir;
       opt.seed = args->seed;
       if (!args->model.empty()) opt.model = args->model;
+      opt.writeImu = args->imu;
       const sim::RunSummary s = sim::run(sc, opt);
       std::cout << "sinsim run: " << file << " -> " << s.outDir
                 << " (truth.csv, nav.csv, errors.csv, summary.json) in " << s.wallTime << " s\n"

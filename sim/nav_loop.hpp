@@ -22,6 +22,8 @@ namespace sinsim::sim {
 class NavAiding {
  public:
   virtual ~NavAiding() = default;
+  /// Where the navigation starts, given the true start (initial errors); default: the truth.
+  virtual nav::NavState start(const nav::NavState& truth) { return truth; }
   virtual void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) = 0;
 };
 
@@ -40,7 +42,8 @@ struct NavLoopOptions {
 /// every interval, in time order, with the navigation state at e's end.
 using EpochSink = std::function<void(const ImuEpoch& e, const nav::NavState& nav)>;
 
-/// Navigates `source` from its true initial state with the WGS-84 earth. Returns false when
+/// Navigates `source` from its true initial state (or where the aiding says it starts) with the
+/// WGS-84 earth. Returns false when
 /// `cancel` became true (the sink has then seen only part of the run). Throws InputError for a
 /// bias window shorter than one IMU interval.
 bool navigate(ImuSource& source, const NavLoopOptions& options, const EpochSink& sink);
