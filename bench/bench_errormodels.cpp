@@ -26,7 +26,7 @@ void corruptHour(benchmark::State& state, const char* text, double rate, double 
   double sink = 0.0;
   for (auto _ : state) {
     auto c = model.instantiate(rate, {1, 0});
-    sinsim::nav::ImuSample s;
+    sinsim::ImuSample s;
     s.dt = 1.0 / rate;
     for (long k = 1; k <= n; ++k) {
       s.t = double(k) / rate;

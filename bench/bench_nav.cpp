@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 #include "nav/earth.hpp"
 #include "nav/strapdown.hpp"
@@ -19,11 +20,10 @@ using namespace sinsim::nav;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<ImuSample> levelTurn(const Earth& earth, double lat, double h, double speed,
                                  double yawRate, double dt) {
-  const long n = std::lround(2.0 * kPi / yawRate / dt);
+  const long n = std::lround(2.0 * sinsim::kPi / yawRate / dt);
   std::vector<ImuSample> out(n);
   double M = 0.0, N = 0.0;
   earth.radii(lat, M, N);

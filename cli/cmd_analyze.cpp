@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "common/error.hpp"
+#include "common/constants.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/record.hpp"
@@ -141,9 +142,8 @@ json channelJson(const ChannelStats& c) {
 
 // Plots are in display units (gyro deg/s, accel m/s^2); the JSON stays SI.
 void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const AnalyzeArgs& a) {
-  constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
   const bool gyro = c.unit_si == "rad/s";
-  const double k = gyro ? kRadToDeg : 1.0;
+  const double k = gyro ? kDegPerRad : 1.0;
   const std::string unit = gyro ? "deg/s" : "m/s^2";
   auto scaled = [](const std::vector<double>& v, double f) {
     std::vector<double> out(v);

@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "common/error.hpp"
+#include "common/constants.hpp"
 #include "common/units.hpp"
 #include "errormodels/imu_model.hpp"
 #include "nav/attitude.hpp"
@@ -22,7 +23,6 @@
 namespace sinsim::cli {
 namespace {
 
-constexpr double kZeroCelsius = 273.15;  // [K]
 
 /// Sensor temperature over the record [K]: a constant ("25 degC"), a linear ramp over the whole
 /// record ("20 degC..45 degC"), or a CSV file with header t,temp (s, degC) interpolated linearly
@@ -121,7 +121,7 @@ nav::Vec3 parseAttitude(const std::string& text) {
     std::string p = part;
     // A plain number is read as degrees: the README's examples write "0,0,90".
     Quantity q = parseQuantity(p);
-    if (q.dim == Dimension::none()) q.si *= M_PI / 180.0;
+    if (q.dim == Dimension::none()) q.si *= kRadPerDeg;
     else if (q.dim != Dimension::angle())
       throw InputError("--attitude: \"" + p + "\" is not an angle");
     rpy[i++] = q.si;

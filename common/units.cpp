@@ -6,13 +6,11 @@
 #include <map>
 #include <utility>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 
 namespace sinsim {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kStandardGravity = 9.80665;  // [m/s^2] CGPM 1901, the "g" of accelerometer specs
 
 struct Atom {
   double factor;
@@ -36,8 +34,8 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"ms", {1e-3, D::time()}},
       {"us", {1e-6, D::time()}},
       {"min", {60.0, D::time()}},
-      {"h", {3600.0, D::time()}},
-      {"hr", {3600.0, D::time()}},
+      {"h", {kSecondsPerHour, D::time()}},
+      {"hr", {kSecondsPerHour, D::time()}},
       {"day", {86400.0, D::time()}},
       // frequency
       {"Hz", {1.0, D::frequency()}},
@@ -46,12 +44,12 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"rad", {1.0, D::angle()}},
       {"mrad", {1e-3, D::angle()}},
       {"urad", {1e-6, D::angle()}},
-      {"deg", {kPi / 180.0, D::angle()}},
-      {"\xC2\xB0", {kPi / 180.0, D::angle()}},  // °
-      {"arcmin", {kPi / 180.0 / 60.0, D::angle()}},
-      {"arcsec", {kPi / 180.0 / 3600.0, D::angle()}},
+      {"deg", {kRadPerDeg, D::angle()}},
+      {"\xC2\xB0", {kRadPerDeg, D::angle()}},  // °
+      {"arcmin", {kRadPerDeg / 60.0, D::angle()}},
+      {"arcsec", {kRadPerDeg / kSecondsPerHour, D::angle()}},
       {"rev", {2.0 * kPi, D::angle()}},
-      {"dph", {kPi / 180.0 / 3600.0, D::angularRate()}},  // deg/h, common in INS specs
+      {"dph", {kRadPerDeg / kSecondsPerHour, D::angularRate()}},  // deg/h, common in INS specs
       // acceleration in units of standard gravity
       {"g", {kStandardGravity, D::acceleration()}},
       {"mg", {1e-3 * kStandardGravity, D::acceleration()}},
@@ -59,16 +57,16 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"\xC2\xB5g", {1e-6 * kStandardGravity, D::acceleration()}},  // µg
       {"Gal", {1e-2, D::acceleration()}},
       // speed
-      {"kn", {1852.0 / 3600.0, D::speed()}},
-      {"kph", {1000.0 / 3600.0, D::speed()}},
+      {"kn", {1852.0 / kSecondsPerHour, D::speed()}},
+      {"kph", {1000.0 / kSecondsPerHour, D::speed()}},
       // dimensionless
       {"ppm", {1e-6, D::none()}},
       {"ppb", {1e-9, D::none()}},
       {"%", {1e-2, D::none()}},
       // temperature (offset applies to a lone absolute value only)
       {"K", {1.0, D::temperature()}},
-      {"degC", {1.0, D::temperature(), 273.15}},
-      {"\xC2\xB0" "C", {1.0, D::temperature(), 273.15}},  // °C
+      {"degC", {1.0, D::temperature(), kZeroCelsius}},
+      {"\xC2\xB0" "C", {1.0, D::temperature(), kZeroCelsius}},  // °C
   };
   return table;
 }

@@ -68,7 +68,7 @@ std::optional<double> entry(const ConfigNode& n, Dimension dim, bool alsoAngle) 
 }
 }  // namespace
 
-bool readMatrix3(const ConfigNode& node, Dimension dim, nav::Mat3& out, bool alsoAngle) {
+bool readMatrix3(const ConfigNode& node, Dimension dim, Mat3& out, bool alsoAngle) {
   std::string form = exactlyOne(node, {"matrix", "diagonal", "value"});
   if (form.empty()) return false;
   ConfigNode c = node[form];
@@ -77,7 +77,7 @@ bool readMatrix3(const ConfigNode& node, Dimension dim, nav::Mat3& out, bool als
   if (form == "value") {
     auto v = entry(c, dim, alsoAngle);
     if (!v) return false;
-    out = *v * nav::Mat3::Identity();
+    out = *v * Mat3::Identity();
     return true;
   }
   auto rows = c.items();

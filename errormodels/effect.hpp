@@ -20,7 +20,7 @@
 #include "common/units.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/random.hpp"
-#include "nav/types.hpp"
+#include "common/types.hpp"
 
 namespace sinsim::errormodels {
 
@@ -59,8 +59,8 @@ struct Interval {
   double t1 = 0.0;  ///< end [s]
   double dt = 0.0;  ///< t1 - t0 [s]
   double temperature = NAN;         ///< sensor temperature [K] (NaN when none is given)
-  nav::Vec3 dtheta_ideal_b = nav::Vec3::Zero();  ///< ideal angle increment [rad]
-  nav::Vec3 dv_ideal_b = nav::Vec3::Zero();      ///< ideal velocity increment [m/s]
+  Vec3 dtheta_ideal_b = Vec3::Zero();  ///< ideal angle increment [rad]
+  Vec3 dv_ideal_b = Vec3::Zero();      ///< ideal velocity increment [m/s]
 };
 
 /// One realisation of an effect.
@@ -68,14 +68,14 @@ class EffectState {
  public:
   virtual ~EffectState() = default;
   /// Changes the triad's increment vector u [rad or m/s] for the interval.
-  virtual void apply(nav::Vec3& u, const Interval& iv) = 0;
+  virtual void apply(Vec3& u, const Interval& iv) = 0;
 };
 
 /// A realisation of an additive error e(t) on one axis: adds ∫_{t0}^{t1} e dt to u[axis].
 class AxisErrorState : public EffectState {
  public:
   explicit AxisErrorState(int axis) : axis_(axis) {}
-  void apply(nav::Vec3& u, const Interval& iv) final { u[axis_] += integral(iv); }
+  void apply(Vec3& u, const Interval& iv) final { u[axis_] += integral(iv); }
   /// ∫ e dt over the interval [signal·s].
   virtual double integral(const Interval& iv) = 0;
 
@@ -129,7 +129,7 @@ std::vector<double> numberList(const ConfigNode& node, const std::string& key);
 /// A 3×3 matrix given as `matrix: [[..],[..],[..]]`, `diagonal: [a, b, c]` or `value: a` (a·I);
 /// entries of dimension dim (or, when alsoAngle, an angle, read as a small angle in rad).
 /// Exactly one form must be present. Returns false (and records why) on failure.
-bool readMatrix3(const ConfigNode& node, Dimension dim, nav::Mat3& out, bool alsoAngle = false);
+bool readMatrix3(const ConfigNode& node, Dimension dim, Mat3& out, bool alsoAngle = false);
 /// Records "give exactly one of a, b" unless exactly one is present; returns the present one.
 std::string exactlyOne(const ConfigNode& node, const std::vector<std::string>& keys);
 /// Refuses a process rate [Hz] slower than the IMU (throws InputError naming the effect).

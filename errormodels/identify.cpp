@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/constants.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
@@ -15,8 +16,6 @@ namespace sinsim::errormodels {
 
 namespace {
 
-constexpr double kDegPerRad = 180.0 / M_PI;
-constexpr double kStandardGravity = 9.80665;  // [m/s^2] for the "g" in comments only
 
 std::string fmt(double v, int digits = 6) {
   char buf[64];

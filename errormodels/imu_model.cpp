@@ -77,7 +77,7 @@ class Corruptor final : public ImuCorruptor {
   std::vector<std::unique_ptr<EffectState>> gyro, accel;
   bool needsTemperature = false;
 
-  void corrupt(nav::ImuSample& sample, double temperature) override {
+  void corrupt(ImuSample& sample, double temperature) override {
     if (needsTemperature && !std::isfinite(temperature))
       throw InputError("the IMU error model has a temperature effect but no sensor temperature "
                        "was given (add a temperature profile)");

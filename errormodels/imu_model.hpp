@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "common/config.hpp"
-#include "nav/types.hpp"
+#include "common/types.hpp"
 
 namespace sinsim::errormodels {
 
@@ -33,7 +33,7 @@ class ImuCorruptor {
   /// Replaces the ideal increments of `sample` (interval (t - dt, t]) by measured ones.
   /// temperature [K] is the sensor temperature over the interval (NaN when the scenario has no
   /// temperature profile; a model that needs it was refused at instantiation).
-  virtual void corrupt(nav::ImuSample& sample, double temperature) = 0;
+  virtual void corrupt(ImuSample& sample, double temperature) = 0;
 };
 
 class ImuErrorModel {

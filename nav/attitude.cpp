@@ -2,10 +2,9 @@
 
 #include <cmath>
 
+#include "common/constants.hpp"
+
 namespace sinsim::nav {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 Mat3 skew(const Vec3& a) {
   Mat3 S;

@@ -2,10 +2,9 @@
 
 #include <cmath>
 
+#include "common/constants.hpp"
+
 namespace sinsim::nav {
-namespace {
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
-}
 
 Earth::Earth()
     : gravity_(GeographicLib::NormalGravity::WGS84()),
@@ -13,11 +12,11 @@ Earth::Earth()
       omega_(gravity_.AngularVelocity()) {}
 
 double Earth::meridianRadius(double lat) const {
-  return ellipsoid_.MeridionalCurvatureRadius(lat * kRadToDeg);
+  return ellipsoid_.MeridionalCurvatureRadius(lat * kDegPerRad);
 }
 
 double Earth::primeVerticalRadius(double lat) const {
-  return ellipsoid_.TransverseCurvatureRadius(lat * kRadToDeg);
+  return ellipsoid_.TransverseCurvatureRadius(lat * kDegPerRad);
 }
 
 void Earth::radii(double lat, double& M, double& N) const {
@@ -27,7 +26,7 @@ void Earth::radii(double lat, double& M, double& N) const {
 
 Vec3 Earth::gravity_n(double lat, double h) const {
   double gammay = 0.0, gammaz = 0.0;  // northward and upward components [m/s^2]
-  gravity_.Gravity(lat * kRadToDeg, h, gammay, gammaz);
+  gravity_.Gravity(lat * kDegPerRad, h, gammay, gammaz);
   return Vec3(gammay, 0.0, -gammaz);
 }
 

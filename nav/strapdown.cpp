@@ -15,6 +15,7 @@
 
 #include <string>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 
 namespace sinsim::nav {
@@ -32,7 +33,7 @@ Strapdown::Strapdown(const Earth& earth, const NavState& initial, const Strapdow
     : earth_(&earth), state_(initial), options_(options), local_(earth) {
   if (!finiteState(initial))
     throw InputError("strapdown: initial state must be finite with a non-zero attitude quaternion");
-  if (!(std::abs(initial.lat) < 0.5 * 3.14159265358979323846))
+  if (!(std::abs(initial.lat) < 0.5 * kPi))
     throw InputError("strapdown: initial latitude must be strictly between -90° and 90°");
   if (options.vertical == VerticalChannel::Damped &&
       !(std::isfinite(options.dampingTimeConstant) && options.dampingTimeConstant > 0.0))
@@ -150,7 +151,7 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
   const double hm = 0.5 * (h0 + h1);
   state_.lat += 0.5 * dt * (v0.x() + v1.x()) / (e.M + hm);
   state_.lon += 0.5 * dt * (v0.y() + v1.y()) / ((e.N + hm) * cosLat);
-  if (std::abs(state_.lon) > 3.14159265358979323846) state_.lon = wrapAngle(state_.lon);
+  if (std::abs(state_.lon) > kPi) state_.lon = wrapAngle(state_.lon);
   state_.h = h1;
   state_.v_n = v1;
 

@@ -2,14 +2,15 @@
 // z down), e = ECEF, i = inertial. Names carry frames: C_nb/q_nb rotate body → nav.
 #pragma once
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
+#include "common/types.hpp"
 
 namespace sinsim::nav {
 
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
-using Quat = Eigen::Quaterniond;  // Hamilton, q_nb maps body vectors to nav: v_n = q_nb * v_b
+// The base vocabulary lives in common/ (shared with errormodels/); nav code keeps its names.
+using sinsim::ImuSample;
+using sinsim::Mat3;
+using sinsim::Quat;
+using sinsim::Vec3;
 
 /// Position, velocity and attitude at time t on the WGS-84 ellipsoid.
 struct NavState {
@@ -19,15 +20,6 @@ struct NavState {
   double h = 0.0;    // height above the ellipsoid [m]
   Vec3 v_n = Vec3::Zero();     // velocity w.r.t. Earth in NED [m/s]
   Quat q_nb = Quat::Identity();  // attitude body → NED
-};
-
-/// One IMU output interval (t - dt, t]: integrated angular rate and specific force, as a real
-/// strapdown IMU delivers them (not the rotation vector: coning is the mechanization's job).
-struct ImuSample {
-  double t = 0.0;                // end of the interval [s]
-  double dt = 0.0;               // interval length [s]
-  Vec3 dtheta_b = Vec3::Zero();  // ∫ omega_ib_b dt [rad]
-  Vec3 dv_b = Vec3::Zero();      // ∫ f_b dt [m/s]
 };
 
 }  // namespace sinsim::nav

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/constants.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/report/report.hpp"
@@ -103,7 +104,7 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
       v.add(Series{batch.entries[prim[i]].label + " 95 %", t, column(prim[i], kVertical, 2), c,
                    true, 1.4, false});
       auto deg = [](std::vector<double> a) {
-        for (double& x : a) x *= 180.0 / 3.14159265358979323846;
+        for (double& x : a) x *= kDegPerRad;
         return a;
       };
       y.add(Series{batch.entries[prim[i]].label + " median", t, deg(column(prim[i], kYawAbs, 0)),

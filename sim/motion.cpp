@@ -1,5 +1,6 @@
 #include "sim/motion.hpp"
 
+#include "common/constants.hpp"
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -7,11 +8,10 @@
 namespace sinsim::sim {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 // Steepest flight-path angle a climb may reach at its peak: γ̇ = ḧ/(s cos γ) grows without
 // bound as γ → 90°, and a vertical climb has no heading.
-constexpr double kMaxPathAngle = 80.0 * kPi / 180.0;  // [rad]
+constexpr double kMaxPathAngle = 80.0 * kRadPerDeg;  // [rad]
 
 // Excursion E(u): 0 → 1 along S(2u) on [0, 1/2], back along 1 − S(2u − 1) on [1/2, 1].
 // Returns E and dE/du.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/config.hpp"
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 
 namespace sinsim::sim {
@@ -15,12 +16,10 @@ namespace {
 namespace fs = std::filesystem;
 using D = Dimension;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 // |latitude| limit: lon' = vE/((N+h) cos lat) is singular at the poles.
-constexpr double kMaxLatitude = 89.0 * kDeg;
+constexpr double kMaxLatitude = 89.0 * kRadPerDeg;
 // Largest coordinated bank a turn may ask for; tan φ grows without bound towards 90°.
-constexpr double kMaxBank = 80.0 * kDeg;
+constexpr double kMaxBank = 80.0 * kRadPerDeg;
 // Guard against a typo such as `count: 1000000000` filling memory with segments.
 constexpr std::size_t kMaxSegments = 1000000;
 
@@ -320,7 +319,7 @@ void parseStart(const ConfigNode& root, Scenario& sc) {
   m.roll = att.quantity("roll", D::angle(), 0.0);
   m.pitch = att.quantity("pitch", D::angle(), 0.0);
   if (std::isfinite(m.pitch))
-    att["pitch"].check(std::abs(m.pitch) < 90.0 * kDeg, "expected a pitch within ±90 deg");
+    att["pitch"].check(std::abs(m.pitch) < 90.0 * kRadPerDeg, "expected a pitch within ±90 deg");
   if (att.has("yaw") && s.has("heading")) {
     att["yaw"].error("give the heading or attitude.yaw, not both");
   }

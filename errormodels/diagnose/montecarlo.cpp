@@ -8,7 +8,7 @@
 #include "errormodels/diagnose/internal.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/spectrum.hpp"
-#include "nav/types.hpp"
+#include "common/types.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -119,11 +119,11 @@ void simulate(const ImuErrorModel& model, double rate, std::size_t n,
               std::array<std::vector<double>, 6>& out) {
   auto corruptor = model.instantiate(rate, {seed, run});
   const double dt = 1.0 / rate;
-  const nav::Vec3 dtheta(ideal[0] * dt, ideal[1] * dt, ideal[2] * dt);
-  const nav::Vec3 dv(ideal[3] * dt, ideal[4] * dt, ideal[5] * dt);
+  const Vec3 dtheta(ideal[0] * dt, ideal[1] * dt, ideal[2] * dt);
+  const Vec3 dv(ideal[3] * dt, ideal[4] * dt, ideal[5] * dt);
   for (int c : channels) out[c].resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    nav::ImuSample s;
+    ImuSample s;
     s.t = double(k + 1) * dt;
     s.dt = dt;
     s.dtheta_b = dtheta;

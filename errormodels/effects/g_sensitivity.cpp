@@ -9,22 +9,22 @@ namespace {
 
 class GSensitivityState final : public EffectState {
  public:
-  explicit GSensitivityState(const nav::Mat3& G) : G_(G) {}
-  void apply(nav::Vec3& u, const Interval& iv) override { u += G_ * iv.dv_ideal_b; }
+  explicit GSensitivityState(const Mat3& G) : G_(G) {}
+  void apply(Vec3& u, const Interval& iv) override { u += G_ * iv.dv_ideal_b; }
 
  private:
-  nav::Mat3 G_;  // [rad/s per m/s²] = [rad·s/m]
+  Mat3 G_;  // [rad/s per m/s²] = [rad·s/m]
 };
 
 class GSensitivity final : public Effect {
  public:
-  explicit GSensitivity(const nav::Mat3& G) : G_(G) {}
+  explicit GSensitivity(const Mat3& G) : G_(G) {}
   std::unique_ptr<EffectState> instantiate(const InstanceContext&) const override {
     return std::make_unique<GSensitivityState>(G_);
   }
 
  private:
-  nav::Mat3 G_;
+  Mat3 G_;
 };
 
 }  // namespace
@@ -35,7 +35,7 @@ std::unique_ptr<Effect> parseEffect_g_sensitivity(const ConfigNode& node, const 
     node["type"].error("g_sensitivity is a gyro effect (gyro bias per specific force)");
     return nullptr;
   }
-  nav::Mat3 G;
+  Mat3 G;
   if (!readMatrix3(node, Dimension::angularRate() / Dimension::acceleration(), G)) return nullptr;
   return std::make_unique<GSensitivity>(G);
 }

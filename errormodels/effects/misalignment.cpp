@@ -9,30 +9,30 @@ namespace {
 
 class MisalignmentState final : public EffectState {
  public:
-  explicit MisalignmentState(const nav::Mat3& M) : M_(M) {}
-  void apply(nav::Vec3& u, const Interval&) override { u += M_ * u; }
+  explicit MisalignmentState(const Mat3& M) : M_(M) {}
+  void apply(Vec3& u, const Interval&) override { u += M_ * u; }
 
  private:
-  nav::Mat3 M_;
+  Mat3 M_;
 };
 
 class Misalignment final : public Effect {
  public:
-  explicit Misalignment(const nav::Mat3& M) : M_(M) {}
+  explicit Misalignment(const Mat3& M) : M_(M) {}
   Stage stage() const override { return Stage::linear; }
   std::unique_ptr<EffectState> instantiate(const InstanceContext&) const override {
     return std::make_unique<MisalignmentState>(M_);
   }
 
  private:
-  nav::Mat3 M_;
+  Mat3 M_;
 };
 
 }  // namespace
 
 std::unique_ptr<Effect> parseEffect_misalignment(const ConfigNode& node, const EffectSite&) {
   node.allowKeys({"type", "enabled", "matrix"});
-  nav::Mat3 M;
+  Mat3 M;
   if (!node.require("matrix").exists()) return nullptr;
   if (!readMatrix3(node, Dimension::none(), M, /*alsoAngle=*/true)) return nullptr;
   if (M.diagonal().cwiseAbs().maxCoeff() != 0.0) {

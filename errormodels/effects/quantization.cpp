@@ -18,7 +18,7 @@ class QuantizationState final : public EffectState {
  public:
   QuantizationState(int axis, double lsb, bool isRate, bool carry)
       : axis_(axis), lsb_(lsb), isRate_(isRate), carry_(carry) {}
-  void apply(nav::Vec3& u, const Interval& iv) override {
+  void apply(Vec3& u, const Interval& iv) override {
     const double step = isRate_ ? lsb_ * iv.dt : lsb_;
     const double x = u[axis_] + (carry_ ? rest_ : 0.0);
     const double q = step * std::nearbyint(x / step);

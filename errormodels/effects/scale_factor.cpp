@@ -9,30 +9,30 @@ namespace {
 
 class LinearState final : public EffectState {
  public:
-  explicit LinearState(const nav::Mat3& M) : M_(M) {}
-  void apply(nav::Vec3& u, const Interval&) override { u += M_ * u; }
+  explicit LinearState(const Mat3& M) : M_(M) {}
+  void apply(Vec3& u, const Interval&) override { u += M_ * u; }
 
  private:
-  nav::Mat3 M_;
+  Mat3 M_;
 };
 
 class ScaleFactor final : public Effect {
  public:
-  explicit ScaleFactor(const nav::Mat3& S) : S_(S) {}
+  explicit ScaleFactor(const Mat3& S) : S_(S) {}
   Stage stage() const override { return Stage::linear; }
   std::unique_ptr<EffectState> instantiate(const InstanceContext&) const override {
     return std::make_unique<LinearState>(S_);
   }
 
  private:
-  nav::Mat3 S_;
+  Mat3 S_;
 };
 
 }  // namespace
 
 std::unique_ptr<Effect> parseEffect_scale_factor(const ConfigNode& node, const EffectSite&) {
   node.allowKeys({"type", "enabled", "value", "diagonal", "matrix"});
-  nav::Mat3 S;
+  Mat3 S;
   if (!readMatrix3(node, Dimension::none(), S)) return nullptr;
   return std::make_unique<ScaleFactor>(S);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "errormodels/fit/nnls.hpp"
 
@@ -21,8 +22,6 @@ std::string toString(AllanTermKind kind) {
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Row of the design matrix: d sigma^2 / d theta_j at tau (IEEE Std 952-1997 Annex C).
 std::array<double, kAllanTermCount> basis(double tau) {

@@ -9,11 +9,11 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "common/constants.hpp"
 
 namespace sinsim::errormodels {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// FFTW's planner is not thread-safe (FFTW manual 5.4): plans are made and destroyed under
 /// this lock; executing a plan on its own arrays is safe.

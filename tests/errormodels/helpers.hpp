@@ -17,7 +17,7 @@ inline std::vector<double> simulateRates(const errormodels::ImuErrorModel& m, do
                                          int sensorAxis = 0) {
   auto c = m.instantiate(rate, {seed, run});
   std::vector<double> out(n);
-  nav::ImuSample s;
+  ImuSample s;
   s.dt = 1.0 / rate;
   for (std::size_t k = 0; k < n; ++k) {
     s.t = double(k + 1) / rate;

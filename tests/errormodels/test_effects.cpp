@@ -28,9 +28,9 @@ std::string messageOf(const std::function<void()>& f) {
   return "";
 }
 
-nav::ImuSample sample(double t, double dt, nav::Vec3 dth = nav::Vec3::Zero(),
-                      nav::Vec3 dv = nav::Vec3::Zero()) {
-  nav::ImuSample s;
+ImuSample sample(double t, double dt, Vec3 dth = Vec3::Zero(),
+                      Vec3 dv = Vec3::Zero()) {
+  ImuSample s;
   s.t = t;
   s.dt = dt;
   s.dtheta_b = dth;
@@ -114,7 +114,7 @@ gyro:
   auto cq = m.instantiate(100.0, {3, 0});
   auto cr = raw.instantiate(100.0, {3, 0});
   const double lsb = 0.001 * kDeg;
-  nav::Vec3 sq = nav::Vec3::Zero(), sr = nav::Vec3::Zero();
+  Vec3 sq = Vec3::Zero(), sr = Vec3::Zero();
   double worst = 0.0;
   for (int k = 1; k <= 100000; ++k) {
     auto a = sample(k / 100.0, 0.01), b = a;
@@ -150,7 +150,7 @@ gyro:
 TEST_CASE("a rate LSB rounds each interval's increment to lsb·dt") {
   auto c = ImuErrorModel::fromString(
       "gyro:\n  z: [{type: quantization, lsb: 0.07326 deg/s}]\n", "q.yaml").instantiate(1000, {});
-  auto s = sample(0.001, 0.001, nav::Vec3(0, 0, 0.1 * kDeg * 0.001));  // 0.1 deg/s true
+  auto s = sample(0.001, 0.001, Vec3(0, 0, 0.1 * kDeg * 0.001));  // 0.1 deg/s true
   c->corrupt(s, NAN);
   // round(0.1/0.07326) = 1 LSB = 0.07326 deg/s; 1e-12 relative: unit conversion rounding.
   CHECK(s.dtheta_b.z() / 0.001 == Approx(0.07326 * kDeg).epsilon(1e-12));
@@ -168,14 +168,14 @@ accel:
     - {type: scale_factor, value: 200 ppm}
 )", "lin.yaml");
   auto c = m.instantiate(100, {});
-  const nav::Vec3 dth(0.01, -0.02, 0.03), dv(0.1, 0.2, -0.098);
+  const Vec3 dth(0.01, -0.02, 0.03), dv(0.1, 0.2, -0.098);
   auto s = sample(0.01, 0.01, dth, dv);
   c->corrupt(s, NAN);
-  nav::Mat3 S = nav::Vec3(1e-3, -5e-4, 0).asDiagonal();
-  nav::Mat3 M;
+  Mat3 S = Vec3(1e-3, -5e-4, 0).asDiagonal();
+  Mat3 M;
   M << 0, 1e-3, 0, 0, 0, -2e-3, 1e-3, 0, 0;
-  nav::Mat3 G = nav::Vec3(0.1 * kDeg / kG, 0, 0.2 * kDeg / kG).asDiagonal();
-  nav::Vec3 expected = (nav::Mat3::Identity() + M) * (nav::Mat3::Identity() + S) * dth + G * dv;
+  Mat3 G = Vec3(0.1 * kDeg / kG, 0, 0.2 * kDeg / kG).asDiagonal();
+  Vec3 expected = (Mat3::Identity() + M) * (Mat3::Identity() + S) * dth + G * dv;
   // 1e-15 absolute on 0.03 rad: a few roundings of 3×3 products.
   CHECK((s.dtheta_b - expected).norm() < 1e-15);
   CHECK((s.dv_b - 1.0002 * dv).norm() < 1e-15);
@@ -196,7 +196,7 @@ accel:
   CHECK(messageOf([&] { c->corrupt(s0, NAN); }).find("no sensor temperature") != std::string::npos);
   const double A = 0.05 * kDeg, w = 2 * M_PI * 12.34, ph = 30 * kDeg;
   const double R = 36 * kDeg / 3600 / 3600, Aw = 0.1 * kDeg, tw = 2.0;
-  nav::Vec3 sum = nav::Vec3::Zero();
+  Vec3 sum = Vec3::Zero();
   const double T = 273.15 + 35;  // 10 K above T0
   for (int k = 1; k <= 1000; ++k) {
     auto s = sample(k * 0.01, 0.01);

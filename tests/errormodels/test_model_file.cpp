@@ -27,8 +27,8 @@ bool hasDiagnostic(const std::vector<Diagnostic>& ds, int line, const std::strin
   return test::hasDiagnostic(ds, "bad.yaml", line, key, fragment);
 }
 
-nav::ImuSample staticSample(double t, double dt) {
-  nav::ImuSample s;
+ImuSample staticSample(double t, double dt) {
+  ImuSample s;
   s.t = t;
   s.dt = dt;
   return s;

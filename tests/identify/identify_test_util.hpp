@@ -7,7 +7,7 @@
 
 #include "errormodels/imu_model.hpp"
 #include "errormodels/stats/record.hpp"
-#include "nav/types.hpp"
+#include "common/types.hpp"
 
 namespace identify_test {
 
@@ -30,7 +30,7 @@ inline sinsim::errormodels::Record staticRecord(const std::string& body, double 
   for (int i = 0; i < 3; ++i) g[i].resize(n), a[i].resize(n);
   bool gAny[3] = {false, false, false}, aAny[3] = {false, false, false};
   for (std::size_t k = 0; k < n; ++k) {
-    nav::ImuSample s;
+    ImuSample s;
     s.t = static_cast<double>(k + 1) * dt;
     s.dt = dt;
     c->corrupt(s, 298.15);
