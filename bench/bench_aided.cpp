@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/ideal_imu.hpp"
 #include "sim/scenario.hpp"
@@ -16,6 +17,8 @@
 
 using namespace sinsim;
 using namespace sinsim::sim::aided;
+
+using sinsim::kRadPerDeg;
 
 namespace {
 
@@ -32,7 +35,7 @@ segments:
 )";
 
 FilterSensorModel model18() {
-  const double d = M_PI / 180.0;
+  const double d = kRadPerDeg;
   FilterSensorModel m;
   for (int i = 0; i < 3; ++i) {
     m.gyro[i].whiteDensity = 0.15 * d / 60.0;

@@ -8,13 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "sim/run.hpp"
 
 using namespace sinsim;
 
+using sinsim::kRadPerDeg;
+
 namespace {
-constexpr double kDeg = M_PI / 180.0;
 
 const char* kBase = R"(
 name: aided
@@ -54,7 +56,7 @@ initial_errors: {attitude: [1 deg, -1 deg, 5 deg]}
     if (std::abs(e.t - 61.0) < 1e-9) yawFree = e.euler.z();
   };
   sim::run(free, o);
-  CHECK(std::abs(yawFree - 5 * kDeg) < 1e-3);  // the initial error stays without alignment
+  CHECK(std::abs(yawFree - 5 * kRadPerDeg) < 1e-3);  // the initial error stays without alignment
   CHECK(std::abs(yawAfterAlign) < 1e-6);
 }
 
@@ -81,7 +83,7 @@ initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {
   sc.aiding.filter.enabled = true;
   sim::aided::FilterSensorModel fm;
   for (int i = 0; i < 3; ++i) {
-    fm.gyro[i].whiteDensity = 0.1 * kDeg / 60;
+    fm.gyro[i].whiteDensity = 0.1 * kRadPerDeg / 60;
     fm.accel[i].whiteDensity = 0.05 / 60;
   }
   sim::RunOptions o;

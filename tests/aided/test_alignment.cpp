@@ -5,14 +5,16 @@
 
 #include <cmath>
 
+#include "common/constants.hpp"
 #include "nav/alignment.hpp"
 #include "nav/attitude.hpp"
 #include "nav/earth.hpp"
 
 using namespace sinsim::nav;
 
+using sinsim::kRadPerDeg;
+
 namespace {
-constexpr double kDeg = M_PI / 180.0;
 
 struct Truth {
   Mat3 C_nb;
@@ -36,9 +38,9 @@ Vec3 attitudeError(const Quat& q_est, const Mat3& C_true) {
 
 TEST_CASE("coarse alignment: exact without sensor errors, closed-form errors with biases") {
   const Earth earth;
-  const Vec3 rpy(2.0 * kDeg, -3.0 * kDeg, 130.0 * kDeg);
+  const Vec3 rpy(2.0 * kRadPerDeg, -3.0 * kRadPerDeg, 130.0 * kRadPerDeg);
   for (double latDeg : {10.0, 60.0}) {
-    const double lat = latDeg * kDeg;
+    const double lat = latDeg * kRadPerDeg;
     const Truth t = stationary(earth, lat, rpy);
     const double g = earth.gravity_n(lat, 0.0).norm();
 
@@ -58,7 +60,7 @@ TEST_CASE("coarse alignment: exact without sensor errors, closed-form errors wit
     // Gyro bias 0.1 deg/h: heading error = east component / (Ω cos L) to first order; the next
     // term is relative O(ε), ε = |δω| / (Ω cos L) (the north component changes the horizontal
     // rate's magnitude): ε = 0.007 at 10°, 0.013 at 60°; the bound is 2ε.
-    const Vec3 bg = Vec3(0.3, -0.4, 0.1).normalized() * 0.1 * kDeg / 3600.0;
+    const Vec3 bg = Vec3(0.3, -0.4, 0.1).normalized() * 0.1 * kRadPerDeg / 3600.0;
     const Vec3 psiG = attitudeError(coarseAlignment(t.f_b, t.w_b + bg), t.C_nb);
     const double bgEast = (t.C_nb * bg).y();
     const double headExpect = std::abs(bgEast) / (earth.rate() * std::cos(lat));

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "errormodels/imu_model.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/ideal_imu.hpp"
@@ -19,9 +20,11 @@
 using namespace sinsim;
 using namespace sinsim::sim::aided;
 
+using sinsim::kRadPerDeg;
+using sinsim::kStandardGravity;
+
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 
 // A 150 s drive: 20 s static, accelerate, a turn, cruise; GNSS outage 100-130 s.
 const char* kScenario = R"(
@@ -53,10 +56,10 @@ accel:
 
 FilterSensorModel filterModel() {
   FilterSensorModel m;
-  const double g0 = 9.80665;
+  const double g0 = kStandardGravity;
   for (int i = 0; i < 3; ++i) {
-    m.gyro[i].whiteDensity = 0.15 * kDeg / 60.0;
-    m.gyro[i].blocks = {gaussMarkovState(20 * kDeg / 3600, 200), randomWalkState(3 * kDeg / 3600 / 60)};
+    m.gyro[i].whiteDensity = 0.15 * kRadPerDeg / 60.0;
+    m.gyro[i].blocks = {gaussMarkovState(20 * kRadPerDeg / 3600, 200), randomWalkState(3 * kRadPerDeg / 3600 / 60)};
     m.accel[i].whiteDensity = 0.1 / 60.0;
     m.accel[i].blocks = {gaussMarkovState(2e-3 * g0, 300), randomWalkState(0.05 / 3600 / 60)};
   }
@@ -97,7 +100,7 @@ TEST_CASE("filter model = truth model: NEES and NIS inside their 99 % chi-square
   cfg.initialErrors.velocity.random = true;
   cfg.initialErrors.velocity.sigma = nav::Vec3::Constant(0.05);
   cfg.initialErrors.attitude.random = true;
-  cfg.initialErrors.attitude.sigma = nav::Vec3(0.3, 0.3, 2.0) * kDeg;
+  cfg.initialErrors.attitude.sigma = nav::Vec3(0.3, 0.3, 2.0) * kRadPerDeg;
   cfg.gnss.enabled = true;
   cfg.gnss.rate = 1.0;
   cfg.gnss.positionSigma = nav::Vec3(1.0, 1.0, 2.0);

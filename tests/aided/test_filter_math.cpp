@@ -5,12 +5,15 @@
 #include <cmath>
 #include <random>
 
+#include "common/constants.hpp"
 #include "errormodels/ar_model.hpp"
 #include "sim/aided/discretize.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
 
 using namespace sinsim::sim::aided;
+
+using sinsim::kRadPerDeg;
 
 namespace {
 
@@ -94,7 +97,7 @@ TEST_CASE("AR(p) states that are the truth AR process predict with the closed-fo
   // exactly, the one-step prediction error of an AR(p) is its driving noise: variance σ_e²; over
   // two steps it is σ_e² (1 + ψ1²) with ψ1 = −a1 (Box, Jenkins & Reinsel 2008, eq. 5.1.16).
   const std::vector<double> a = {-1.0327, -0.34341, 0.037895, 0.19732, 0.14724};
-  const double sigmaE = 0.020539 * M_PI / 180.0, rate = 1000.0;
+  const double sigmaE = 0.020539 * kRadPerDeg, rate = 1000.0;
   const StateBlock b = arState(a, sigmaE, rate);
   const DiscreteSystem one = discretizeBlock(b, 1.0 / rate);
   const DiscreteSystem two = discretizeBlock(b, 2.0 / rate);

@@ -6,16 +6,18 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 #include "nav/ins_error_model.hpp"
 
 using namespace sinsim::nav;
+using sinsim::kRadPerDeg;
 
 TEST_CASE("static error dynamics: Schuler frequencies split by the Foucault rate") {
   const Earth earth;
   for (double latDeg : {20.0, 55.0}) {
     InsErrorPoint p;
-    p.lat = latDeg * M_PI / 180.0;
+    p.lat = latDeg * kRadPerDeg;
     p.h = 0.0;
     p.f_n = -earth.gravity_n(p.lat, 0.0);
     const Mat9 F = insErrorDynamics(earth, p, VerticalChannel::Held);
