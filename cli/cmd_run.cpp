@@ -43,6 +43,7 @@ void addRunCommand(CLI::App& app, Action& action) {
     std::optional<std::uint64_t> seed;
     std::string model;
     double biasWindow = 0.0;
+    bool imu = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -59,6 +60,9 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("--bias-window", args->biasWindow,
                   "Remove the mean sensor error of the first T seconds [s] (as a user does with a "
                   "static start; default 0: none)");
+  cmd->add_flag("--imu", args->imu,
+                "Also write imu.csv: ideal and measured IMU as rates and increments (one row per "
+                "IMU interval)");
   cmd->callback([&action, args]() {
     action = [args]() {
       const std::string file = args->scenario.empty() ? defaultScenario() : args->scenario;
@@ -68,6 +72,7 @@ void addRunCommand(CLI::App& app, Action& action) {
       opt.seed = args->seed;
       opt.biasWindow = args->biasWindow;
       if (!args->model.empty()) opt.model = args->model;
+      opt.writeImu = args->imu;
       const sim::RunSummary s = sim::run(sc, opt);
       std::cout << "sinsim run: " << file << " -> " << s.outDir
                 << " (truth.csv, nav.csv, errors.csv, summary.json) in " << s.wallTime << " s\n"

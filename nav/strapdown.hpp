@@ -64,6 +64,11 @@ class Strapdown {
   /// NaN). The state's time becomes imu.t. Throws InputError for dt ≤ 0 or a missing hRef.
   void update(const ImuSample& imu, double hRef = NAN);
 
+  /// Closed-loop feedback of an aiding filter: removes estimated errors from the state. δr_n =
+  /// [δN, δE, δD] [m], δv_n [m/s] (navigated − true) and the attitude error ψ [rad] with
+  /// Ĉ_nb = (I − [ψ×]) C_nb (nav/ins_error_model.hpp). Throws InputError for non-finite input.
+  void correct(const Vec3& dr_n, const Vec3& dv_n, const Vec3& psi);
+
   const NavState& state() const { return state_; }
   const StrapdownOptions& options() const { return options_; }
 

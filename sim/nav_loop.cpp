@@ -53,9 +53,8 @@ Bias meanBias(const std::vector<ImuEpoch>& head) {
 
 bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sink) {
   const nav::Earth& earth = sharedEarth();
-  nav::Strapdown strapdown(earth, opt.aiding ? opt.aiding->initialState(source.initial())
-                                             : source.initial(),
-                           opt.strapdown);
+  nav::Strapdown strapdown(
+      earth, opt.aiding ? opt.aiding->start(source.initial()) : source.initial(), opt.strapdown);
   ImuEpoch e;
   e.hasTruth = true;
   e.truth = source.initial();

@@ -14,7 +14,7 @@
 
 namespace sinsim::sim {
 
-/// The aiding hook (issue: GNSS/INS). initialState() chooses where the navigation starts (the
+/// The aiding hook (issue: GNSS/INS). start() chooses where the navigation starts (the
 /// truth plus a run's initial errors); epoch() is called once per interval, after the strapdown
 /// has integrated it and before the epoch is reported, with the interval (ideal and measured
 /// sample — after the bias window's correction —, truth where the source knows it) and the
@@ -25,7 +25,8 @@ namespace sinsim::sim {
 class NavAiding {
  public:
   virtual ~NavAiding() = default;
-  virtual nav::NavState initialState(const nav::NavState& truth) { return truth; }
+  /// Where the navigation starts, given the true start (initial errors); default: the truth.
+  virtual nav::NavState start(const nav::NavState& truth) { return truth; }
   virtual void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) = 0;
 };
 
@@ -44,8 +45,8 @@ struct NavLoopOptions {
 /// every interval, in time order, with the navigation state at e's end.
 using EpochSink = std::function<void(const ImuEpoch& e, const nav::NavState& nav)>;
 
-/// Navigates `source` from its true initial state (or options.aiding->initialState of it) with
-/// the WGS-84 earth. Returns false when
+/// Navigates `source` from its true initial state (or where the aiding says it starts) with the
+/// WGS-84 earth. Returns false when
 /// `cancel` became true (the sink has then seen only part of the run). Throws InputError for a
 /// bias window shorter than one IMU interval.
 bool navigate(ImuSource& source, const NavLoopOptions& options, const EpochSink& sink);

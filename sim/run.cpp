@@ -13,7 +13,9 @@
 #include "nav/strapdown.hpp"
 #include "sim/imu_source.hpp"
 #include "sim/nav_loop.hpp"
+#include "sim/aided/aided_output.hpp"
 #include "sim/output.hpp"
+#include "sim/scenario_aiding.hpp"
 #include "sim/trajectory.hpp"
 
 namespace sinsim::sim {
@@ -59,6 +61,23 @@ std::string lengthText(double m) {
   return buf;
 }
 
+// The scenario's aided navigation, or nullptr for a free-inertial run from the true start (which
+// then runs exactly as without aiding keys).
+std::unique_ptr<ScenarioAiding> makeAiding(const Scenario& sc, const RunOptions& opt,
+                                           const nav::Earth& earth,
+                                           const errormodels::StreamKey& key) {
+  if (sc.aiding.inert()) return nullptr;
+  if (opt.aiding)
+    throw InputError("scenario " + sc.name + " has its own aiding (initial_errors, alignment, "
+                     "gnss, filter) and the caller passed another aiding hook");
+  if (sc.aiding.filter.enabled && !opt.filterModel)
+    throw InputError("scenario " + sc.name + ": filter: {model: " + sc.aiding.filter.model +
+                     "}: reading a filter model file needs the ErrorModelSpec reader, which is "
+                     "not merged yet; pass the model typed (RunOptions::filterModel)");
+  return std::make_unique<ScenarioAiding>(
+      earth, sc, opt.filterModel.value_or(aided::FilterSensorModel{}), key);
+}
+
 }  // namespace
 
 NavError navError(const nav::Earth& earth, const nav::NavState& nav, const nav::NavState& truth) {
@@ -95,12 +114,13 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   const nav::Earth& earth = sharedEarth();
   const Trajectory trajectory(earth, sc.motion());
   TrajectorySource source(trajectory, sc.imuRate, corruptor.get(), sc.temperature);
+  std::unique_ptr<ScenarioAiding> aiding = makeAiding(sc, opt, earth, {seed, opt.runIndex});
   const long long decimation = sc.decimation();
 
   // --- outputs --------------------------------------------------------------------------------
   std::unique_ptr<OutputFiles> out;
   std::unique_ptr<FolderLock> lock;
-  std::FILE *fTruth = nullptr, *fNav = nullptr, *fErr = nullptr;
+  std::FILE *fTruth = nullptr, *fNav = nullptr, *fErr = nullptr, *fFilter = nullptr, *fImu = nullptr;
   if (!opt.outDir.empty()) {
     out = std::make_unique<OutputFiles>(opt.outDir);
     lock = std::make_unique<FolderLock>(opt.outDir);  // a second writer is refused
@@ -111,6 +131,9 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     std::fputs(kStateHeader, fTruth);
     std::fputs(kStateHeader, fNav);
     std::fputs(kErrorHeader, fErr);
+    if (aiding) aided::writeFilterHeader(fFilter = out->open("filter.csv"));
+    if (aiding) aiding->writeFilterRows(fFilter);
+    if (opt.writeImu) aided::writeImuHeader(fImu = out->open("imu.csv"));
   }
 
   RunSummary s;
@@ -124,6 +147,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   double prevSpeed = source.initial().v_n.norm();
   NavError err;
   auto onEpoch = [&](const ImuEpoch& e, const nav::NavState& navState) {
+    if (fImu && e.index > 0) aided::writeImuRow(fImu, e.ideal, e.measured);
     err = navError(earth, navState, e.truth);
     if (e.index > 0) {
       const double speed = e.truth.v_n.norm();
@@ -152,9 +176,10 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   NavLoopOptions loop;
   loop.strapdown = sc.strapdown;
   loop.biasWindow = opt.biasWindow;
-  loop.aiding = opt.aiding;
+  loop.aiding = aiding ? aiding.get() : opt.aiding;
   navigate(source, loop, onEpoch);
   s.final = err;
+  if (aiding) s.outages = aiding->aided().outages();
   s.rmsHorizontal = std::sqrt(sumH2 / static_cast<double>(rows));
   s.rmsVertical = std::sqrt(sumV2 / static_cast<double>(rows));
 
@@ -188,6 +213,12 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     if (s.distance > 0.0)
       j["final_horizontal_error_percent_of_distance"] = 100.0 * s.final.horizontal() / s.distance;
     j["files"] = {{"truth", "truth.csv"}, {"nav", "nav.csv"}, {"errors", "errors.csv"}};
+    if (fFilter) j["files"]["filter"] = "filter.csv";
+    if (fImu) j["files"]["imu"] = "imu.csv";
+    for (const aided::OutageResult& o : s.outages)
+      j["outages"].push_back({{"start_s", o.window.start}, {"end_s", o.window.end},
+                              {"max_horizontal_m", o.maxHorizontal}, {"at_s", o.t},
+                              {"filter_sigma_horizontal_m", o.sigmaHorizontal}});
     std::FILE* fSum = out->open("summary.json");
     const std::string text = j.dump(2) + "\n";
     std::fputs(text.c_str(), fSum);

@@ -10,6 +10,7 @@
 
 #include "nav/types.hpp"
 #include "sim/nav_loop.hpp"
+#include "sim/aided/aided_navigation.hpp"
 #include "sim/scenario.hpp"
 
 namespace sinsim::sim {
@@ -48,6 +49,12 @@ struct RunOptions {
   /// Called with the error of every output row (t = 0 and every 1/outputRate s), in time order,
   /// whether or not files are written: for statistics without CSV round trips.
   std::function<void(const NavError&)> onRow;
+  /// The filter's sensor model for a scenario with `filter:` (docs/aided.md), typed; required
+  /// there until model files are read into ErrorModelSpec values (then the scenario's file).
+  std::optional<aided::FilterSensorModel> filterModel;
+  /// Also write imu.csv: ideal and measured IMU, as rates and as increments (large: one row per
+  /// IMU interval).
+  bool writeImu = false;
 };
 
 struct RunSummary {
@@ -61,6 +68,7 @@ struct RunSummary {
   double maxHorizontal = 0.0, maxHorizontalTime = 0.0;  // over every IMU epoch [m], [s]
   double maxVertical = 0.0, maxVerticalTime = 0.0;      // [m], [s]
   double rmsHorizontal = 0.0, rmsVertical = 0.0;        // over the output rows [m]
+  std::vector<aided::OutageResult> outages;  // aided runs: per GNSS outage window
   double wallTime = 0.0;    // [s]
   std::string outDir;       // "" when nothing was written
 };

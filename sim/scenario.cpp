@@ -411,8 +411,10 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
     root.error("expected a scenario map with keys start, segments, ...");
     file.throwIfErrors();
   }
-  root.allowKeys({"name", "description", "start", "imu_rate", "output_rate", "vertical", "errors",
-                  "temperature", "seed", "segments"});
+  std::vector<std::string> keys = {"name",   "description", "start", "imu_rate", "output_rate",
+                                   "vertical", "errors", "temperature", "seed", "segments"};
+  keys.insert(keys.end(), aided::aidingKeys().begin(), aided::aidingKeys().end());
+  root.allowKeys(keys);
   sc.name = root.string("name", fs::path(file.name()).stem().string());
   sc.description = root.string("description", "");
   parseStart(root, sc);
@@ -450,6 +452,7 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
   }
 
   parseTemperature(root, sc, sc.duration());
+  sc.aiding = aided::parseAiding(root, baseDir, sc.duration());
 
   std::vector<Diagnostic> foreign;
   sc.errors = parseErrors(root, baseDir, foreign);

@@ -10,6 +10,7 @@
 
 #include "errormodels/imu_model.hpp"
 #include "nav/strapdown.hpp"
+#include "sim/aided/aiding_config.hpp"
 #include "sim/motion.hpp"
 
 namespace sinsim::sim {
@@ -38,6 +39,8 @@ struct Scenario {
   errormodels::ImuErrorModel errors = errormodels::ImuErrorModel::none();
   TemperatureProfile temperature;
   std::optional<std::uint64_t> seed;  // `seed:`; the run's --seed overrides it
+  /// initial_errors, alignment, gnss, filter (docs/aided.md); inert() for a free-inertial run.
+  aided::AidingConfig aiding;
 
   double duration() const;  // [s], sum of the segment durations
   MotionProfile motion() const { return MotionProfile(start, segments); }

@@ -89,7 +89,7 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
   struct Probe : sim::NavAiding {
     long long calls = 0, differ = 0, withTruth = 0;
     double lastT = 0;
-    nav::NavState initialState(const nav::NavState& truth) override {
+    nav::NavState start(const nav::NavState& truth) override {
       nav::NavState s = truth;
       s.lat += 10.0 / 6.4e6;  // ~10 m north of the truth
       return s;
@@ -111,7 +111,7 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
   CHECK(probe.differ == s.imuSamples);     // white noise: every measured sample differs
   CHECK(probe.withTruth == s.imuSamples);  // a trajectory source knows the truth everywhere
   CHECK(probe.lastT == Approx(s.duration));
-  // The navigation started where initialState put it: δlat = 10 / 6.4e6 rad north, times the
+  // The navigation started where start() put it: δlat = 10 / 6.4e6 rad north, times the
   // WGS-84 meridian radius at 45° plus the height, M + h = 6 367 581.8 m (closed form
   // a(1 − e²)/(1 − e² sin²φ)^1.5): 9.9493 m; 1 mm allows for the printed digits.
   REQUIRE(rows.size() > 1);

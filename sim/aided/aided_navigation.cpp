@@ -1,0 +1,185 @@
+#include "sim/aided/aided_navigation.hpp"
+
+#include <cmath>
+
+#include "nav/alignment.hpp"
+#include "nav/attitude.hpp"
+
+namespace sinsim::sim::aided {
+namespace {
+
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+
+// ψ of Ĉ = (I − [ψ×]) C from Ĉ Cᵀ (antisymmetric part; exact to first order).
+nav::Vec3 attitudeError(const nav::Quat& q_est, const nav::Quat& q_true) {
+  const nav::Mat3 E = (q_est * q_true.conjugate()).toRotationMatrix();
+  return 0.5 * nav::Vec3(E(1, 2) - E(2, 1), E(2, 0) - E(0, 2), E(0, 1) - E(1, 0));
+}
+
+FilterOptions filterOptions(const AidingConfig& c, const nav::StrapdownOptions& sd) {
+  FilterOptions o;
+  o.vertical = sd.vertical;
+  o.sigma0 << c.initialErrors.position.spread(), c.initialErrors.velocity.spread(),
+      c.initialErrors.attitude.spread();
+  // A filter must not start certain of what it does not know: floor the start at 1 mm, 1 mm/s,
+  // 1 µrad (numbers far below any GNSS/INS accuracy, above rounding).
+  for (int i = 0; i < 9; ++i) o.sigma0[i] = std::max(o.sigma0[i], i < 6 ? 1e-3 : 1e-6);
+  return o;
+}
+
+}  // namespace
+
+Vec9 navErrorStates(const nav::Earth& earth, const nav::NavState& nav,
+                    const nav::NavState& truth) {
+  double M = 0.0, N = 0.0;
+  earth.radii(truth.lat, M, N);
+  Vec9 e;
+  e.segment<3>(0) = nav::Vec3((nav.lat - truth.lat) * (M + truth.h),
+                              nav::wrapAngle(nav.lon - truth.lon) * (N + truth.h) * std::cos(truth.lat),
+                              -(nav.h - truth.h));
+  e.segment<3>(3) = nav.v_n - truth.v_n;
+  e.segment<3>(6) = attitudeError(nav.q_nb, truth.q_nb);
+  return e;
+}
+
+AidedNavigation::AidedNavigation(const nav::Earth& earth, const AidingConfig& config,
+                                 FilterSensorModel model,
+                                 const nav::StrapdownOptions& strapdownOptions,
+                                 const errormodels::StreamKey& key)
+    : earth_(&earth),
+      config_(config),
+      filter_(earth, std::move(model), filterOptions(config, strapdownOptions)),
+      sdOptions_(strapdownOptions),
+      posNoise_(key.seed, key.run, errormodels::streamId(2, 1, 0)),
+      velNoise_(key.seed, key.run, errormodels::streamId(2, 2, 0)) {
+  errormodels::NormalStream init(key.seed, key.run, errormodels::streamId(2, 0, 0));
+  const ValueOrSigma* parts[3] = {&config.initialErrors.position, &config.initialErrors.velocity,
+                                  &config.initialErrors.attitude};
+  for (int p = 0; p < 3; ++p)
+    for (int i = 0; i < 3; ++i) {
+      const double w = init.next();  // drawn always: the streams do not shift with the config
+      initialError_[3 * p + i] = parts[p]->random ? parts[p]->sigma[i] * w : parts[p]->value[i];
+    }
+  aligned_ = !(config.alignment.duration > 0.0);
+  for (const TimeWindow& w : config.gnss.outages) outages_.push_back({w, 0.0, 0.0, 0.0});
+  sum_.f_n.setZero();
+  sum_.C_nb.setZero();
+}
+
+nav::NavState AidedNavigation::initialState(const nav::NavState& truth) const {
+  nav::NavState s = truth;
+  double M = 0.0, N = 0.0;
+  earth_->radii(truth.lat, M, N);
+  s.lat += initialError_[0] / (M + truth.h);
+  s.lon += initialError_[1] / ((N + truth.h) * std::cos(truth.lat));
+  s.h -= initialError_[2];
+  s.v_n += initialError_.segment<3>(3);
+  s.q_nb = nav::quatFromEuler(nav::eulerFromQuat(truth.q_nb) + initialError_.segment<3>(6));
+  return s;
+}
+
+void AidedNavigation::align(const nav::ImuSample& m, const nav::NavState& truth,
+                            nav::Strapdown& sd) {
+  if (sumDt_ == 0.0) alignAnchor_ = sd.state();  // the start as the user believes it
+  sumDtheta_ += m.dtheta_b;
+  sumDv_ += m.dv_b;
+  sumDt_ += m.dt;
+  // Static: hold position and velocity at the start (a zero-velocity hold), leave attitude free.
+  Vec9 e = navErrorStates(*earth_, sd.state(), alignAnchor_);
+  sd.correct(e.segment<3>(0), e.segment<3>(3), nav::Vec3::Zero());
+  if (truth.t + 0.5 * m.dt < config_.alignment.duration) return;
+  const nav::Quat q = nav::coarseAlignment(sumDv_ / sumDt_, sumDtheta_ / sumDt_);
+  // The exact rotation from the navigated to the aligned attitude (correct() applies R(ψ) q_nb;
+  // the first-order attitudeError would leave θ³/6, 1e-4 rad for a 5° start).
+  sd.correct(nav::Vec3::Zero(), nav::Vec3::Zero(),
+             nav::rotationVectorFromQuat(q * sd.state().q_nb.conjugate()));
+  aligned_ = true;
+  fixIndex_ = static_cast<long long>(std::floor(truth.t * config_.gnss.rate + 1e-9));
+  stepTime_ = 0.0;
+}
+
+void AidedNavigation::fix(const nav::NavState& truth, nav::Strapdown& sd, FilterEpoch& out) {
+  const GnssConfig& g = config_.gnss;
+  const nav::NavState& s = sd.state();
+  const Vec9 e = navErrorStates(*earth_, s, truth);
+  const nav::Vec3 lever_n = s.q_nb * g.leverArm_b;
+  nav::Vec3 noise(posNoise_.next(), posNoise_.next(), posNoise_.next());
+  const nav::Vec3 dzPos =
+      e.segment<3>(0) + lever_n - truth.q_nb * g.leverArm_b - g.positionSigma.cwiseProduct(noise);
+  Innovation in = filter_.updatePosition(dzPos, lever_n, g.positionSigma);
+  out.nis = in.nis;
+  out.nisDof = 3;
+  if (g.velocitySigma) {
+    noise = nav::Vec3(velNoise_.next(), velNoise_.next(), velNoise_.next());
+    const nav::Vec3 dzVel = e.segment<3>(3) - g.velocitySigma->cwiseProduct(noise);
+    in = filter_.updateVelocity(dzVel, *g.velocitySigma);
+    out.nis += in.nis;
+    out.nisDof = 6;
+  }
+  out.aiding = true;
+  const Vec9 c = filter_.takeNavCorrection();
+  sd.correct(c.segment<3>(0), c.segment<3>(3), c.segment<3>(6));
+}
+
+FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::NavState& truth,
+                                           nav::Strapdown& sd) {
+  FilterEpoch out;
+  out.t = truth.t;
+  if (!aligned_) {
+    align(m, truth, sd);
+    return out;
+  }
+  if (!config_.filter.enabled) return out;
+
+  // Sensor-error compensation of this interval (first order in dt).
+  const nav::Mat3 C = sd.state().q_nb.toRotationMatrix();
+  const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
+  sd.correct(nav::Vec3::Zero(), C * ba * m.dt, -C * bg * m.dt);
+
+  // Means of the linearisation point over the propagation step.
+  const nav::NavState& s = sd.state();
+  sum_.lat += s.lat * m.dt;
+  sum_.h += s.h * m.dt;
+  sum_.v_n += s.v_n * m.dt;
+  sum_.f_n += C * (m.dv_b - ba * m.dt);
+  sum_.C_nb += C * m.dt;
+  stepTime_ += m.dt;
+
+  const GnssConfig& g = config_.gnss;
+  const double tick = static_cast<double>(fixIndex_ + 1) / g.rate;
+  if (truth.t + 0.5 * m.dt < tick) return out;
+  ++fixIndex_;
+  nav::InsErrorPoint p;
+  p.lat = sum_.lat / stepTime_;
+  p.h = sum_.h / stepTime_;
+  p.v_n = sum_.v_n / stepTime_;
+  p.f_n = sum_.f_n / stepTime_;
+  p.C_nb = sum_.C_nb / stepTime_;
+  filter_.setVerticalGains(sd.dampingGainK1(), sd.dampingGainK2());
+  filter_.propagate(p, stepTime_);
+  sum_ = nav::InsErrorPoint();
+  sum_.f_n.setZero();
+  sum_.C_nb.setZero();
+  stepTime_ = 0.0;
+
+  out.outage = g.inOutage(truth.t);
+  if (!out.outage) fix(truth, sd, out);
+
+  out.filtered = true;
+  out.error = navErrorStates(*earth_, sd.state(), truth);
+  const Eigen::Matrix<double, 9, 9> P = filter_.P().topLeftCorner<9, 9>();
+  out.sigma = P.diagonal().cwiseSqrt();
+  out.nees = out.error.dot(P.ldlt().solve(out.error));
+  for (OutageResult& o : outages_) {
+    if (!o.window.contains(truth.t)) continue;
+    const double hor = std::hypot(out.error[0], out.error[1]);
+    if (hor >= o.maxHorizontal) {
+      o.maxHorizontal = hor;
+      o.sigmaHorizontal = std::sqrt(P(0, 0) + P(1, 1));
+      o.t = truth.t;
+    }
+  }
+  return out;
+}
+
+}  // namespace sinsim::sim::aided

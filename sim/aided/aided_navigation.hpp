@@ -1,0 +1,94 @@
+// Aided navigation around one strapdown: the run's initial errors, coarse alignment, GNSS fixes
+// simulated from the truth (white noise, lever arm, outages) and the closed-loop error-state
+// filter. The navigation loop calls afterInterval once per IMU interval, after the strapdown has
+// integrated the measured sample; what it leaves in the strapdown is the navigation solution.
+//
+// Closed loop: the filter's sensor-error estimate is removed from each interval's effect on the
+// strapdown (first order in dt: δv −= C_nb b̂_a dt, ψ −= −C_nb b̂_g dt), and each update's δr, δv,
+// ψ are fed back through Strapdown::correct and zeroed in the filter.
+//
+// Random streams (errormodels/random.hpp), keyed by (seed, run): stream id (2, 0) the initial
+// errors, (2, 1) GNSS position noise, (2, 2) GNSS velocity noise. The IMU's own streams (sensor
+// 0, 1) are untouched, so a run with and without aiding sees the same IMU errors.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "errormodels/imu_model.hpp"
+#include "errormodels/random.hpp"
+#include "nav/earth.hpp"
+#include "nav/strapdown.hpp"
+#include "sim/aided/aiding_config.hpp"
+#include "sim/aided/error_state_filter.hpp"
+
+namespace sinsim::sim::aided {
+
+/// One outage's outcome: the largest horizontal error inside the window and the filter's
+/// horizontal 1-sigma sqrt(P_NN + P_EE) at that moment.
+struct OutageResult {
+  TimeWindow window;
+  double maxHorizontal = 0.0;        // [m]
+  double sigmaHorizontal = 0.0;      // [m]
+  double t = 0.0;                    // when the maximum occurred [s]
+};
+
+/// The filter's view at one epoch, against the truth.
+struct FilterEpoch {
+  double t = 0.0;                                  // [s]
+  bool filtered = false;                           // a GNSS clock epoch: the fields below are set
+  Eigen::Matrix<double, 9, 1> error;               // nav − truth: δr_n [m], δv_n [m/s], ψ [rad]
+  Eigen::Matrix<double, 9, 1> sigma;               // filter 1-sigma of the same
+  double nees = NAN;                               // errorᵀ P⁻¹ error over the 9 nav states
+  double nis = NAN;                                // of the update at this epoch (NaN: none)
+  int nisDof = 0;                                  // its degrees of freedom (3 or 6)
+  bool aiding = false;                             // a fix was used at this epoch
+  bool outage = false;                             // inside an outage window
+};
+
+class AidedNavigation {
+ public:
+  /// earth must outlive the object; strapdownOptions as the strapdown runs (vertical channel;
+  /// its damping gains are read from the strapdown at each step).
+  AidedNavigation(const nav::Earth& earth, const AidingConfig& config, FilterSensorModel model,
+                  const nav::StrapdownOptions& strapdownOptions, const errormodels::StreamKey& key);
+
+  /// The navigation's start: the true start plus this run's initial errors.
+  nav::NavState initialState(const nav::NavState& truth) const;
+
+  /// One IMU interval: `measured` has just been integrated by `strapdown`; truth is the true state
+  /// at the interval's end. Returns the epoch's filter view.
+  FilterEpoch afterInterval(const nav::ImuSample& measured, const nav::NavState& truth,
+                            nav::Strapdown& strapdown);
+
+  const std::vector<OutageResult>& outages() const { return outages_; }
+  const ErrorStateFilter& filter() const { return filter_; }
+
+ private:
+  void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
+  void fix(const nav::NavState& truth, nav::Strapdown& sd, FilterEpoch& out);
+
+  const nav::Earth* earth_;
+  AidingConfig config_;
+  ErrorStateFilter filter_;
+  nav::StrapdownOptions sdOptions_;
+  Eigen::Matrix<double, 9, 1> initialError_;  // drawn once: δr_n, δv_n, roll/pitch/yaw
+  errormodels::NormalStream posNoise_, velNoise_;
+  // alignment: sums of the measured increments over the static start
+  nav::Vec3 sumDtheta_ = nav::Vec3::Zero(), sumDv_ = nav::Vec3::Zero();
+  double sumDt_ = 0.0;
+  bool aligned_ = false;
+  nav::NavState alignAnchor_;  // position and velocity held during alignment
+  // linearisation point accumulated since the last propagation (means over the step)
+  nav::InsErrorPoint sum_;
+  double stepTime_ = 0.0;
+  long long fixIndex_ = 0;  // next GNSS epoch number (t = k / rate)
+  std::vector<OutageResult> outages_;
+};
+
+/// The 9 navigation errors nav − truth in the filter's states: δr_n [m] (radii at the truth),
+/// δv_n, and ψ from Ĉ_nb C_nbᵀ ≈ I − [ψ×].
+Eigen::Matrix<double, 9, 1> navErrorStates(const nav::Earth& earth, const nav::NavState& nav,
+                                           const nav::NavState& truth);
+
+}  // namespace sinsim::sim::aided

@@ -1,0 +1,159 @@
+#include "sim/aided/aiding_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace sinsim::sim::aided {
+namespace {
+
+using D = Dimension;
+namespace fs = std::filesystem;
+
+// A scalar (the same on all three axes) or a list of three quantities of dimension dim.
+nav::Vec3 vec3(const ConfigNode& n, D dim, bool positive) {
+  nav::Vec3 v = nav::Vec3::Constant(NAN);
+  if (n.isScalar()) {
+    v.setConstant(n.asQuantity(dim).value_or(NAN));
+  } else if (n.isSequence()) {
+    const auto items = n.items();
+    if (items.size() != 3) {
+      n.error("expected 3 values (x, y, z or north, east, down), got " +
+              std::to_string(items.size()));
+      return v;
+    }
+    for (int i = 0; i < 3; ++i) v[i] = items[i].asQuantity(dim).value_or(NAN);
+  } else {
+    n.error("expected a value or a list of 3 values");
+    return v;
+  }
+  if (v.allFinite())
+    n.check(!positive || (v.array() > 0.0).all(), "expected positive values");
+  return v;
+}
+
+ValueOrSigma valueOrSigma(const ConfigNode& n, D dim) {
+  ValueOrSigma vs;
+  if (!n.exists()) return vs;
+  if (n.isMap()) {
+    n.allowKeys({"sigma"});
+    const ConfigNode s = n.require("sigma");
+    if (s.exists()) {
+      vs.random = true;
+      vs.sigma = vec3(s, dim, false);
+      if (vs.sigma.allFinite()) s.check((vs.sigma.array() >= 0.0).all(), "expected sigmas ≥ 0");
+    }
+  } else {
+    vs.value = vec3(n, dim, false);
+  }
+  return vs;
+}
+
+void parseInitialErrors(const ConfigNode& root, InitialErrors& e) {
+  const ConfigNode n = root["initial_errors"];
+  if (!n.exists()) return;
+  n.allowKeys({"position", "velocity", "attitude"});
+  e.position = valueOrSigma(n["position"], D::length());
+  e.velocity = valueOrSigma(n["velocity"], D::speed());
+  e.attitude = valueOrSigma(n["attitude"], D::angle());
+}
+
+void parseAlignment(const ConfigNode& root, AlignmentConfig& a) {
+  const ConfigNode n = root["alignment"];
+  if (!n.exists()) return;
+  n.allowKeys({"type", "duration"});
+  n.choice("type", {"coarse"}, "coarse");
+  a.duration = n.quantity("duration", D::time());
+  n["duration"].check(std::isfinite(a.duration) && a.duration > 0.0, "expected a positive time");
+}
+
+void parseOutages(const ConfigNode& n, double duration, std::vector<TimeWindow>& out) {
+  if (!n.exists()) return;
+  for (const ConfigNode& w : n.items()) {
+    TimeWindow tw;
+    if (w.isMap()) {
+      w.allowKeys({"start", "duration", "end"});
+      tw.start = w.quantity("start", D::time());
+      if (w.has("end") == w.has("duration")) {
+        w.error("give an outage's end or its duration (one of them)");
+        continue;
+      }
+      tw.end = w.has("end") ? w.quantity("end", D::time())
+                            : tw.start + w.quantity("duration", D::time());
+    } else if (w.isSequence() && w.items().size() == 2) {
+      tw.start = w.items()[0].asQuantity(D::time()).value_or(NAN);
+      tw.end = w.items()[1].asQuantity(D::time()).value_or(NAN);
+    } else {
+      w.error("expected an outage as [start, end] or {start, duration}");
+      continue;
+    }
+    if (!(std::isfinite(tw.start) && std::isfinite(tw.end))) continue;
+    if (!w.check(tw.start >= 0.0 && tw.end > tw.start, "expected 0 ≤ start < end")) continue;
+    w.check(tw.start < duration || !(duration > 0.0),
+            "the outage starts after the scenario's end");
+    out.push_back(tw);
+  }
+  std::sort(out.begin(), out.end(),
+            [](const TimeWindow& a, const TimeWindow& b) { return a.start < b.start; });
+  for (std::size_t i = 1; i < out.size(); ++i)
+    n.check(out[i].start >= out[i - 1].end, "outage windows overlap");
+}
+
+void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
+  const ConfigNode n = root["gnss"];
+  if (!n.exists()) return;
+  n.allowKeys({"rate", "position_sigma", "velocity_sigma", "lever_arm", "outages"});
+  g.enabled = true;
+  g.rate = n.quantity("rate", D::frequency(), 1.0);
+  n["rate"].check(std::isfinite(g.rate) && g.rate > 0.0, "expected a positive rate");
+  if (n.has("position_sigma")) g.positionSigma = vec3(n["position_sigma"], D::length(), true);
+  if (n.has("velocity_sigma")) g.velocitySigma = vec3(n["velocity_sigma"], D::speed(), true);
+  if (n.has("lever_arm")) g.leverArm_b = vec3(n["lever_arm"], D::length(), false);
+  parseOutages(n["outages"], duration, g.outages);
+}
+
+void parseFilter(const ConfigNode& root, const std::string& baseDir, FilterConfig& f) {
+  const ConfigNode n = root["filter"];
+  if (!n.exists()) return;
+  n.allowKeys({"model"});
+  const std::string model = n.string("model");
+  if (model.empty()) return;
+  fs::path p(model);
+  if (p.is_relative()) p = fs::path(baseDir) / p;
+  f.model = p.lexically_normal().string();
+  f.enabled = n["model"].check(fs::exists(f.model), "no such model file: " + f.model);
+}
+
+}  // namespace
+
+bool InitialErrors::any() const {
+  for (const ValueOrSigma* v : {&position, &velocity, &attitude})
+    if (v->random ? !v->sigma.isZero() : !v->value.isZero()) return true;
+  return false;
+}
+
+bool GnssConfig::inOutage(double t) const {
+  for (const TimeWindow& w : outages)
+    if (w.contains(t)) return true;
+  return false;
+}
+
+AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration) {
+  AidingConfig c;
+  parseInitialErrors(root, c.initialErrors);
+  parseAlignment(root, c.alignment);
+  parseGnss(root, duration, c.gnss);
+  parseFilter(root, baseDir, c.filter);
+  if (c.filter.enabled && !c.gnss.enabled)
+    root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
+  if (c.gnss.enabled && !c.filter.enabled && root.has("gnss"))
+    root["gnss"].error("GNSS fixes need a filter to use them (filter: {model: FILE})");
+  return c;
+}
+
+const std::vector<std::string>& aidingKeys() {
+  static const std::vector<std::string> keys = {"initial_errors", "alignment", "gnss", "filter"};
+  return keys;
+}
+
+}  // namespace sinsim::sim::aided

@@ -1,0 +1,78 @@
+// The aided-navigation keys of a scenario, typed and in SI (docs/aided.md):
+//   initial_errors   the navigation's start minus the truth: position, velocity, attitude, each a
+//                    fixed value or a sigma drawn per run
+//   alignment        coarse alignment (leveling + gyrocompassing) over the first static seconds
+//   gnss             position (and velocity) fixes from the truth with white noise, a lever arm,
+//                    outages as time windows
+//   filter           the filter's own sensor model file (may differ from the truth `errors:`)
+// Read once by the scenario reader (parseAiding); nothing below re-reads YAML.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/config.hpp"
+#include "nav/types.hpp"
+
+namespace sinsim::sim::aided {
+
+/// A 3-vector that is either a fixed value or a standard deviation of a zero-mean draw.
+struct ValueOrSigma {
+  nav::Vec3 value = nav::Vec3::Zero();  // used when !random
+  nav::Vec3 sigma = nav::Vec3::Zero();  // used when random
+  bool random = false;
+  /// Its 1-sigma size (|value| for a fixed value): what a filter should start with.
+  nav::Vec3 spread() const { return random ? sigma : value.cwiseAbs(); }
+};
+
+struct InitialErrors {
+  ValueOrSigma position;  // north, east, down [m]
+  ValueOrSigma velocity;  // NED [m/s]
+  ValueOrSigma attitude;  // roll, pitch, yaw [rad]
+  bool any() const;
+};
+
+struct AlignmentConfig {
+  double duration = 0.0;  // [s] of the static start averaged; 0: no alignment
+};
+
+struct TimeWindow {
+  double start = 0.0, end = 0.0;  // [s]
+  bool contains(double t) const { return t >= start && t < end; }
+};
+
+struct GnssConfig {
+  bool enabled = false;
+  double rate = 1.0;                                // [Hz]
+  nav::Vec3 positionSigma = nav::Vec3::Constant(1.0);  // north, east, down [m]
+  std::optional<nav::Vec3> velocitySigma;           // NED [m/s]; none: position only
+  nav::Vec3 leverArm_b = nav::Vec3::Zero();         // antenna in body axes [m]
+  std::vector<TimeWindow> outages;                  // sorted, no fixes inside
+  bool inOutage(double t) const;
+};
+
+struct FilterConfig {
+  bool enabled = false;
+  std::string model;  // path of the filter's sensor model file, resolved against the scenario
+};
+
+struct AidingConfig {
+  InitialErrors initialErrors;
+  AlignmentConfig alignment;
+  GnssConfig gnss;
+  FilterConfig filter;
+  /// True when nothing differs from a free-inertial run from the true state.
+  bool inert() const { return !initialErrors.any() && alignment.duration == 0.0 && !gnss.enabled &&
+                              !filter.enabled; }
+};
+
+/// Reads initial_errors, alignment, gnss and filter from a scenario's root map; problems are
+/// recorded in the file's diagnostics with their line and key path. `baseDir` resolves a relative
+/// filter model path; `duration` [s] is the scenario's, to check outage windows against.
+AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration);
+
+/// The root keys parseAiding reads (for the scenario's allowKeys).
+const std::vector<std::string>& aidingKeys();
+
+}  // namespace sinsim::sim::aided

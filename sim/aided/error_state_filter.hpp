@@ -1,0 +1,88 @@
+// The loosely coupled GNSS/INS error-state Kalman filter: the 9 INS error states of
+// nav/ins_error_model.hpp followed by the sensor-error states of the filter's OWN sensor model
+// (sensor_states.hpp; it may differ from the truth model by design). Closed loop: after each
+// update the caller takes the navigation correction (and the states are zeroed) and compensates
+// the IMU with the sensor-error estimate.
+//
+// Propagation is exact for the model held constant over the step: Van Loan on the continuous part
+// (INS errors, white noise, bias / random-walk / Gauss-Markov states), the AR blocks' own A^m and
+// Σ A^j Q A^jᵀ spliced in (sensor_states.hpp).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "nav/earth.hpp"
+#include "nav/ins_error_model.hpp"
+#include "sim/aided/kalman.hpp"
+#include "sim/aided/sensor_states.hpp"
+
+namespace sinsim::sim::aided {
+
+/// The error processes of one sensor axis as the filter models them.
+struct SensorAxisModel {
+  double whiteDensity = 0.0;       // white-noise density [signal/sqrt(Hz)]; 0: none
+  std::vector<StateBlock> blocks;  // state-carrying processes, summed
+};
+
+/// The filter's IMU model: gyro axes in [rad/s], accelerometer axes in [m/s^2].
+struct FilterSensorModel {
+  SensorAxisModel gyro[3], accel[3];
+  int stateCount() const;
+};
+
+struct FilterOptions {
+  nav::VerticalChannel vertical = nav::VerticalChannel::Free;
+  double k1 = 0.0, k2 = 0.0;  // damped vertical channel gains [1/s], [1/s^2]
+  /// Initial 1-sigma of δr_n [m], δv_n [m/s], ψ [rad].
+  Eigen::Matrix<double, 9, 1> sigma0 = Eigen::Matrix<double, 9, 1>::Zero();
+};
+
+class ErrorStateFilter {
+ public:
+  /// The earth must outlive the filter.
+  ErrorStateFilter(const nav::Earth& earth, FilterSensorModel model, const FilterOptions& options);
+
+  int size() const { return static_cast<int>(x_.size()); }
+  const Eigen::VectorXd& x() const { return x_; }
+  const Eigen::MatrixXd& P() const { return P_; }
+  /// Current estimates of the gyro [rad/s] and accelerometer [m/s^2] errors, per body axis.
+  nav::Vec3 gyroError() const { return sensorError(0); }
+  nav::Vec3 accelError() const { return sensorError(3); }
+
+  /// The damped vertical channel's gains as the strapdown runs them [1/s], [1/s^2].
+  void setVerticalGains(double k1, double k2) {
+    options_.k1 = k1;
+    options_.k2 = k2;
+  }
+  /// Propagates x and P over T [s] with the error dynamics linearised at p. Closed loop: the
+  /// navigation part of x stays zero (the caller compensates the IMU with gyroError/accelError).
+  void propagate(const nav::InsErrorPoint& p, double T);
+  /// Continuous system (F, Qc) at p, for tests and for callers that discretise themselves.
+  void continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F, Eigen::MatrixXd& Qc) const;
+
+  /// Position fix: dz = (INS antenna position − GNSS position) in NED [m]; leverArm_n = C_nb l_b
+  /// [m] (the antenna seen from the IMU, NED); sigma [m] per axis.
+  Innovation updatePosition(const nav::Vec3& dz, const nav::Vec3& leverArm_n,
+                            const nav::Vec3& sigma);
+  /// Velocity fix: dz = INS velocity − GNSS velocity in NED [m/s] (lever-arm rate term ignored).
+  Innovation updateVelocity(const nav::Vec3& dz, const nav::Vec3& sigma);
+
+  /// Closed-loop feedback: returns the estimated δr_n, δv_n, ψ and zeroes them in x (their
+  /// covariance is unchanged: the correction is a known shift).
+  Eigen::Matrix<double, 9, 1> takeNavCorrection();
+
+ private:
+  nav::Vec3 sensorError(int firstAxis) const;
+
+  const nav::Earth* earth_;
+  FilterSensorModel model_;
+  FilterOptions options_;
+  struct Placed { int axis; int offset; const StateBlock* block; };  // axis 0-2 gyro, 3-5 accel
+  std::vector<Placed> placed_;
+  Eigen::VectorXd x_;
+  Eigen::MatrixXd P_;
+};
+
+}  // namespace sinsim::sim::aided

@@ -1,0 +1,21 @@
+#include "sim/scenario_aiding.hpp"
+
+#include "common/error.hpp"
+#include "sim/aided/aided_output.hpp"
+
+namespace sinsim::sim {
+
+ScenarioAiding::ScenarioAiding(const nav::Earth& earth, const Scenario& sc,
+                               const aided::FilterSensorModel& filterModel,
+                               const errormodels::StreamKey& key)
+    : aided_(earth, sc.aiding, filterModel, sc.strapdown, key) {}
+
+void ScenarioAiding::epoch(const ImuEpoch& e, nav::Strapdown& strapdown) {
+  if (!e.hasTruth)
+    throw InputError("aided navigation needs the truth at every IMU epoch (GNSS is simulated "
+                     "from it); this IMU source has it only at output epochs");
+  const aided::FilterEpoch fe = aided_.afterInterval(e.measured, e.truth, strapdown);
+  if (filterCsv_ && fe.filtered) aided::writeFilterRow(filterCsv_, fe);
+}
+
+}  // namespace sinsim::sim

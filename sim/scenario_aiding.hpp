@@ -1,0 +1,34 @@
+// The scenario's aided navigation (initial errors, alignment, GNSS/INS filter; docs/aided.md) as
+// the navigation loop's aiding hook (nav_loop.hpp): it sets where the navigation starts and runs
+// sim/aided/AidedNavigation after every interval, writing filter.csv rows when given a file.
+#pragma once
+
+#include <cstdio>
+#include <memory>
+
+#include "sim/aided/aided_navigation.hpp"
+#include "sim/nav_loop.hpp"
+#include "sim/scenario.hpp"
+
+namespace sinsim::sim {
+
+class ScenarioAiding final : public NavAiding {
+ public:
+  /// filterModel: the filter's sensor model (used when the scenario has `filter:`). The earth
+  /// must outlive the object.
+  ScenarioAiding(const nav::Earth& earth, const Scenario& sc,
+                 const aided::FilterSensorModel& filterModel, const errormodels::StreamKey& key);
+
+  nav::NavState start(const nav::NavState& truth) override { return aided_.initialState(truth); }
+  void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) override;
+
+  /// filter.csv rows go here from now on (nullptr: none).
+  void writeFilterRows(std::FILE* f) { filterCsv_ = f; }
+  const aided::AidedNavigation& aided() const { return aided_; }
+
+ private:
+  aided::AidedNavigation aided_;
+  std::FILE* filterCsv_ = nullptr;
+};
+
+}  // namespace sinsim::sim

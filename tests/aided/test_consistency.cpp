@@ -1,0 +1,143 @@
+// Filter consistency when the filter's sensor model IS the truth's (white + Gauss-Markov + random
+// walk on every axis): over R independent runs the run-averaged NEES of the 9 navigation states at
+// a fixed epoch is χ²(9R)/R distributed, the NIS of the 3 position residuals χ²(3R)/R (Bar-Shalom,
+// Li & Kirubarajan 2001, §5.4.2). Checked at the end of an aiding stretch and at the end of a GNSS
+// outage against the two-sided 99 % bands (normal approximation of χ², 9R ≥ 1800 degrees of
+// freedom: quantile error < 0.3 %). The loop here is the minimal one (ideal IMU precomputed once,
+// corrupted per run, strapdown, aiding); `run` and `mc` drive the same AidedNavigation.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "common/constants.hpp"
+#include "errormodels/imu_model.hpp"
+#include "sim/aided/aided_navigation.hpp"
+#include "sim/ideal_imu.hpp"
+#include "sim/scenario.hpp"
+#include "sim/trajectory.hpp"
+
+using namespace sinsim;
+using namespace sinsim::sim::aided;
+
+using sinsim::kRadPerDeg;
+using sinsim::kStandardGravity;
+
+namespace {
+
+
+// A 150 s drive: 20 s static, accelerate, a turn, cruise; GNSS outage 100-130 s.
+const char* kScenario = R"(
+name: consistency
+start: {latitude: 45 deg, longitude: 7 deg, height: 300 m, heading: 30 deg}
+imu_rate: 100 Hz
+vertical: free
+segments:
+  - {type: static, duration: 20 s}
+  - {type: accelerate, speed: 15 m/s, duration: 15 s}
+  - {type: cruise, duration: 20 s}
+  - {type: turn, heading_change: 90 deg, duration: 15 s}
+  - {type: cruise, duration: 80 s}
+)";
+
+// Truth and filter: the same processes (continuous forms, so that the filter's model is exact).
+const char* kModel = R"(
+gyro:
+  all:
+    - {type: white, density: 0.15 deg/sqrt(h)}
+    - {type: gauss_markov, sigma: 20 deg/h, tau: 200 s}
+    - {type: random_walk, K: 3 deg/h/sqrt(h)}
+accel:
+  all:
+    - {type: white, density: 0.1 m/s/sqrt(h)}
+    - {type: gauss_markov, sigma: 2 mg, tau: 300 s}
+    - {type: random_walk, K: 0.05 m/s/h/sqrt(h)}
+)";
+
+FilterSensorModel filterModel() {
+  FilterSensorModel m;
+  const double g0 = kStandardGravity;
+  for (int i = 0; i < 3; ++i) {
+    m.gyro[i].whiteDensity = 0.15 * kRadPerDeg / 60.0;
+    m.gyro[i].blocks = {gaussMarkovState(20 * kRadPerDeg / 3600, 200), randomWalkState(3 * kRadPerDeg / 3600 / 60)};
+    m.accel[i].whiteDensity = 0.1 / 60.0;
+    m.accel[i].blocks = {gaussMarkovState(2e-3 * g0, 300), randomWalkState(0.05 / 3600 / 60)};
+  }
+  return m;
+}
+
+struct Ideal {
+  std::vector<nav::ImuSample> samples;
+  std::vector<nav::NavState> truth;  // truth[k] at the end of samples[k]
+  nav::NavState start;
+};
+
+// Band of the mean of R independent χ²(d) / d·d values: d ± z sqrt(2d/R).
+bool inBand(double mean, int dof, int runs) {
+  const double z = 2.5758;  // two-sided 99 %
+  const double half = z * std::sqrt(2.0 * dof / runs);
+  return mean > dof - half && mean < dof + half;
+}
+
+}  // namespace
+
+TEST_CASE("filter model = truth model: NEES and NIS inside their 99 % chi-square bands") {
+  const sim::Scenario sc = sim::parseScenario(kScenario, "consistency.yaml");
+  const nav::Earth earth;
+  const sim::Trajectory traj(earth, sc.motion());
+  sim::IdealImu imu(traj, sc.imuRate);
+  Ideal ideal;
+  ideal.start = imu.truth();
+  while (!imu.done()) {
+    ideal.samples.push_back(imu.next());
+    ideal.truth.push_back(imu.truth());
+  }
+  const auto model = errormodels::ImuErrorModel::fromString(kModel, "truth.yaml");
+
+  AidingConfig cfg;
+  cfg.initialErrors.position.random = true;
+  cfg.initialErrors.position.sigma = nav::Vec3(2, 2, 3);
+  cfg.initialErrors.velocity.random = true;
+  cfg.initialErrors.velocity.sigma = nav::Vec3::Constant(0.05);
+  cfg.initialErrors.attitude.random = true;
+  cfg.initialErrors.attitude.sigma = nav::Vec3(0.3, 0.3, 2.0) * kRadPerDeg;
+  cfg.gnss.enabled = true;
+  cfg.gnss.rate = 1.0;
+  cfg.gnss.positionSigma = nav::Vec3(1.0, 1.0, 2.0);
+  cfg.gnss.leverArm_b = nav::Vec3(0.5, -0.2, -1.0);
+  cfg.gnss.outages = {{100.0, 130.0}};
+  cfg.filter.enabled = true;
+
+  const int runs = 200;
+  const double tAiding = 99.0, tOutage = 129.0;  // last aided epoch, last epoch in the outage
+  double neesA = 0, neesO = 0, nisA = 0;
+  int nisCount = 0;
+  for (int r = 0; r < runs; ++r) {
+    const errormodels::StreamKey key{7, static_cast<std::uint64_t>(r)};
+    auto corruptor = model.instantiate(sc.imuRate, key);
+    AidedNavigation aided(earth, cfg, filterModel(), sc.strapdown, key);
+    nav::Strapdown sd(earth, aided.initialState(ideal.start), sc.strapdown);
+    for (std::size_t k = 0; k < ideal.samples.size(); ++k) {
+      nav::ImuSample m = ideal.samples[k];
+      corruptor->corrupt(m, NAN);
+      sd.update(m, ideal.truth[k].h);
+      const FilterEpoch fe = aided.afterInterval(m, ideal.truth[k], sd);
+      if (std::abs(fe.t - tAiding) < 1e-6) neesA += fe.nees;
+      if (std::abs(fe.t - tOutage) < 1e-6) neesO += fe.nees;
+      if (fe.aiding && fe.t >= 30.0) {  // past the initial transient; NIS at every aided epoch
+        nisA += fe.nis;
+        ++nisCount;
+      }
+    }
+  }
+  neesA /= runs;
+  neesO /= runs;
+  INFO("NEES at the last aided epoch " << neesA << ", at the outage's end " << neesO
+                                       << ", mean NIS " << nisA / nisCount);
+  CHECK(inBand(neesA, 9, runs));
+  CHECK(inBand(neesO, 9, runs));
+  // The NIS average over every aided epoch of every run: consecutive NIS are nearly independent
+  // (innovations are white when the model is right), so the band of 3·(runs·epochs) degrees of
+  // freedom applies.
+  CHECK(inBand(nisA / nisCount, 3, nisCount));
+}
