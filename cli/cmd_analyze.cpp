@@ -100,7 +100,8 @@ ChannelStats channelStats(const std::string& name, const std::vector<double>& y,
   const double duration = static_cast<double>(n) / rate_hz;
   const double max_lag_s = a.max_lag_s > 0 ? a.max_lag_s : std::min(duration / 10.0, 1000.0);
   const std::size_t max_lag =
-      std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::llround(max_lag_s * rate_hz)));
+      std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::llround(
+                                       std::min(max_lag_s, duration) * rate_hz)));
   c.acf = errormodels::autocorrelation(*z, rate_hz, max_lag, errormodels::AcfScaling::Biased);
 
   errormodels::WelchOptions wo;
@@ -200,11 +201,15 @@ int runAnalyze(const AnalyzeArgs& a) {
   std::vector<ChannelStats> stats;
   const char* gnames[3] = {"gx", "gy", "gz"};
   const char* anames[3] = {"ax", "ay", "az"};
+  // A failure inside the statistics names the file and channel it was computing.
+  auto add = [&](const char* name, const std::vector<double>& y, const char* unit) {
+    stats.push_back(withContext(a.data + ": channel " + name,
+                                [&] { return channelStats(name, y, rec.rate_hz, a, unit); }));
+  };
   for (int k = 0; k < 3; ++k)
-    if (rec.hasGyro(k)) stats.push_back(channelStats(gnames[k], rec.gyro[k], rec.rate_hz, a, "rad/s"));
+    if (rec.hasGyro(k)) add(gnames[k], rec.gyro[k], "rad/s");
   for (int k = 0; k < 3; ++k)
-    if (rec.hasAccel(k))
-      stats.push_back(channelStats(anames[k], rec.accel[k], rec.rate_hz, a, "m/s^2"));
+    if (rec.hasAccel(k)) add(anames[k], rec.accel[k], "m/s^2");
   if (stats.empty()) throw InputError(a.data + ": no gx/gy/gz/ax/ay/az column to analyse");
 
   if (!a.json_out.empty()) {

@@ -14,6 +14,8 @@
 
 #include "cli/commands.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "common/units.hpp"
 #include "errormodels/imu_model.hpp"
 #include "nav/attitude.hpp"
@@ -74,11 +76,13 @@ class TemperatureProfile {
   enum class Kind { constant, ramp, table };
 
   void readCsv(const std::string& path) {
+    requireRegularFile(path, "temperature table");
     std::ifstream in(path);
     std::string line;
     std::getline(in, line);
     if (line.rfind("t,temp", 0) != 0)
-      throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" + line + "\"");
+      throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" +
+                       limits::echo(line) + "\"");
     int row = 1;
     while (std::getline(in, line)) {
       ++row;
@@ -88,7 +92,7 @@ class TemperatureProfile {
       std::istringstream ss(line);
       if (!(ss >> t >> comma >> c) || comma != ',' || !std::isfinite(t) || !std::isfinite(c))
         throw InputError(path + ":" + std::to_string(row) + ": expected \"t,temp\" numbers, got \"" +
-                         line + "\"");
+                         limits::echo(line) + "\"");
       if (!ts_.empty() && !(t > ts_.back()))
         throw InputError(path + ":" + std::to_string(row) + ": times must increase");
       ts_.push_back(t);
@@ -138,8 +142,14 @@ char* put(char* p, char* end, double v, int precision) {
 }
 
 int runSynth(const SynthOptions& o) {
-  if (!(std::isfinite(o.rate) && o.rate > 0)) throw InputError("--rate must be positive");
+  if (!(o.rate >= limits::kMinRate && o.rate <= limits::kMaxRate))
+    throw InputError("--rate must be from " + limits::fmt(limits::kMinRate) + " to " +
+                     limits::fmt(limits::kMaxRate) + " Hz");
   if (!(std::isfinite(o.duration) && o.duration > 0)) throw InputError("--duration must be positive");
+  if (limits::tooManySamples(o.duration, o.rate))
+    throw InputError("--duration " + limits::fmt(o.duration) + " s at " + limits::fmt(o.rate) +
+                     " Hz is more than " + limits::fmt(limits::kMaxSamples) +
+                     " samples (docs/limits.md)");
   const auto model = errormodels::ImuErrorModel::load(o.model);
   const double lat = parseQuantityAs(o.latitude, Dimension::angle());
   if (!(std::fabs(lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");

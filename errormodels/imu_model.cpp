@@ -98,7 +98,8 @@ class Corruptor final : public ImuCorruptor {
 ImuErrorModel ImuErrorModel::none() { return ImuErrorModel(); }
 
 ImuErrorModel ImuErrorModel::load(const std::string& path) {
-  ConfigFile file = ConfigFile::load(path);
+  ConfigFile file = ConfigFile::load(
+      path, "an empty error model; write `gyro: {}` if you mean a perfect IMU");
   ImuErrorModel m = parse(file.root());
   file.throwIfErrors();
   m.source_ = path;

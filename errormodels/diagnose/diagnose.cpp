@@ -14,6 +14,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "common/units.hpp"
 #include "errormodels/diagnose/internal.hpp"
 #include "errormodels/fit/allan_fit.hpp"
@@ -27,11 +29,7 @@ namespace sinsim::errormodels::diagnose {
 using namespace detail;
 
 ModelText ModelText::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read model file " + path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return {s.str(), path};
+  return {readRegularFile(path, limits::kMaxYamlBytes, "model file"), path};
 }
 
 const std::vector<std::string>& detectableEffects() {
