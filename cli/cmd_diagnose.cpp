@@ -28,6 +28,8 @@ struct DiagnoseArgs {
   double threshold = 8.0;
 };
 
+int diagnoseAndWrite(const DiagnoseArgs& a);
+
 std::string defaultOutput(const std::string& model) {
   auto dot = model.rfind('.');
   auto slash = model.rfind('/');
@@ -36,6 +38,11 @@ std::string defaultOutput(const std::string& model) {
 }
 
 int runDiagnose(const DiagnoseArgs& a) {
+  // A failure deep inside the statistics names the record (and, below, the channel).
+  return withContext(a.data, [&] { return diagnoseAndWrite(a); });
+}
+
+int diagnoseAndWrite(const DiagnoseArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto record = errormodels::loadRecord(a.data, recordOptions(a.record));
   const auto model = dg::ModelText::load(a.model);

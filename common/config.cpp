@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <unordered_map>
+
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
 
 namespace sinsim {
 namespace {
@@ -44,22 +46,93 @@ std::string joinKey(const std::string& parent, const std::string& child) {
 }
 
 // ---------------------------------------------------------------------------------------------
-ConfigFile ConfigFile::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError({{path, 0, "", "cannot open file"}});
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return fromString(ss.str(), path);
+ConfigFile ConfigFile::load(const std::string& path, const std::string& emptyHint) {
+  std::string text;
+  try {
+    text = readRegularFile(path, limits::kMaxYamlBytes, "YAML file");
+  } catch (const InputError& e) {
+    std::string msg = e.what();
+    if (msg.rfind(path + ": ", 0) == 0) msg.erase(0, path.size() + 2);
+    throw ConfigError({{path, 0, "", msg}});
+  }
+  ConfigFile file = fromString(text, path);
+  if (!file.root_.IsDefined() || file.root_.IsNull()) {
+    std::string msg = "the file is empty (no YAML content)";
+    if (!emptyHint.empty()) msg += ": " + emptyHint;
+    throw ConfigError({{path, 1, "", msg}});
+  }
+  return file;
 }
 
+namespace {
+
+// 1-based line of the first NUL byte, or 0.
+int nulLine(const std::string& text) {
+  const std::size_t at = text.find('\0');
+  if (at == std::string::npos) return 0;
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
+// Walks the whole tree once, expanding aliases as a reader would, and reports duplicate keys,
+// non-scalar keys, and a tree that expands to more than kMaxYamlNodeVisits nodes (nested
+// aliases: "billion laughs"). Iterative: the depth is bounded by yaml-cpp's parser (2000), but
+// the stack of a sanitizer build is not to be trusted with it.
+std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& name) {
+  std::vector<Diagnostic> out;
+  std::vector<YAML::Node> stack{root};
+  std::size_t visits = 0;
+  while (!stack.empty()) {
+    YAML::Node n = stack.back();
+    stack.pop_back();
+    if (++visits > limits::kMaxYamlNodeVisits) {
+      out.push_back({name, 0, "",
+                     "the document expands (through its aliases) to more than " +
+                         std::to_string(limits::kMaxYamlNodeVisits) +
+                         " nodes; see docs/limits.md"});
+      return out;
+    }
+    if (n.IsSequence()) {
+      for (std::size_t i = n.size(); i-- > 0;) stack.push_back(n[i]);
+    } else if (n.IsMap()) {
+      std::unordered_map<std::string, int> seen;  // key -> line; hashed: a map may be huge
+      for (const auto& kv : n) {
+        if (!kv.first.IsScalar()) {
+          out.push_back({name, lineOf(kv.first, 0), "", "a map key must be a plain name"});
+          continue;
+        }
+        const int line = lineOf(kv.first, 0);
+        const auto [it, fresh] = seen.emplace(kv.first.Scalar(), line);
+        if (!fresh)
+          out.push_back({name, line, limits::echo(it->first),
+                         "duplicate key (first given at " + name + ":" +
+                             std::to_string(it->second) + ")"});
+        stack.push_back(kv.second);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 ConfigFile ConfigFile::fromString(const std::string& text, const std::string& name) {
+  if (const int line = nulLine(text))
+    throw ConfigError({{name, line, "",
+                        "a NUL byte (\\x00) in the text: not a YAML file (binary or UTF-16?)"}});
+  std::vector<YAML::Node> docs;
   try {
-    YAML::Node root = YAML::Load(text);
-    return ConfigFile(root, name);
+    docs = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     throw ConfigError({{name, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
                         "YAML syntax error: " + e.msg}});
   }
+  if (docs.size() > 1)
+    throw ConfigError({{name, lineOf(docs[1], 0), "",
+                        "a second YAML document (after ---): one file holds one document"}});
+  YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
+  std::vector<Diagnostic> problems = checkTree(root, name);
+  if (!problems.empty()) throw ConfigError(problems);
+  return ConfigFile(root, name);
 }
 
 ConfigNode ConfigFile::root() { return ConfigNode(this, root_, "", lineOf(root_, 1)); }
@@ -152,7 +225,7 @@ void ConfigNode::allowKeys(const std::vector<std::string>& allowed) const {
     std::string msg = "unknown key";
     msg += hint.empty() ? " (known here: " + quoteList(allowed) + ")"
                         : " (did you mean \"" + hint + "\"? known here: " + quoteList(allowed) + ")";
-    file_->addError(lineOf(kv.first, line_), joinKey(path_, k), msg);
+    file_->addError(lineOf(kv.first, line_), joinKey(path_, limits::echo(k)), msg);
   }
 }
 
@@ -184,12 +257,24 @@ std::optional<std::string> ConfigNode::asString() const {
 std::optional<double> ConfigNode::asQuantity(Dimension expected) const {
   auto s = asString();
   if (!s) return std::nullopt;
+  double v = 0.0;
   try {
-    return parseQuantityAs(*s, expected);
+    v = parseQuantityAs(*s, expected);
   } catch (const InputError& e) {
     error(e.what());
     return std::nullopt;
   }
+  if (!(std::abs(v) <= limits::kMaxQuantity)) {
+    error("\"" + limits::echo(*s) + "\" is beyond any physical value here (|x| <= " +
+          limits::fmt(limits::kMaxQuantity) + " " + expected.siUnit() + "; docs/limits.md)");
+    return std::nullopt;
+  }
+  if (expected == Dimension::frequency() && v > limits::kMaxRate) {
+    error("\"" + limits::echo(*s) + "\" is faster than any IMU or process rate (at most " +
+          limits::fmt(limits::kMaxRate) + " Hz; docs/limits.md)");
+    return std::nullopt;
+  }
+  return v;
 }
 
 std::optional<double> ConfigNode::asNumber() const {
@@ -205,7 +290,7 @@ std::optional<long long> ConfigNode::asInteger() const {
     if (used == s->size()) return v;
   } catch (const std::exception&) {
   }
-  error("expected an integer, got \"" + *s + "\"");
+  error("expected an integer, got \"" + limits::echo(*s) + "\"");
   return std::nullopt;
 }
 
@@ -214,7 +299,7 @@ std::optional<bool> ConfigNode::asBool() const {
   if (!s) return std::nullopt;
   if (*s == "true" || *s == "yes" || *s == "on") return true;
   if (*s == "false" || *s == "no" || *s == "off") return false;
-  error("expected true or false, got \"" + *s + "\"");
+  error("expected true or false, got \"" + limits::echo(*s) + "\"");
   return std::nullopt;
 }
 
@@ -260,7 +345,7 @@ std::string ConfigNode::choice(const std::string& key, const std::vector<std::st
   auto s = c.asString();
   if (!s) return fallback;
   if (std::find(choices.begin(), choices.end(), *s) == choices.end()) {
-    c.error("\"" + *s + "\" is not one of: " + quoteList(choices));
+    c.error("\"" + limits::echo(*s) + "\" is not one of: " + quoteList(choices));
     return fallback;
   }
   return *s;

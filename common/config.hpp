@@ -96,9 +96,13 @@ class ConfigNode {
 /// One parsed YAML file and the problems found in it.
 class ConfigFile {
  public:
-  /// Reads and parses; a missing file or a YAML syntax error throws ConfigError at once.
-  static ConfigFile load(const std::string& path);
-  /// Parses text as if it came from the named file (tests, inline models).
+  /// Reads and parses; throws ConfigError at once for: a missing file, a directory or device
+  /// file, a file over limits::kMaxYamlBytes, an empty file (the message ends with `emptyHint`,
+  /// e.g. how to write an empty model on purpose), and everything fromString refuses.
+  static ConfigFile load(const std::string& path, const std::string& emptyHint = "");
+  /// Parses text as if it came from the named file (tests, inline models). Throws ConfigError
+  /// for a YAML syntax error, a NUL byte, a second document, duplicate keys (naming both lines),
+  /// non-scalar keys, and more than limits::kMaxYamlNodeVisits nodes counted through aliases.
   static ConfigFile fromString(const std::string& text, const std::string& name);
 
   ConfigNode root();

@@ -47,4 +47,19 @@ class NumericalError : public Error {
   using Error::Error;
 };
 
+/// An Error raised deep inside a computation (statistics, fitting: "burg: the series is
+/// constant") rethrown as an InputError that says where: "`where`: message", e.g.
+/// "run1.csv: channel gx: burg: ...". A message that already starts with `where` is kept as is.
+[[noreturn]] void rethrowWithContext(const std::string& where, const Error& e);
+
+/// Runs f(); any sinsim::Error escaping it is rethrown by rethrowWithContext(where, ...).
+template <class F>
+decltype(auto) withContext(const std::string& where, F&& f) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    rethrowWithContext(where, e);
+  }
+}
+
 }  // namespace sinsim

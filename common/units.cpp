@@ -1,5 +1,7 @@
 #include "common/units.hpp"
 
+#include "common/limits.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -96,6 +98,7 @@ class UnitParser {
         q.si *= f.si;
         q.dim = q.dim * f.dim;
       }
+      checkExponents(q.dim);
       atomCount_ += 1;
     }
   }
@@ -108,11 +111,26 @@ class UnitParser {
   double loneOffset() const { return loneOffset_; }
 
  private:
+  // Bounds the recursion of nested parentheses and the integer exponents of a dimension, so
+  // that no unit text overflows the stack or an int ("((((s^9)^9)^9)^9)").
+  static constexpr int kMaxNesting = 16;
+  static constexpr int kMaxExponent = 1000;
+  void checkExponents(Dimension d) const {
+    if (d.maxAbsExponent() > kMaxExponent) fail("powers too large");
+  }
+
+  Quantity nested() {
+    if (++depth_ > kMaxNesting) fail("parentheses nested too deep");
+    Quantity inner = expression();
+    --depth_;
+    return inner;
+  }
+
   Quantity factor() {
     skipSpaces();
     if (s_.substr(pos_, 5) == "sqrt(") {
       pos_ += 5;
-      Quantity inner = expression();
+      Quantity inner = nested();
       if (pos_ >= s_.size() || s_[pos_] != ')') fail("missing ')' after sqrt(");
       ++pos_;
       if (!inner.dim.sqrtIsExact()) fail("sqrt of a unit with an odd power");
@@ -121,7 +139,7 @@ class UnitParser {
     }
     if (pos_ < s_.size() && s_[pos_] == '(') {
       ++pos_;
-      Quantity inner = expression();
+      Quantity inner = nested();
       if (pos_ >= s_.size() || s_[pos_] != ')') fail("missing ')'");
       ++pos_;
       atomCount_ += 1;
@@ -145,7 +163,7 @@ class UnitParser {
     const auto& table = atoms();
     auto it = table.find(name);
     if (it == table.end()) {
-      throw InputError("unknown unit \"" + std::string(name) + "\" (known: " + knownUnits() + ")");
+      throw InputError("unknown unit \"" + limits::echo(name) + "\" (known: " + knownUnits() + ")");
     }
     loneOffset_ = it->second.offset;
     return power({it->second.factor, it->second.dim});
@@ -162,7 +180,9 @@ class UnitParser {
       p = integer();
     }
     if (p != 1) atomCount_ += 1;  // a powered offset unit is not a lone absolute temperature
-    return {std::pow(q.si, p), q.dim.pow(p)};
+    const Quantity out{std::pow(q.si, p), q.dim.pow(p)};
+    checkExponents(out.dim);
+    return out;
   }
 
   int integer() {
@@ -171,6 +191,8 @@ class UnitParser {
     while (pos_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[pos_]))) ++pos_;
     if (pos_ == start || (pos_ == start + 1 && !std::isdigit(static_cast<unsigned char>(s_[start]))))
       fail("expected an integer power");
+    if (pos_ - start > 2 + (s_[start] == '-' || s_[start] == '+'))
+      fail("a power beyond ±99");  // also keeps atoi inside int
     return std::atoi(std::string(s_.substr(start, pos_ - start)).c_str());
   }
 
@@ -178,12 +200,13 @@ class UnitParser {
     while (pos_ < s_.size() && s_[pos_] == ' ') ++pos_;
   }
   [[noreturn]] void fail(const std::string& why) const {
-    throw InputError("cannot read unit \"" + std::string(s_) + "\": " + why);
+    throw InputError("cannot read unit \"" + limits::echo(s_) + "\": " + why);
   }
 
   std::string_view s_;
   std::size_t pos_ = 0;
   std::size_t atomCount_ = 0;
+  int depth_ = 0;
   double loneOffset_ = 0.0;
 };
 
@@ -254,7 +277,7 @@ std::string knownUnits() {
 Quantity parseUnit(std::string_view unit) {
   UnitParser p(trim(unit));
   Quantity q = p.expression();
-  if (!p.done()) throw InputError("cannot read unit \"" + std::string(unit) + "\"");
+  if (!p.done()) throw InputError("cannot read unit \"" + limits::echo(unit) + "\"");
   return q;
 }
 
@@ -264,16 +287,19 @@ Quantity parseQuantity(std::string_view text) {
   std::string buf(t);
   char* end = nullptr;
   double value = std::strtod(buf.c_str(), &end);
-  if (end == buf.c_str()) throw InputError("expected a number, got \"" + buf + "\"");
-  if (!std::isfinite(value)) throw InputError("value is not finite: \"" + buf + "\"");
+  if (end == buf.c_str()) throw InputError("expected a number, got \"" + limits::echo(buf) + "\"");
+  if (!std::isfinite(value)) throw InputError("value is not finite: \"" + limits::echo(buf) + "\"");
   std::string_view rest = trim(std::string_view(end));
   if (rest.empty()) return {value, Dimension::none()};
   UnitParser p(rest);
   Quantity unit = p.expression();
-  if (!p.done()) throw InputError("cannot read unit \"" + std::string(rest) + "\"");
+  if (!p.done()) throw InputError("cannot read unit \"" + limits::echo(rest) + "\"");
   // A lone absolute temperature ("25 degC") carries its offset; degC in a compound is a difference.
   double offset = p.atomCount() == 0 ? p.loneOffset() : 0.0;
-  return {value * unit.si + offset, unit.dim};
+  const double si = value * unit.si + offset;
+  if (!std::isfinite(si))
+    throw InputError("value overflows in SI units: \"" + limits::echo(t) + "\"");
+  return {si, unit.dim};
 }
 
 double parseQuantityAs(std::string_view text, Dimension expected) {
@@ -281,7 +307,7 @@ double parseQuantityAs(std::string_view text, Dimension expected) {
   if (q.dim != expected) {
     std::string what = q.dim == Dimension::none() ? "no unit" : "a unit of " + q.dim.siUnit();
     throw InputError("expected a value in " + exampleUnit(expected) + " (SI " + expected.siUnit() +
-                     "), got \"" + std::string(trim(text)) + "\" with " + what);
+                     "), got \"" + limits::echo(trim(text)) + "\" with " + what);
   }
   return q.si;
 }

@@ -46,6 +46,12 @@ class Dimension {
     return e_[0] == o.e_[0] && e_[1] == o.e_[1] && e_[2] == o.e_[2] && e_[3] == o.e_[3];
   }
   constexpr bool operator!=(Dimension o) const { return !(*this == o); }
+  /// Largest |exponent| (in halves), for the parser's overflow guard.
+  constexpr int maxAbsExponent() const {
+    int m = 0;
+    for (int e : e_) m = e < 0 ? (-e > m ? -e : m) : (e > m ? e : m);
+    return m;
+  }
 
   /// SI spelling, e.g. "m/s^2", "rad/s^(1/2)", "1" for dimensionless.
   std::string siUnit() const;

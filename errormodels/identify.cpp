@@ -500,6 +500,10 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   }
 
   const double dt = 1.0 / record.rate_hz;
+  // Compared in floating point first: llround of a skip of 1e300 s is undefined.
+  if (!(opt.skipStart >= 0.0 && opt.skipStart < record.duration()))
+    throw InputError(record.source + ": skip " + fmt(opt.skipStart) + " s is beyond the record (" +
+                     fmt(record.duration()) + " s)");
   const std::size_t skip = static_cast<std::size_t>(std::llround(opt.skipStart * record.rate_hz));
   if (skip >= record.size())
     throw InputError(record.source + ": skip " + fmt(opt.skipStart) + " s is beyond the record (" +
@@ -518,7 +522,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   out.skipped = skip;
   out.options = opt;
 
-  for (const Channel& c : chans) {
+  for (const Channel& c : chans) withContext(record.source + ": channel " + c.name, [&] {
     const std::vector<double>& src = channelData(record, c);
     std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip), src.end());
     AxisIdentification ax;
@@ -557,7 +561,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
     const double duration = n * dt;
     const double maxLagS = opt.maxLag > 0.0 ? opt.maxLag : std::min(duration / 10.0, 100.0);
     const std::size_t maxLag = std::clamp<std::size_t>(
-        static_cast<std::size_t>(std::llround(maxLagS * record.rate_hz)), 4, n - 1);
+        static_cast<std::size_t>(std::llround(std::min(maxLagS, duration) * record.rate_hz)), 4,
+        n - 1);
     const Autocorrelation acf =
         autocorrelation(forAcf, record.rate_hz, maxLag, AcfScaling::Biased);
     try {
@@ -651,7 +656,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       ax.written.notes.push_back(s);
     }
     out.axes.push_back(std::move(ax));
-  }
+  });
   warnAccelUnit(out);
   return out;
 }

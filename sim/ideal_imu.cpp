@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "nav/attitude.hpp"
 
 namespace sinsim::sim {
@@ -16,6 +17,11 @@ IdealImu::IdealImu(const Trajectory& trajectory, double imuRate, double maxSubst
     throw InputError("integration substep must be a positive time");
   dt_ = 1.0 / imuRate;
   maxSubstep_ = maxSubstep;
+  // Checked in floating point before the integer conversion: llround of 1e308 is undefined.
+  if (limits::tooManySamples(trajectory.duration(), imuRate))
+    throw InputError("a " + limits::fmt(trajectory.duration()) + " s trajectory at " +
+                     limits::fmt(imuRate) + " Hz is more than " +
+                     limits::fmt(limits::kMaxSamples) + " IMU samples (docs/limits.md)");
   count_ = std::llround(trajectory.duration() * imuRate);
 
   const MotionStart& s = trajectory.motion().start();

@@ -3,12 +3,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/constants.hpp"
+#include "common/error.hpp"
+#include "common/limits.hpp"
 #include "nav/attitude.hpp"
 #include "nav/strapdown.hpp"
 #include "sim/imu_source.hpp"
@@ -24,14 +27,30 @@ namespace {
 const char* kStateHeader = "t_s,lat_deg,lon_deg,h_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg\n";
 const char* kErrorHeader = "t_s,north_m,east_m,down_m,vn_mps,ve_mps,vd_mps,roll_rad,pitch_rad,yaw_rad\n";
 
+// NaN never reaches an output file: a non-finite row stops the run (the OutputFiles guard then
+// removes the temporaries), with the time it happened.
+void requireFiniteRow(std::initializer_list<double> row, double t, const char* what) {
+  for (double v : row)
+    if (!std::isfinite(v))
+      throw NumericalError(std::string("the ") + what + " became non-finite at t = " +
+                           limits::fmt(t, 9) +
+                           " s: the motion or the IMU errors are beyond what the simulation "
+                           "holds (docs/limits.md); nothing was written");
+}
+
 // 12 decimals of a degree are 0.1 µm on the ground: the CSV does not hide sub-millimetre drifts.
 void writeState(std::FILE* f, const nav::NavState& s) {
   const nav::Vec3 e = nav::eulerFromQuat(s.q_nb) * kDegPerRad;
+  requireFiniteRow({s.lat, s.lon, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z()}, s.t,
+                   "navigation state");
   std::fprintf(f, "%.6f,%.12f,%.12f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f\n", s.t, s.lat * kDegPerRad,
                s.lon * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
 }
 
 void writeError(std::FILE* f, const NavError& e) {
+  requireFiniteRow({e.pos_n.x(), e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(),
+                    e.euler.x(), e.euler.y(), e.euler.z()},
+                   e.t, "navigation error");
   std::fprintf(f, "%.6f,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", e.t, e.pos_n.x(),
                e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(), e.euler.x(),
                e.euler.y(), e.euler.z());

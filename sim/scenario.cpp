@@ -8,6 +8,7 @@
 
 #include "common/config.hpp"
 #include "common/constants.hpp"
+#include "common/limits.hpp"
 #include "nav/attitude.hpp"
 
 namespace sinsim::sim {
@@ -20,8 +21,7 @@ using D = Dimension;
 constexpr double kMaxLatitude = 89.0 * kRadPerDeg;
 // Largest coordinated bank a turn may ask for; tan φ grows without bound towards 90°.
 constexpr double kMaxBank = 80.0 * kRadPerDeg;
-// Guard against a typo such as `count: 1000000000` filling memory with segments.
-constexpr std::size_t kMaxSegments = 1000000;
+using limits::kMaxSegments;
 
 std::string fmt(double x) {
   std::ostringstream os;
@@ -63,7 +63,13 @@ double readDuration(const ConfigNode& n) {
   const auto v = d.asQuantity(D::time());
   if (!v) return NAN;
   if (!d.check(std::isfinite(*v) && *v > 0.0,
-               "expected a positive duration, got \"" + d.asString().value_or("") + "\""))
+               "expected a positive duration, got \"" + limits::echo(d.asString().value_or("")) +
+                   "\""))
+    return NAN;
+  if (!d.check(*v >= limits::kMinSegmentDuration && *v <= limits::kMaxDuration,
+               "expected a duration from " + limits::fmt(limits::kMinSegmentDuration) + " s to " +
+                   limits::fmt(limits::kMaxDuration) + " s (10 days), got \"" +
+                   limits::echo(d.asString().value_or("")) + "\" (docs/limits.md)"))
     return NAN;
   return *v;
 }
@@ -216,6 +222,35 @@ std::vector<SegmentSpec> parseSegmentList(const ConfigNode& list) {
   return out;
 }
 
+// Number of segments the specs expand to, saturating at kMaxSegments + 1 (no overflow however
+// deep the repeats nest): checked before anything is expanded.
+std::size_t expandedCount(const std::vector<SegmentSpec>& specs) {
+  std::size_t n = 0;
+  for (const SegmentSpec& sp : specs) {
+    std::size_t add = 1;
+    if (sp.seg.type == "repeat") {
+      const std::size_t body = expandedCount(sp.body);
+      const std::size_t count = sp.count > 0 ? static_cast<std::size_t>(sp.count) : 0;
+      add = body == 0 ? 0 : (count > (kMaxSegments + 1) / body ? kMaxSegments + 1 : count * body);
+    }
+    n = std::min(n + add, kMaxSegments + 1);
+  }
+  return n;
+}
+
+// Speed and height stay inside limits:: ranges after every segment: beyond them the Earth model
+// and the trajectory's products overflow (height 1e308 m gives NaN gravity).
+std::string motionOutOfRange(const PlanCursor& c) {
+  if (!(c.h >= limits::kMinHeight && c.h <= limits::kMaxHeight))
+    return "the height reaches " + limits::fmt(c.h) + " m, outside [" +
+           limits::fmt(limits::kMinHeight) + ", " + limits::fmt(limits::kMaxHeight) +
+           "] m (docs/limits.md)";
+  if (!(c.speed <= limits::kMaxSpeed))
+    return "the speed reaches " + limits::fmt(c.speed) + " m/s, above " +
+           limits::fmt(limits::kMaxSpeed) + " m/s (docs/limits.md)";
+  return "";
+}
+
 // Lays the specs out in time, resolving targets; returns false after the first problem so that
 // one wrong segment does not produce a cascade of follow-up messages.
 bool layout(const std::vector<SegmentSpec>& specs, PlanCursor& c, std::vector<Segment>& out,
@@ -275,7 +310,8 @@ bool layout(const std::vector<SegmentSpec>& specs, PlanCursor& c, std::vector<Se
       default:
         break;
     }
-    const std::string problem = planSegment(seg, c);
+    std::string problem = planSegment(seg, c);
+    if (problem.empty()) problem = motionOutOfRange(c);
     if (!problem.empty()) {
       sp.node.error(problem + note);
       return false;
@@ -312,8 +348,15 @@ void parseStart(const ConfigNode& root, Scenario& sc) {
   m.lon = s.quantity("longitude", D::angle());
   if (std::isfinite(m.lon)) m.lon = nav::wrapAngle(m.lon);
   m.h = s.quantity("height", D::length(), 0.0);
+  if (std::isfinite(m.h))
+    s["height"].check(m.h >= limits::kMinHeight && m.h <= limits::kMaxHeight,
+                      "expected a height from " + limits::fmt(limits::kMinHeight) + " m to " +
+                          limits::fmt(limits::kMaxHeight) + " m (docs/limits.md)");
   m.speed = s.quantity("speed", D::speed(), 0.0);
-  if (std::isfinite(m.speed)) s["speed"].check(m.speed >= 0.0, "expected a speed ≥ 0");
+  if (std::isfinite(m.speed) && s["speed"].check(m.speed >= 0.0, "expected a speed ≥ 0"))
+    s["speed"].check(m.speed <= limits::kMaxSpeed, "expected a speed of at most " +
+                                                       limits::fmt(limits::kMaxSpeed) +
+                                                       " m/s (docs/limits.md)");
   const ConfigNode att = s["attitude"];
   att.allowKeys({"roll", "pitch", "yaw"});
   m.roll = att.quantity("roll", D::angle(), 0.0);
@@ -420,8 +463,8 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
   parseStart(root, sc);
 
   sc.imuRate = root.quantity("imu_rate", D::frequency(), 100.0);
-  root["imu_rate"].check(std::isfinite(sc.imuRate) && sc.imuRate > 0.0,
-                         "expected a positive rate");
+  root["imu_rate"].check(std::isfinite(sc.imuRate) && sc.imuRate >= limits::kMinRate,
+                         "expected a rate of at least " + limits::fmt(limits::kMinRate) + " Hz");
   sc.outputRate = root.quantity("output_rate", D::frequency(), 1.0);
   if (root["output_rate"].check(std::isfinite(sc.outputRate) && sc.outputRate > 0.0,
                                 "expected a positive rate") &&
@@ -443,6 +486,9 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
   const std::vector<SegmentSpec> specs = parseSegmentList(segs);
   // Lay out only what parsed cleanly (and from a valid start): a bad value would otherwise
   // produce follow-up messages about a state that does not exist.
+  if (!anyInvalid(specs) && !file.hasErrors() && expandedCount(specs) > kMaxSegments)
+    segs.error("the repeats expand to more than " + std::to_string(kMaxSegments) +
+               " segments (docs/limits.md)");
   if (!anyInvalid(specs) && !file.hasErrors()) {
     PlanCursor c;
     c.speed = sc.start.speed;
@@ -460,8 +506,22 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
     root["errors"].error("the error model has temperature-dependent effects: give the scenario "
                          "a temperature (e.g. temperature: 25 degC)");
 
-  if (!file.hasErrors() && foreign.empty() && !(sc.duration() > 0.0))
-    segs.error("the segments add up to no time at all");
+  if (!file.hasErrors() && foreign.empty()) {
+    const double T = sc.duration();
+    if (!(T > 0.0)) {
+      segs.error("the segments add up to no time at all");
+    } else if (!(T <= limits::kMaxDuration)) {
+      segs.error("the segments add up to " + limits::fmt(T) + " s, more than " +
+                 limits::fmt(limits::kMaxDuration) + " s (10 days; docs/limits.md)");
+    } else if (limits::tooManySamples(T, sc.imuRate)) {
+      segs.error(limits::fmt(T) + " s at " + limits::fmt(sc.imuRate) + " Hz is " +
+                 limits::fmt(T * sc.imuRate) + " IMU samples, more than " +
+                 limits::fmt(limits::kMaxSamples) + " (docs/limits.md)");
+    } else if (T * sc.imuRate < 1.0 - 1e-9) {
+      segs.error("the segments add up to " + limits::fmt(T) + " s, less than one IMU sample at " +
+                 limits::fmt(sc.imuRate) + " Hz");
+    }
+  }
 
   if (file.hasErrors() || !foreign.empty()) {
     std::vector<Diagnostic> all = file.diagnostics();

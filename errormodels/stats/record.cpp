@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "common/units.hpp"
 
 namespace sinsim::errormodels {
@@ -47,6 +49,7 @@ std::string lower(std::string_view s) {
 
 /// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
 std::string readWholeFile(const std::string& path) {
+  requireRegularFile(path, "record");
   gzFile f = gzopen(path.c_str(), "rb");
   if (f == nullptr) fail(path, 0, std::string("cannot open file: ") + std::strerror(errno));
   gzbuffer(f, 1u << 20);
@@ -54,8 +57,14 @@ std::string readWholeFile(const std::string& path) {
   std::size_t used = 0;
   text.resize(std::size_t{1} << 24);
   for (;;) {
+    if (used > limits::kMaxRecordBytes) {
+      gzclose(f);
+      fail(path, 0, "record larger than " + std::to_string(limits::kMaxRecordBytes) +
+                        " bytes after decompression (docs/limits.md)");
+    }
     if (text.size() - used < (std::size_t{1} << 22)) text.resize(text.size() * 2);
-    const unsigned want = static_cast<unsigned>(std::min<std::size_t>(text.size() - used, 1u << 30));
+    const unsigned want = static_cast<unsigned>(
+        std::min<std::size_t>(text.size() - used, limits::kMaxRecordBytes + 1 - used));
     const int got = gzread(f, text.data() + used, want);
     if (got < 0) {
       int code = 0;
@@ -139,8 +148,11 @@ std::vector<Column> parseHeader(std::string_view header, const std::string& sour
     std::string_view field =
         trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos
                                                                   : comma - start));
+    if (cols.size() >= limits::kMaxRecordColumns)
+      fail(source, line, "header: more than " + std::to_string(limits::kMaxRecordColumns) +
+                             " columns (docs/limits.md)");
     Column col;
-    col.header = std::string(field);
+    col.header = limits::echo(field);
     if (field.empty()) fail(source, line, "header: column " + std::to_string(cols.size() + 1) + " has no name");
     std::string_view name = field;
     std::string_view unit;
@@ -197,11 +209,14 @@ inline const char* parseField(const char* p, const char* end, double& value, con
   if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
   auto res = std::from_chars(q, end, value);
   const char* after = res.ptr;
+  if (after - p > static_cast<std::ptrdiff_t>(limits::kMaxFieldChars))
+    fail(source, line, "column \"" + col.header + "\": a field longer than " +
+                           std::to_string(limits::kMaxFieldChars) + " characters");
   while (after < end && (*after == ' ' || *after == '\t' || *after == '\r')) ++after;
   if (res.ec != std::errc() || (after < end && *after != ',') || !std::isfinite(value)) {
     const char* stop = p;
     while (stop < end && *stop != ',' && *stop != '\r') ++stop;
-    std::string text(p, stop);
+    const std::string text = limits::echo(std::string_view(p, static_cast<std::size_t>(stop - p)));
     if (res.ec == std::errc::result_out_of_range)
       fail(source, line, "column \"" + col.header + "\": number out of range: \"" + text + "\"");
     if (text.empty()) fail(source, line, "column \"" + col.header + "\": empty field");
@@ -266,14 +281,23 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
   rec.irregularities = std::move(found);
 }
 
+/// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate).
+void checkRate(double rate, const std::string& source, const std::string& what) {
+  if (!(rate >= limits::kMinRate && rate <= limits::kMaxRate))
+    fail(source, 0, what + " " + limits::fmt(rate) + " Hz is outside what an IMU record can be (" +
+                        limits::fmt(limits::kMinRate) + " to " + limits::fmt(limits::kMaxRate) +
+                        " Hz; docs/limits.md)");
+}
+
 }  // namespace
 
 Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
-  if (options.rate_hz && !(std::isfinite(*options.rate_hz) && *options.rate_hz > 0))
-    fail(source, 0, "rate must be a positive number of Hz");
+  if (options.rate_hz) checkRate(*options.rate_hz, source, "the rate option");
   if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
     fail(source, 0, "time tolerance must be positive");
 
+  // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   const char* p = text.data();
   const char* const end = p + text.size();
   std::size_t line = 0;
@@ -297,6 +321,10 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
   // Upper bound of the row count, so that columns are written in place.
   const std::size_t max_rows =
       static_cast<std::size_t>(std::count(p, end, '\n')) + 1;
+  if (max_rows > limits::kMaxRecordCells / ncol)
+    fail(source, 0, "record too large: up to " + std::to_string(max_rows) + " rows of " +
+                        std::to_string(ncol) + " columns, more than " +
+                        std::to_string(limits::kMaxRecordCells) + " values (docs/limits.md)");
   std::vector<std::vector<double>> data(ncol);
   for (auto& c : data) c.resize(max_rows);
 
@@ -348,6 +376,14 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0)) {
       for (double& x : v) x = col.scale * x + col.offset;
     }
+    // Beyond kMaxQuantity (SI) sums of squares in the statistics overflow to inf and NaN.
+    if (col.role != Role::Aux)
+      for (std::size_t r = 0; r < rows; ++r)
+        if (!(std::abs(v[r]) <= limits::kMaxQuantity))
+          fail(source, header_line + 1 + r,
+               "column \"" + col.header + "\": value " + limits::fmt(v[r]) +
+                   " (SI) is beyond any sensor (|x| <= " + limits::fmt(limits::kMaxQuantity) +
+                   "; docs/limits.md)");
     switch (col.role) {
       case Role::Time: rec.t = std::move(v); break;
       case Role::Gyro: rec.gyro[col.axis] = std::move(v); break;
@@ -363,6 +399,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
       fail(source, 0, "the file has no time column (t): give the sample rate");
     rec.rate_hz = *options.rate_hz;
   }
+  checkRate(rec.rate_hz, source, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
   return rec;
 }
 

@@ -1,0 +1,76 @@
+// Every size and range limit of sinsim's input, in one place (documented in docs/limits.md).
+//
+// They bound the work and memory any input file can ask for, so that a small hostile or mistyped
+// file fails at once with a clear message instead of running until killed: each limit is far
+// beyond what a real scenario, model or record needs and well inside what 2 cores and a few GB
+// finish in minutes. Checks happen where a file is read, before anything is expanded or allocated.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace sinsim::limits {
+
+// ---- YAML files (scenarios, models) ---------------------------------------------------------
+/// [bytes] Largest YAML file read (the biggest shipped file is ~5 KB).
+constexpr std::size_t kMaxYamlBytes = 4u << 20;
+/// Nodes of one YAML file, counting every alias expansion as read: a 1 KB file of nested aliases
+/// (a "billion laughs") stops here instead of expanding to GBs. Also bounds a model's size (its
+/// effects and coefficients; an AR effect has its own order limit).
+constexpr std::size_t kMaxYamlNodeVisits = 500000;
+/// Problems listed in one error message; the rest are counted ("and N more").
+constexpr std::size_t kMaxReportedErrors = 20;
+/// [characters] Longest piece of an offending value echoed in a message.
+constexpr std::size_t kMaxEchoChars = 80;
+/// Largest magnitude of any quantity in SI units read from a file or record (1e12 m is 7 AU,
+/// 1e12 s is 30,000 years): beyond it products such as density² · rate overflow towards inf.
+constexpr double kMaxQuantity = 1e12;
+
+// ---- Rates and time -------------------------------------------------------------------------
+/// [Hz] Range of an IMU or stochastic-process sample rate, and of a record's sample rate.
+/// Real IMUs sample at 1 Hz to a few kHz; 1 mHz admits slow logs (temperature, clocks).
+constexpr double kMinRate = 1e-3;
+constexpr double kMaxRate = 1e5;
+/// [s] Longest scenario (10 days) and shortest segment (one sample of the fastest IMU rate).
+constexpr double kMaxDuration = 864000.0;
+constexpr double kMinSegmentDuration = 1e-5;
+/// Largest sample count of a simulated signal (duration × rate): ~4 min of a 2-core machine
+/// per 1e8 strapdown steps; 10 days at 100 Hz is 8.64e7.
+constexpr double kMaxSamples = 1e8;
+/// Largest number of segments after expanding every `repeat`.
+constexpr std::size_t kMaxSegments = 1000000;
+
+// ---- Motion ---------------------------------------------------------------------------------
+/// [m] Height range of a trajectory (below the Dead Sea floor to the edge of space).
+constexpr double kMinHeight = -1.2e4;
+constexpr double kMaxHeight = 1.0e5;
+/// [m/s] Highest speed of a trajectory (above orbital speed).
+constexpr double kMaxSpeed = 1.2e4;
+
+// ---- Records (CSV) --------------------------------------------------------------------------
+/// [bytes] Largest record text after decompression.
+constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 30;
+/// Largest number of columns of a record.
+constexpr std::size_t kMaxRecordColumns = 64;
+/// Largest number of cells (rows × columns): 8 bytes each in memory.
+constexpr std::size_t kMaxRecordCells = 100000000;
+/// [characters] Longest field of a record (a double needs at most ~25).
+constexpr std::size_t kMaxFieldChars = 64;
+
+/// `text` for a message: at most kMaxEchoChars characters, longer ones cut with a note of the
+/// full length; control characters (NUL, escapes) shown as \xNN.
+std::string echo(std::string_view text);
+
+/// Does duration × rate exceed kMaxSamples (or is either not finite)? The product is formed in
+/// floating point before any integer conversion.
+inline bool tooManySamples(double duration, double rate) {
+  const double n = duration * rate;
+  return !(std::isfinite(n) && n <= kMaxSamples);
+}
+
+/// "1e+05" style number with enough digits to tell it from its neighbours (up to 12).
+std::string fmt(double x, int digits = 6);
+
+}  // namespace sinsim::limits

@@ -1,0 +1,23 @@
+// Opening input files safely: only regular files (a directory, /dev/zero or a FIFO where a file
+// is expected is refused by name), and never more than a stated number of bytes.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace sinsim {
+
+/// Throws InputError "PATH: ..." unless PATH names an existing regular file (symlinks followed).
+/// `what` says what the file was expected to be ("model file", "record").
+void requireRegularFile(const std::string& path, const std::string& what);
+
+/// Reads a whole regular file of at most maxBytes bytes; throws InputError naming the file
+/// otherwise (missing, unreadable, a directory or device, too large).
+std::string readRegularFile(const std::string& path, std::size_t maxBytes,
+                            const std::string& what);
+
+/// Refuses, from now on, every input file outside `dir` (fuzzing harnesses: a fuzzed scenario
+/// must not read arbitrary paths such as `errors: /etc/shadow`). Empty: no restriction.
+void restrictInputFilesTo(const std::string& dir);
+
+}  // namespace sinsim

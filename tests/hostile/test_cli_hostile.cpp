@@ -1,0 +1,88 @@
+// Hostile input through the command line: exit code 1, a message naming the file (and line and
+// key, or channel), and no output file or folder left behind.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "test_support.hpp"
+
+using Catch::Matchers::Contains;
+namespace fs = std::filesystem;
+using sinsim::test::runSinsim;
+using sinsim::test::slurp;
+
+namespace {
+
+fs::path tempDir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("sinsim-hostile-cli-" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+void writeText(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+}  // namespace
+
+TEST_CASE("sinsim run: duplicate keys, a device as the model, 1e308 s: exit 1, nothing written") {
+  const fs::path d = tempDir("run");
+  const std::string head = "start: {latitude: 45 deg, longitude: 7 deg}\n";
+  const struct {
+    const char* name;
+    std::string text;
+    std::string expected;
+  } cases[] = {
+      {"dup", head + "imu_rate: 100 Hz\nimu_rate: 200 Hz\nsegments: [{type: static, duration: 1 s}]\n",
+       "dup.yaml:3: imu_rate: duplicate key (first given at "},
+      {"device", head + "errors: /dev/zero\nsegments: [{type: static, duration: 1 s}]\n",
+       "/dev/zero: is a device, pipe or socket"},
+      {"long", head + "segments: [{type: static, duration: 1e308 s}]\n",
+       "long.yaml:2: segments[0].duration: \"1e308 s\" is beyond any physical value"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const fs::path scenario = d / (std::string(c.name) + ".yaml");
+    writeText(scenario, c.text);
+    const fs::path out = d / (std::string("out-") + c.name);
+    CHECK(runSinsim("run " + scenario.string() + " -o " + out.string(), d / "err") == 1);
+    CHECK_THAT(slurp(d / "err"), Contains(c.expected));
+    CHECK_FALSE(fs::exists(out));
+  }
+}
+
+TEST_CASE("sinsim analyze: a failure deep in the statistics names file and channel") {
+  // Two samples: the Allan deviation needs three; the message used to name neither.
+  const fs::path d = tempDir("analyze");
+  writeText(d / "short.csv", "gx,gy\n0.1,0.2\n0.3,0.1\n");
+  const fs::path json = d / "out.json";
+  CHECK(runSinsim("analyze " + (d / "short.csv").string() + " --rate 100 --json " + json.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"),
+             Contains((d / "short.csv").string() + ": channel gx: Allan deviation: need at least 3"));
+  CHECK_FALSE(fs::exists(json));
+}
+
+TEST_CASE("sinsim analyze and synth: rates and lengths beyond an IMU are refused at once") {
+  const fs::path d = tempDir("rates");
+  writeText(d / "slow.csv", "t,gx\n0,1\n1e6,2\n2e6,3\n3e6,4\n");
+  const fs::path json = d / "out.json";
+  CHECK(runSinsim("analyze " + (d / "slow.csv").string() + " --json " + json.string(), d / "err") ==
+        1);
+  CHECK_THAT(slurp(d / "err"), Contains("slow.csv: the time stamps' rate 1e-06 Hz is outside"));
+  CHECK_FALSE(fs::exists(json));
+
+  writeText(d / "m.yaml", "gyro: {}\n");
+  const fs::path csv = d / "synth.csv";
+  const auto t0 = std::chrono::steady_clock::now();
+  CHECK(runSinsim("synth " + (d / "m.yaml").string() + " --rate 100 --duration 1e12 -o " +
+                      csv.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("--duration 1e+12 s at 100 Hz is more than 1e+08 samples"));
+  CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(10));  // it ran for minutes
+  CHECK_FALSE(fs::exists(csv));
+}
