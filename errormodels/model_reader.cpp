@@ -2,6 +2,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "errormodels/effect.hpp"
 #include "errormodels/model_io.hpp"
 
@@ -344,11 +346,11 @@ ErrorModelSpec readFile(ConfigFile& file, const std::string& text) {
 }  // namespace
 
 ErrorModelSpec loadErrorModel(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError({{path, 0, "", "cannot open file"}});
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return errorModelFromString(ss.str(), path);
+  // The common loader refuses directories, devices and oversized files, and says what an empty
+  // file would mean; the text is read once more for the comments (a file of at most 4 MiB).
+  ConfigFile file = ConfigFile::load(
+      path, "an empty error model; write `gyro: {}` if you mean a perfect IMU");
+  return readFile(file, readRegularFile(path, limits::kMaxYamlBytes, "YAML file"));
 }
 
 ErrorModelSpec errorModelFromString(const std::string& text, const std::string& name) {

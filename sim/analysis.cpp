@@ -136,11 +136,15 @@ std::vector<ChannelStats> analyzeRecord(const errormodels::Record& rec, const An
   std::vector<ChannelStats> stats;
   const char* gnames[3] = {"gx", "gy", "gz"};
   const char* anames[3] = {"ax", "ay", "az"};
+  // A failure inside the statistics names the file and channel it was computing.
+  auto add = [&](const char* name, const std::vector<double>& y, const char* unit) {
+    stats.push_back(withContext(rec.source + ": channel " + name,
+                                [&] { return channelStats(name, y, rec.rate_hz, a, unit); }));
+  };
   for (int k = 0; k < 3; ++k)
-    if (rec.hasGyro(k)) stats.push_back(channelStats(gnames[k], rec.gyro[k], rec.rate_hz, a, "rad/s"));
+    if (rec.hasGyro(k)) add(gnames[k], rec.gyro[k], "rad/s");
   for (int k = 0; k < 3; ++k)
-    if (rec.hasAccel(k))
-      stats.push_back(channelStats(anames[k], rec.accel[k], rec.rate_hz, a, "m/s^2"));
+    if (rec.hasAccel(k)) add(anames[k], rec.accel[k], "m/s^2");
   if (stats.empty()) throw InputError(rec.source + ": no gx/gy/gz/ax/ay/az column to analyse");
   return stats;
 }

@@ -10,6 +10,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/units.hpp"
 #include "nav/attitude.hpp"
 #include "nav/earth.hpp"
@@ -92,8 +93,14 @@ void RecordTemperature::readCsv(const std::string& path) {
 
 long long writeStaticRecord(const errormodels::ImuErrorModel& model, const StaticRecordSpec& o,
                             const RecordTemperature& temperature, const std::string& path) {
-  if (!(std::isfinite(o.rate) && o.rate > 0)) throw InputError("--rate must be positive");
+  if (!(o.rate >= limits::kMinRate && o.rate <= limits::kMaxRate))
+    throw InputError("--rate must be from " + limits::fmt(limits::kMinRate) + " to " +
+                     limits::fmt(limits::kMaxRate) + " Hz");
   if (!(std::isfinite(o.duration) && o.duration > 0)) throw InputError("--duration must be positive");
+  if (limits::tooManySamples(o.duration, o.rate))
+    throw InputError("--duration " + limits::fmt(o.duration) + " s at " + limits::fmt(o.rate) +
+                     " Hz is more than " + limits::fmt(limits::kMaxSamples) +
+                     " samples (docs/limits.md)");
   if (!(std::fabs(o.lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");
 
   const nav::Earth earth;

@@ -150,7 +150,7 @@ std::unique_ptr<Effect> buildEffect_ar(const EffectSpec& spec, const EffectSite&
   // a pole at |z| > 1 - 1e-9 has a correlation time over 1e9 samples — not a stationary model.
   if (!(std::abs(worst) < 1.0 - 1e-9)) {
     std::ostringstream s;
-    s.precision(6);
+    s.precision(12);  // |z| = 1 - 1e-10 must not print as "1"
     s << "unstable AR polynomial: largest pole magnitude " << std::abs(worst) << " (pole "
       << worst.real() << (worst.imag() < 0 ? " - " : " + ") << std::abs(worst.imag())
       << "i); every pole of 1/A(z) must lie inside the unit circle (|z| < 1). Check the sign "
