@@ -12,6 +12,7 @@
 #include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -26,21 +27,10 @@ ModelText ModelText::load(const std::string& path) {
 namespace detail {
 
 std::vector<std::string> modelEffectTypes(const std::string& modelText, int channel) {
-  std::vector<std::string> out;
-  YAML::Node root = YAML::Load(modelText);
-  YAML::Node sensor = root[sensorName(channel)];
-  if (!sensor || !sensor.IsMap()) return out;
-  for (const char* list : {"all", axisName(channel)}) {
-    YAML::Node l = sensor[list];
-    if (!l || !l.IsSequence()) continue;
-    for (const auto& e : l)
-      if (e.IsMap() && e["type"]) {
-        if (e["enabled"] && e["enabled"].IsScalar() && e["enabled"].as<std::string>() == "false")
-          continue;
-        out.push_back(e["type"].as<std::string>());
-      }
-  }
-  return out;
+  // Through the one model reader, so `enabled: no / false / off` means what it means to the
+  // simulator (effectTypesOn counts enabled effects only).
+  const ErrorModelSpec spec = errorModelFromString(modelText, "model");
+  return effectTypesOn(spec, isGyro(channel) ? Sensor::gyro : Sensor::accel, channel % 3);
 }
 
 std::optional<std::vector<double>> arOfChannel(const std::string& text, int channel, double rate) {

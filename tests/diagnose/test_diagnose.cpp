@@ -14,11 +14,13 @@
 // null test below shows the threshold does not fire on the base alone).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/model_text.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
@@ -238,4 +240,22 @@ TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
   }
   CHECK(latticeStep(y) == Approx(0.00333).epsilon(1e-9));
   CHECK(latticeStep(z) == 0.0);
+}
+
+// The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
+// `false` and `off` switch it off for both (the simulator's side is in test_model_spec).
+TEST_CASE("a disabled effect is absent for the diagnosis, as for the simulator") {
+  using sinsim::errormodels::diagnose::detail::modelEffectTypes;
+  for (const char* off : {"no", "false", "off"}) {
+    const std::string text = std::string("gyro:\n  all: [{type: white, density: 0.1 deg/sqrt(h)}]\n"
+                                         "  y: [{type: ramp, slope: 1 deg/h^2, enabled: ") +
+                             off + "}]\n";
+    const auto gy = modelEffectTypes(text, 1);
+    CHECK(std::find(gy.begin(), gy.end(), "ramp") == gy.end());
+    CHECK(std::find(gy.begin(), gy.end(), "white") != gy.end());
+  }
+  const auto on = modelEffectTypes(
+      "gyro:\n  y: [{type: ramp, slope: 1 deg/h^2, enabled: yes}]\n", 1);
+  CHECK(std::find(on.begin(), on.end(), "ramp") != on.end());
+  CHECK(modelEffectTypes("gyro:\n  y: [{type: ramp, slope: 1 deg/h^2}]\n", 0).empty());
 }
