@@ -191,7 +191,7 @@ class UnitParser {
     while (pos_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[pos_]))) ++pos_;
     if (pos_ == start || (pos_ == start + 1 && !std::isdigit(static_cast<unsigned char>(s_[start]))))
       fail("expected an integer power");
-    if (pos_ - start > 2 + (s_[start] == '-' || s_[start] == '+'))
+    if (pos_ - start > std::size_t{2} + (s_[start] == '-' || s_[start] == '+'))
       fail("a power beyond ±99");  // also keeps atoi inside int
     return std::atoi(std::string(s_.substr(start, pos_ - start)).c_str());
   }

@@ -41,4 +41,17 @@ inline std::string slurp(const std::filesystem::path& path) {
   return s.str();
 }
 
+/// A fresh, empty folder `<temp>/<name>` for one test's files.
+inline std::filesystem::path freshTempDir(const std::string& name) {
+  const std::filesystem::path d = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+/// Writes `text` to `p` byte for byte.
+inline void writeText(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
 }  // namespace sinsim::test

@@ -16,16 +16,8 @@ using sinsim::test::slurp;
 
 namespace {
 
-fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("sinsim-hostile-cli-" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-}
+fs::path tempDir(const std::string& name) { return sinsim::test::freshTempDir("sinsim-hostile-cli-" + name); }
+using sinsim::test::writeText;
 
 }  // namespace
 

@@ -27,16 +27,8 @@ std::string messageOf(const std::function<void()>& f) {
   return "";
 }
 
-fs::path tempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("sinsim-hostile-" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void writeText(const fs::path& p, const std::string& text) {
-  std::ofstream(p, std::ios::binary) << text;
-}
+fs::path tempDir(const std::string& name) { return sinsim::test::freshTempDir("sinsim-hostile-" + name); }
+using sinsim::test::writeText;
 
 }  // namespace
 
