@@ -31,7 +31,7 @@ ErrorModelSpec errorModelFromString(const std::string& text, const std::string& 
 /// unknown effect type, a value of a dimension its schema does not accept).
 std::string errorModelYaml(const ErrorModelSpec& spec);
 /// One effect in the writer's inline (flow) syntax, exactly as errorModelYaml writes it on its
-/// line, e.g. "{type: ramp, slope: 12.5 deg/h^2}" in the units of `sensor` (reports show an effect
+/// line, e.g. {type: ramp, slope: 12.5 deg/h^2}, in the units of `sensor` (reports show an effect
 /// as the model file will hold it). Throws like errorModelYaml.
 std::string effectYaml(const EffectSpec& effect, Sensor sensor);
 /// The spec as a file written from it reads back: every value rounded to the digits the writer

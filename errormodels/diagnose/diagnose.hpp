@@ -188,7 +188,7 @@ std::string toJson(const Improvement& imp);
 std::string summaryTable(const Diagnosis& d);
 std::string summaryTable(const Improvement& imp);
 
-/// An effect of a channel ("gx".."az") in model-file syntax, e.g. "{type: ramp, slope: 12 deg/h^2}":
+/// An effect of a channel ("gx".."az") in model-file syntax, e.g. {type: ramp, slope: 12 deg/h^2}:
 /// the one writer's inline form (errormodels/model_io.hpp: effectYaml) in the channel's units;
 /// "" for an empty spec.
 std::string effectText(const EffectSpec& effect, const std::string& channel);

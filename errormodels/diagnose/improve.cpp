@@ -10,6 +10,7 @@
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/run.hpp"
+#include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::diagnose {
@@ -89,7 +90,15 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
     sol = bestS;
   }
   const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
-  if (sol.chi2 - freeLevel.chi2 > 9.0) sol = freeLevel;
+  if (sol.chi2 - freeLevel.chi2 > 9.0) {
+    // A level that reaches 0 would write the base noise with size 0, which no model accepts
+    // (issue 10: "sigma: must be positive, got 0 mg" after the whole diagnosis).
+    if (std::isfinite(freeLevel.s) && freeLevel.s > 0)
+      sol = freeLevel;
+    else
+      notes.push_back(w.d.channel + ": the refitted base noise level is 0 (the added effects take the "
+                                    "whole Allan curve); the base level is kept");
+  }
   return sol;
 }
 
@@ -160,6 +169,12 @@ Improvement improve(const Record& record, const ErrorModelSpec& model, const std
   imp.model = asWritten(editedModel(model, edits));
   imp.model.source = model.source + " (improved)";
   imp.model.headerComments = improvedHeader(model, record, changes);
+  try {
+    (void)ImuErrorModel::fromSpec(imp.model, imp.model.source);
+  } catch (const ConfigError& e) {
+    throw InputError("the model improved from " + model.source + " is not valid (nothing written): " +
+                     e.what());
+  }
   imp.after = diagnose(record, imp.model, options);
   for (auto& ch : changes) {
     AxisChange full = changeOf(imp.before.axis(ch.channel), imp.after.axis(ch.channel));

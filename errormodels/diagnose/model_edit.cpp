@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
 
@@ -98,6 +99,9 @@ std::optional<std::vector<double>> baseAr(const ErrorModelSpec& model, int chann
 }
 
 ErrorModelSpec editedModel(ErrorModelSpec model, const ModelEdits& edits) {
+  for (double s : edits.varianceScale)
+    if (!(std::isfinite(s) && s > 0))
+      throw InputError("diagnose: a variance factor must be positive, got " + std::to_string(s));
   for (Sensor sensor : {Sensor::gyro, Sensor::accel}) {
     const int c0 = sensor == Sensor::gyro ? 0 : 3;
     bool any = false, differs = false;
@@ -110,6 +114,13 @@ ErrorModelSpec editedModel(ErrorModelSpec model, const ModelEdits& edits) {
     if (differs) model = noiseOfAllToAxes(std::move(model), sensor);
     for (int c = c0; c < c0 + 3; ++c) model = editAxis(std::move(model), c, edits);
   }
+  // A new model: no value points into the file the original was read from any more.
+  for (Sensor sensor : {Sensor::gyro, Sensor::accel})
+    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y, EffectList::z})
+      for (auto& e : model.sensor(sensor).list(l)) {
+        e.where = {};
+        for (auto& p : e.parameters) p.where = {};
+      }
   return model;
 }
 

@@ -29,7 +29,9 @@ struct ModelEdits {
 /// (ahead of each axis's own effects, in their order) so that each axis gets its own level; the
 /// noise keys (sigma, output_sigma, density, K, B, floor) are multiplied by sqrt(variance
 /// factor); the added effects come last. List order decides the random streams
-/// (imu_model.cpp), so the order is part of the result.
+/// (imu_model.cpp), so the order is part of the result. The result is a new model: its source
+/// locations are cleared (messages about it must not point into the original's file). Throws
+/// InputError for a variance factor that is not positive.
 ErrorModelSpec editedModel(ErrorModelSpec model, const ModelEdits& edits);
 
 /// si rounded to `digits` significant digits in `unit` (a unit of common/units.hpp): a size as
