@@ -63,7 +63,7 @@ ErrorModelSpec fitBase(const Record& r) {
   io.kind = sinsim::errormodels::IdentifyKind::Ar;
   io.order = 2;  // the base family's order (MDL picks 2 on the base record alone)
   const auto id = sinsim::errormodels::identify(r, io);
-  auto spec = id.modelSpec();
+  auto spec = sinsim::errormodels::asWritten(id.modelSpec());  // as the fit's file holds it
   spec.source = "fitted.yaml";
   return spec;
 }

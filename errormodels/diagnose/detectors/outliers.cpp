@@ -60,7 +60,7 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   for (double& v : absd) v = std::fabs(v - med);
   const double sigma = 1.482602218505602 * median(absd);
   if (!(sigma > 0)) return {};
-  const double zt = zUpperBisect(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
+  const double zt = zFromTwoSidedP(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
   const auto iso = isolatedPeaks(e, med, sigma, zt, ctx.lattice);
   if (iso.empty()) return {};
   double zmax = 0, sumsq = 0;

@@ -48,7 +48,7 @@ void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
     freq = 0;
     return;
   }
-  z = pAll > 0 ? zUpperBisect(pAll) : 40.0;
+  z = pAll > 0 ? zFromTwoSidedP(pAll) : 40.0;
 }
 
 /// Periodogram of the record at f [Hz]: y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt;
