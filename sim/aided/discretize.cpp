@@ -1,6 +1,7 @@
 #include "sim/aided/discretize.hpp"
 
-#include <Eigen/SparseCore>
+#include <vector>
+
 #include <unsupported/Eigen/MatrixFunctions>
 
 namespace sinsim::sim::aided {
@@ -22,24 +23,43 @@ DiscreteSystem vanLoan(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, doub
 DiscreteSystem discretize(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T) {
   const Eigen::Index n = F.rows();
   if (!((F.diagonal().cwiseAbs() * T).maxCoeff() <= 1.0)) return vanLoan(F, Qc, T);
-  const Eigen::SparseMatrix<double> FT = (F * T).sparseView();
-  DiscreteSystem d;
-  d.Phi = Eigen::MatrixXd::Identity(n, n);
-  d.Qd = Qc * T;
-  Eigen::MatrixXd P = d.Phi;   // (F T)^k / k!
-  Eigen::MatrixXd M = d.Qd;    // M_k T^(k+1) / (k+1)!
+  // The non-zeros of F T. Products are formed transposed, (F T X)ᵀ = Xᵀ (F T)ᵀ, so that each
+  // non-zero F_ij adds a contiguous column: out.col(i) += F_ij T · X.col(j) (X = Pᵀ, or M, which
+  // is symmetric).
+  struct NonZero {
+    Eigen::Index i, j;
+    double v;
+  };
+  std::vector<NonZero> nz;
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (F(i, j) != 0.0) nz.push_back({i, j, F(i, j) * T});
+  auto productT = [&nz](const Eigen::MatrixXd& X, Eigen::MatrixXd& out) {  // out = (F T Xᵀ)ᵀ
+    out.setZero();
+    for (const NonZero& z : nz) out.col(z.i) += z.v * X.col(z.j);
+  };
+  Eigen::MatrixXd PhiT = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd Qd = Qc * T;
+  Eigen::MatrixXd Pt = PhiT;  // ((F T)^k / k!)ᵀ
+  Eigen::MatrixXd M = Qd;     // M_k T^(k+1) / (k+1)!, symmetric
+  Eigen::MatrixXd tmp(n, n);
   constexpr int kMaxTerms = 40;
-  constexpr double kTol = 1e-17;  // below rounding of the sum: the series is summed out
+  constexpr double kTol = 0x1p-53;  // a term below half an ulp of the sum's largest entry
   for (int k = 1; k <= kMaxTerms; ++k) {
-    P = (FT * P) / double(k);
-    Eigen::MatrixXd FM = FT * M;
-    M = (FM + FM.transpose()) / double(k + 1);
-    d.Phi += P;
-    d.Qd += M;
-    const double pn = P.lpNorm<Eigen::Infinity>(), mn = M.lpNorm<Eigen::Infinity>();
-    if (pn <= kTol * d.Phi.lpNorm<Eigen::Infinity>() &&
-        mn <= kTol * d.Qd.lpNorm<Eigen::Infinity>())
+    productT(Pt, tmp);
+    Pt = tmp * (1.0 / double(k));
+    productT(M, tmp);  // (F T M)ᵀ = M (F T)ᵀ
+    M = (tmp + tmp.transpose()) * (1.0 / double(k + 1));
+    PhiT += Pt;
+    Qd += M;
+    // lpNorm<Infinity> is the largest |entry| (the same for a matrix and its transpose).
+    if (Pt.lpNorm<Eigen::Infinity>() <= kTol * PhiT.lpNorm<Eigen::Infinity>() &&
+        M.lpNorm<Eigen::Infinity>() <= kTol * Qd.lpNorm<Eigen::Infinity>()) {
+      DiscreteSystem d;
+      d.Phi = PhiT.transpose();
+      d.Qd = std::move(Qd);
       return d;
+    }
   }
   return vanLoan(F, Qc, T);
 }
