@@ -1,5 +1,6 @@
 #include "sim/aided/discretize.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include <unsupported/Eigen/MatrixFunctions>
@@ -20,9 +21,11 @@ DiscreteSystem vanLoan(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, doub
   return d;
 }
 
-DiscreteSystem discretize(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T) {
+namespace {
+
+// The series over a step h with every |F_ii| h <= 1; false when it does not converge.
+bool seriesStep(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T, DiscreteSystem& d) {
   const Eigen::Index n = F.rows();
-  if (!((F.diagonal().cwiseAbs() * T).maxCoeff() <= 1.0)) return vanLoan(F, Qc, T);
   // The non-zeros of F T. Products are formed transposed, (F T X)ᵀ = Xᵀ (F T)ᵀ, so that each
   // non-zero F_ij adds a contiguous column: out.col(i) += F_ij T · X.col(j) (X = Pᵀ, or M, which
   // is symmetric).
@@ -55,13 +58,32 @@ DiscreteSystem discretize(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, d
     // lpNorm<Infinity> is the largest |entry| (the same for a matrix and its transpose).
     if (Pt.lpNorm<Eigen::Infinity>() <= kTol * PhiT.lpNorm<Eigen::Infinity>() &&
         M.lpNorm<Eigen::Infinity>() <= kTol * Qd.lpNorm<Eigen::Infinity>()) {
-      DiscreteSystem d;
       d.Phi = PhiT.transpose();
       d.Qd = std::move(Qd);
-      return d;
+      return true;
     }
   }
-  return vanLoan(F, Qc, T);
+  return false;
+}
+
+}  // namespace
+
+DiscreteSystem discretize(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T) {
+  // A fast process (|F_ii| T > 1) is stepped over h = T / 2^s with |F_ii| h <= 1, then doubled:
+  // Φ(2h) = Φ(h)², Qd(2h) = Φ(h) Qd(h) Φ(h)ᵀ + Qd(h) (sums of positive terms, no cancellation;
+  // Van Loan's exp(−F T) block would overflow for τ of milliseconds).
+  const double fastest = (F.diagonal().cwiseAbs() * T).maxCoeff();
+  int s = 0;
+  if (fastest > 1.0) s = int(std::ceil(std::log2(fastest)));
+  if (!(s <= 60)) return vanLoan(F, Qc, T);  // NaN or absurd rates: let Van Loan report it
+  DiscreteSystem d;
+  if (!seriesStep(F, Qc, std::ldexp(T, -s), d)) return vanLoan(F, Qc, T);
+  for (int i = 0; i < s; ++i) {
+    d.Qd = (d.Phi * d.Qd * d.Phi.transpose() + d.Qd).eval();
+    d.Qd = 0.5 * (d.Qd + d.Qd.transpose()).eval();
+    d.Phi = (d.Phi * d.Phi).eval();
+  }
+  return d;
 }
 
 }  // namespace sinsim::sim::aided

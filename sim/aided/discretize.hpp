@@ -23,8 +23,11 @@ DiscreteSystem vanLoan(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, doub
 /// nilpotent (the large terms, f_n × ψ and the sensor couplings, form a chain; the eigenvalues
 /// are Schuler, Earth rate and the processes' 1/τ): the terms then fall off without
 /// cancellation, and each costs a sparse product instead of the dense 2n × 2n Padé products.
-/// Safe means: every |F_ii| T <= 1 (no fast decay whose alternating series would cancel) and the
-/// terms below 1e-17 of the sum within 40 terms; otherwise the result is vanLoan's.
+/// The series is summed over a step h with every |F_ii| h <= 1 (no fast decay whose alternating
+/// series would cancel): h = T for the slow processes of a navigation filter, else T / 2^s and s
+/// doublings Φ(2h) = Φ(h)², Qd(2h) = Φ(h) Qd(h) Φ(h)ᵀ + Qd(h) — where vanLoan's exp(−F T) block
+/// overflows (a Gauss-Markov τ of 3 ms over T = 1 s is e^300). vanLoan is the fallback when the
+/// series does not reach half an ulp within 40 terms.
 DiscreteSystem discretize(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T);
 
 }  // namespace sinsim::sim::aided

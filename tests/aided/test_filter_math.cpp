@@ -154,7 +154,7 @@ TEST_CASE("discrete AR blocks refuse a filter step that is not a whole number of
   CHECK_THROWS(arState({-1.5}, 1.0, 100.0));  // pole at 1.5: unstable
 }
 
-TEST_CASE("series discretisation: the closed form, the 9 + 18-state filter model, and its fallback") {
+TEST_CASE("series discretisation: the closed form, the 9 + 18-state filter model, fast processes") {
   // 1) The single-axis case above: Φ in closed form, Qd by Simpson quadrature (independent).
   const double T = 1.0, tau = 300.0, Na = 0.002, sigmaB = 5e-3;
   const StateBlock gm = gaussMarkovState(sigmaB, tau);
@@ -218,10 +218,28 @@ TEST_CASE("series discretisation: the closed form, the 9 + 18-state filter model
   CHECK(worstPhi < 1e-9);
   CHECK(worstQ < 1e-9);
 
-  // 3) A fast process (GM τ = 20 ms: |F_ii| T = 50) falls back to Van Loan, bit for bit.
-  Eigen::MatrixXd F2 = F, Qc2 = Qc;
-  F2(2, 2) = -1.0 / 0.02;
-  const DiscreteSystem c = discretize(F2, Qc2, T), v = vanLoan(F2, Qc2, T);
-  CHECK(c.Phi == v.Phi);
-  CHECK(c.Qd == v.Qd);
+  // 3) Fast processes (GM τ = 20 ms and 3 ms: |F_ii| T = 50 and 333, where Van Loan's exp(−F T)
+  // is e^333 and overflows): halved steps and doublings against the closed form and Simpson, with
+  // n = 200000 (Simpson's error ∝ (T/(n τ))^4 ~ 3e-9 relative at τ = 3 ms, hence 1e-7).
+  for (double fastTau : {0.02, 0.003}) {
+    Eigen::MatrixXd F2 = F, Qc2 = Qc;
+    F2(2, 2) = -1.0 / fastTau;
+    Qc2(2, 2) = 2.0 * sigmaB * sigmaB / fastTau;
+    const DiscreteSystem c = discretize(F2, Qc2, T);
+    const Eigen::Matrix3d Phi2 = phiClosed(T, fastTau);
+    const int n2 = 200000;
+    Eigen::Matrix3d Qd2 = Eigen::Matrix3d::Zero();
+    for (int i = 0; i <= n2; ++i) {
+      const double t = T * i / n2, w = (i == 0 || i == n2) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+      const Eigen::Matrix3d Ps = phiClosed(t, fastTau);
+      Qd2 += w * Ps * Eigen::Matrix3d(Qc2) * Ps.transpose();
+    }
+    Qd2 *= T / (3.0 * n2);
+    INFO("tau = " << fastTau);
+    CHECK(c.Phi.allFinite());
+    CHECK((c.Phi - Eigen::MatrixXd(Phi2)).norm() <= 1e-10 * Phi2.norm());
+    for (int i = 0; i < 3; ++i)  // each entry in its own scale (the bias variance is tiny)
+      for (int j = 0; j < 3; ++j)
+        CHECK(std::abs(c.Qd(i, j) - Qd2(i, j)) <= 1e-7 * std::sqrt(Qd2(i, i) * Qd2(j, j)));
+  }
 }
