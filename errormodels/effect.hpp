@@ -142,6 +142,12 @@ Mat3 matrix3Of(const EffectSpec& spec);
 /// The three parameters of a triad effect's matrix, entries of dimension `entry` (alsoAngle: a
 /// small angle is accepted too); exactly one of them must be given.
 std::vector<ParamSchema> matrixParams(DimRule entry, bool alsoAngle);
+/// White noise density N [signal·sqrt(s)] of a `white` effect: `density`, or `sigma`/sqrt(`rate`)
+/// (effects/white.cpp); NaN when neither form is complete.
+double whiteDensityOf(const EffectSpec& spec);
+/// Driving-noise standard deviation sigma_e [signal] of an `ar` effect: `sigma`, or
+/// `output_sigma`/sqrt(G) with G the variance gain of its `a` (effects/ar.cpp).
+double arDrivingSigmaOf(const EffectSpec& spec);
 /// Refuses a process rate [Hz] slower than the IMU (throws InputError naming the effect).
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx);
 

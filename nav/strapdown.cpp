@@ -54,11 +54,13 @@ Strapdown::Strapdown(const Earth& earth, const NavState& initial, const Strapdow
 void Strapdown::correct(const Vec3& dr_n, const Vec3& dv_n, const Vec3& psi) {
   if (!(dr_n.allFinite() && dv_n.allFinite() && psi.allFinite()))
     throw InputError("strapdown: a correction must be finite");
-  double M = 0.0, N = 0.0;
-  earth_->radii(state_.lat, M, N);
-  state_.lat -= dr_n.x() / (M + state_.h);
-  state_.lon -= dr_n.y() / ((N + state_.h) * std::cos(state_.lat));
-  state_.h += dr_n.z();  // δD = −δh
+  if (!dr_n.isZero()) {  // (the filter's per-interval sensor compensation has no position part)
+    double M = 0.0, N = 0.0;
+    earth_->radii(state_.lat, M, N);
+    state_.lat -= dr_n.x() / (M + state_.h);
+    state_.lon -= dr_n.y() / ((N + state_.h) * std::cos(state_.lat));
+    state_.h += dr_n.z();  // δD = −δh
+  }
   state_.v_n -= dv_n;
   // C_nb = (I + [ψ×]) Ĉ_nb to first order; the exact rotation keeps q_nb a unit quaternion.
   state_.q_nb = (quatFromRotationVector(psi) * state_.q_nb).normalized();

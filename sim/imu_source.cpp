@@ -45,6 +45,11 @@ bool ReferenceSource::next(ImuEpoch& e) {
   e.hTrue = ref_.hRef[k_];
   ++k_;
   e.index = static_cast<long long>(k_);
+  if (!ref_.truthAll.empty()) {  // an aided reference: the truth at every interval
+    e.hasTruth = true;
+    e.truth = ref_.truthAll[k_ - 1];
+    return true;
+  }
   const auto dec = static_cast<std::size_t>(ref_.decimation);
   e.hasTruth = k_ % dec == 0;
   if (e.hasTruth) e.truth = ref_.truth[k_ / dec];

@@ -61,7 +61,8 @@ class TrajectorySource final : public ImuSource {
 };
 
 /// A precomputed Reference (sim/reference.hpp) through `corruptor` (nullptr: perfect IMU). The
-/// truth is known at the reference's output epochs only. ref and corruptor must outlive it.
+/// truth is known at the reference's output epochs only (at every epoch for an aided reference).
+/// ref and corruptor must outlive it.
 class ReferenceSource final : public ImuSource {
  public:
   ReferenceSource(const Reference& ref, errormodels::ImuCorruptor* corruptor);

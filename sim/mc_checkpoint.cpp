@@ -66,6 +66,45 @@ std::uint32_t crcOf(std::uint32_t crc, const void* p, std::size_t n) {
 
 }  // namespace
 
+// The aiding a reference navigates with, as values (the filter model file's content is not in the
+// scenario's text, so its states are hashed here).
+// A free-inertial reference adds nothing (its checkpoints from before aiding still resume).
+static void hashAiding(Fnv& f, const aided::AidingConfig& a) {
+  if (a.inert()) return;
+  auto vec = [&f](const auto& m) {
+    f.value(m.rows());
+    f.value(m.cols());
+    f.bytes(m.data(), std::size_t(m.size()) * sizeof(double));
+  };
+  for (const aided::ValueOrSigma* v :
+       {&a.initialErrors.position, &a.initialErrors.velocity, &a.initialErrors.attitude}) {
+    f.value(v->random);
+    vec(v->value);
+    vec(v->sigma);
+  }
+  f.value(a.alignment.duration);
+  f.value(a.gnss.enabled);
+  f.value(a.gnss.rate);
+  vec(a.gnss.positionSigma);
+  vec(a.gnss.velocitySigma.value_or(nav::Vec3::Zero()));
+  vec(a.gnss.leverArm_b);
+  for (const aided::TimeWindow& w : a.gnss.outages) {
+    f.value(w.start);
+    f.value(w.end);
+  }
+  f.value(a.filter.enabled);
+  for (int i = 0; i < 6; ++i) {
+    const aided::SensorAxisModel& m = i < 3 ? a.filter.sensors.gyro[i] : a.filter.sensors.accel[i - 3];
+    f.value(m.whiteDensity);
+    for (const aided::StateBlock& b : m.blocks) {
+      f.text(b.name);
+      f.value(b.period);
+      for (const Eigen::MatrixXd* M : {&b.F, &b.Qc, &b.A, &b.Qs, &b.P0}) vec(*M);
+      vec(b.x0);
+    }
+  }
+}
+
 std::uint64_t referenceFingerprint(const Reference& ref, const McOptions& opt) {
   Fnv f;
   f.text("sinsim-mc 1");
@@ -93,6 +132,7 @@ std::uint64_t referenceFingerprint(const Reference& ref, const McOptions& opt) {
   f.value(opt.seed);
   f.value(opt.navigate.biasWindow);
   f.value(kChunkRuns);
+  hashAiding(f, ref.aiding);
   return f.h;
 }
 

@@ -137,6 +137,10 @@ MeasuredSetup prepareMeasured(const MeasuredOptions& o) {
 
 McMeasured navigateMeasured(const MeasuredSetup& setup, const Reference& ref,
                             const NavigateOptions& options) {
+  if (!ref.aiding.inert())
+    throw InputError("mc --measured: the scenario " + ref.name + " has aiding keys (initial_errors, "
+                     "alignment, gnss, filter); a measured record is replayed free-inertially "
+                     "only, so its drift would not compare with the aided runs");
   McMeasured measured;
   measured.source = setup.record.source;
   measured.errors.resize(ref.epochs() * kErrorFields);

@@ -174,7 +174,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
         std::unique_ptr<errormodels::ImuCorruptor> c;
         if (!m.model.empty()) c = m.model.instantiate(ref.imuRate, {opt.seed, wk.first + r});
         if (!navigateRealisation(ref, c.get(), opt.navigate, oc->buf.data() + r * perRun,
-                                 opt.interrupt))
+                                 opt.interrupt, {opt.seed, wk.first + r}))
           break;  // interrupted mid-run: the chunk stays unfinished
         const std::uint64_t done = runsDone.fetch_add(1) + 1;
         if (opt.stopAfterRuns && done >= opt.stopAfterRuns) stop.store(true);

@@ -6,13 +6,14 @@
 #include "sim/ideal_imu.hpp"
 #include "sim/nav_loop.hpp"
 #include "sim/run.hpp"
+#include "sim/scenario_aiding.hpp"
 #include "sim/trajectory.hpp"
 
 namespace sinsim::sim {
 
 std::size_t Reference::bytes() const {
   return samples.size() * sizeof(nav::ImuSample) + hRef.size() * sizeof(double) +
-         truth.size() * sizeof(nav::NavState);
+         (truth.size() + truthAll.size()) * sizeof(nav::NavState);
 }
 
 Reference buildReference(const Scenario& sc) {
@@ -23,6 +24,8 @@ Reference buildReference(const Scenario& sc) {
   r.decimation = sc.decimation();
   r.strapdown = sc.strapdown;
   r.temperature = sc.temperature;
+  r.aiding = sc.aiding;
+  const bool aided = !sc.aiding.inert();
   const Trajectory trajectory(sharedEarth(), sc.motion());
   IdealImu imu(trajectory, sc.imuRate);
   r.initial = imu.truth();
@@ -30,9 +33,11 @@ Reference buildReference(const Scenario& sc) {
   r.hRef.reserve(std::size_t(imu.sampleCount()));
   r.truth.reserve(std::size_t(imu.sampleCount() / r.decimation + 1));
   r.truth.push_back(imu.truth());
+  if (aided) r.truthAll.reserve(std::size_t(imu.sampleCount()));
   while (!imu.done()) {
     r.samples.push_back(imu.next());
     r.hRef.push_back(imu.truth().h);
+    if (aided) r.truthAll.push_back(imu.truth());
     if (imu.index() % r.decimation == 0) r.truth.push_back(imu.truth());
   }
   return r;
@@ -55,11 +60,12 @@ void store(float* row, const NavError& e) {
 }  // namespace
 
 bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptions& options,
-                    float* out, const std::atomic<bool>* cancel) {
+                    float* out, const std::atomic<bool>* cancel, NavAiding* aiding) {
   NavLoopOptions loop;
   loop.strapdown = ref.strapdown;
   loop.biasWindow = options.biasWindow;
   loop.cancel = cancel;
+  loop.aiding = aiding;
   const nav::Earth& earth = sharedEarth();
   const auto dec = ref.decimation;
   return navigate(source, loop, [&](const ImuEpoch& e, const nav::NavState& nav) {
@@ -70,9 +76,11 @@ bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptio
 
 bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corruptor,
                          const NavigateOptions& options, float* out,
-                         const std::atomic<bool>* cancel) {
+                         const std::atomic<bool>* cancel, const errormodels::StreamKey& key) {
   ReferenceSource source(ref, corruptor);
-  return navigateErrors(source, ref, options, out, cancel);
+  if (ref.aiding.inert()) return navigateErrors(source, ref, options, out, cancel);
+  ScenarioAiding aiding(sharedEarth(), ref.aiding, ref.strapdown, key);
+  return navigateErrors(source, ref, options, out, cancel, &aiding);
 }
 
 }  // namespace sinsim::sim

@@ -37,10 +37,15 @@ struct Reference {
   std::vector<nav::ImuSample> samples;  // ideal increments, interval k = (t_k − dt, t_k]
   std::vector<double> hRef;             // true height at the end of interval k [m]
   std::vector<nav::NavState> truth;     // truth at output epoch e (sample e·decimation; e = 0: t = 0)
+  /// The scenario's aiding (initial errors, alignment, GNSS, filter; docs/aided.md). When not
+  /// inert, every realisation navigates with it (its random streams keyed by the run's key) and
+  /// truthAll holds the truth at the end of every interval k (GNSS fixes are simulated from it).
+  aided::AidingConfig aiding;
+  std::vector<nav::NavState> truthAll;
 
   std::size_t epochs() const { return truth.size(); }
   double epochTime(std::size_t e) const { return truth[e].t; }  // [s]
-  /// Bytes held (the samples dominate: 72 per IMU sample).
+  /// Bytes held (the samples dominate: 72 per IMU sample, 88 more when aided).
   std::size_t bytes() const;
 };
 
@@ -58,18 +63,23 @@ struct NavigateOptions {
 
 /// Navigates `source` (one whose output epochs are the reference's: a ReferenceSource or a
 /// RecordSource of ref) through the navigation loop (sim/nav_loop.hpp) and writes the error at
-/// every output epoch to out[e · kErrorFields + field] (epochs() × kErrorFields floats). Returns
-/// false, leaving out partly written, when `cancel` becomes true (checked every 65536 samples).
+/// every output epoch to out[e · kErrorFields + field] (epochs() × kErrorFields floats), with the
+/// aiding hook `aiding` (nullptr: free inertial). Returns false, leaving out partly written, when
+/// `cancel` becomes true (checked every 65536 samples).
 bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptions& options,
-                    float* out, const std::atomic<bool>* cancel = nullptr);
+                    float* out, const std::atomic<bool>* cancel = nullptr,
+                    NavAiding* aiding = nullptr);
 
 /// Navigates one realisation along the reference: `corruptor` (nullptr: the perfect IMU) turns
 /// each ideal sample into a measured one, the strapdown integrates it from the true initial
 /// state, and the error at every output epoch is written to out[e · kErrorFields + field]
-/// (epochs() × kErrorFields floats). Returns false, leaving out partly written, when `cancel`
-/// becomes true (checked every 65536 samples).
+/// (epochs() × kErrorFields floats). An aided reference (ref.aiding not inert) navigates with its
+/// initial errors, alignment and GNSS/INS filter, whose random streams are keyed by `key` (the
+/// corruptor's key: run k of a batch is {seed, k}). Returns false, leaving out partly written,
+/// when `cancel` becomes true (checked every 65536 samples).
 bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corruptor,
                          const NavigateOptions& options, float* out,
-                         const std::atomic<bool>* cancel = nullptr);
+                         const std::atomic<bool>* cancel = nullptr,
+                         const errormodels::StreamKey& key = {});
 
 }  // namespace sinsim::sim

@@ -89,12 +89,7 @@ std::unique_ptr<ScenarioAiding> makeAiding(const Scenario& sc, const RunOptions&
   if (opt.aiding)
     throw InputError("scenario " + sc.name + " has its own aiding (initial_errors, alignment, "
                      "gnss, filter) and the caller passed another aiding hook");
-  if (sc.aiding.filter.enabled && !opt.filterModel)
-    throw InputError("scenario " + sc.name + ": filter: {model: " + sc.aiding.filter.model +
-                     "}: reading a filter model file needs the ErrorModelSpec reader, which is "
-                     "not merged yet; pass the model typed (RunOptions::filterModel)");
-  return std::make_unique<ScenarioAiding>(
-      earth, sc, opt.filterModel.value_or(aided::FilterSensorModel{}), key);
+  return std::make_unique<ScenarioAiding>(earth, sc, key);
 }
 
 }  // namespace

@@ -49,9 +49,6 @@ struct RunOptions {
   /// Called with the error of every output row (t = 0 and every 1/outputRate s), in time order,
   /// whether or not files are written: for statistics without CSV round trips.
   std::function<void(const NavError&)> onRow;
-  /// The filter's sensor model for a scenario with `filter:` (docs/aided.md), typed; required
-  /// there until model files are read into ErrorModelSpec values (then the scenario's file).
-  std::optional<aided::FilterSensorModel> filterModel;
   /// Also write imu.csv: ideal and measured IMU, as rates and as increments (large: one row per
   /// IMU interval).
   bool writeImu = false;

@@ -5,10 +5,10 @@
 
 namespace sinsim::sim {
 
-ScenarioAiding::ScenarioAiding(const nav::Earth& earth, const Scenario& sc,
-                               const aided::FilterSensorModel& filterModel,
+ScenarioAiding::ScenarioAiding(const nav::Earth& earth, const aided::AidingConfig& aiding,
+                               const nav::StrapdownOptions& strapdown,
                                const errormodels::StreamKey& key)
-    : aided_(earth, sc.aiding, filterModel, sc.strapdown, key) {}
+    : aided_(earth, aiding, aiding.filter.sensors, strapdown, key) {}
 
 void ScenarioAiding::epoch(const ImuEpoch& e, nav::Strapdown& strapdown) {
   if (!e.hasTruth)

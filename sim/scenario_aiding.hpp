@@ -14,10 +14,13 @@ namespace sinsim::sim {
 
 class ScenarioAiding final : public NavAiding {
  public:
-  /// filterModel: the filter's sensor model (used when the scenario has `filter:`). The earth
-  /// must outlive the object.
-  ScenarioAiding(const nav::Earth& earth, const Scenario& sc,
-                 const aided::FilterSensorModel& filterModel, const errormodels::StreamKey& key);
+  /// The filter's sensor model is the scenario's (`filter: {model: ...}`). The earth must outlive
+  /// the object.
+  ScenarioAiding(const nav::Earth& earth, const Scenario& sc, const errormodels::StreamKey& key)
+      : ScenarioAiding(earth, sc.aiding, sc.strapdown, key) {}
+  /// The same from a scenario's aiding keys and vertical channel (a Monte Carlo reference's).
+  ScenarioAiding(const nav::Earth& earth, const aided::AidingConfig& aiding,
+                 const nav::StrapdownOptions& strapdown, const errormodels::StreamKey& key);
 
   nav::NavState start(const nav::NavState& truth) override { return aided_.initialState(truth); }
   void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) override;

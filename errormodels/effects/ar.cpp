@@ -158,9 +158,13 @@ std::unique_ptr<Effect> buildEffect_ar(const EffectSpec& spec, const EffectSite&
     problems.add("a", s.str());
     return nullptr;
   }
-  double sigma = valueOr(spec, "sigma", NAN);
-  if (spec.has("output_sigma")) sigma = valueOr(spec, "output_sigma", NAN) / std::sqrt(ar::varianceGain(a));
+  const double sigma = arDrivingSigmaOf(spec);
   return std::make_unique<Ar>(std::move(a), sigma, valueOr(spec, "rate", NAN));
+}
+
+double arDrivingSigmaOf(const EffectSpec& spec) {
+  if (!spec.has("output_sigma")) return valueOr(spec, "sigma", NAN);
+  return valueOr(spec, "output_sigma", NAN) / std::sqrt(ar::varianceGain(valuesOf(spec, "a")));
 }
 
 }  // namespace sinsim::errormodels

@@ -68,16 +68,16 @@ const std::vector<ParamSchema>& paramsOf_white() {
 
 std::unique_ptr<Effect> buildEffect_white(const EffectSpec& spec, const EffectSite&,
                                           SpecProblems& problems) {
-  const double rate = valueOr(spec, "rate", NAN);
-  double density = valueOr(spec, "density", NAN);
-  if (spec.has("sigma")) {
-    if (!spec.has("rate")) {
-      problems.add("", "missing key rate: a per-sample sigma needs the sample rate it holds at");
-      return nullptr;
-    }
-    density = valueOr(spec, "sigma", NAN) / std::sqrt(rate);
+  if (spec.has("sigma") && !spec.has("rate")) {
+    problems.add("", "missing key rate: a per-sample sigma needs the sample rate it holds at");
+    return nullptr;
   }
-  return std::make_unique<White>(density, rate);
+  return std::make_unique<White>(whiteDensityOf(spec), valueOr(spec, "rate", NAN));
+}
+
+double whiteDensityOf(const EffectSpec& spec) {
+  if (spec.has("sigma")) return valueOr(spec, "sigma", NAN) / std::sqrt(valueOr(spec, "rate", NAN));
+  return valueOr(spec, "density", NAN);
 }
 
 }  // namespace sinsim::errormodels

@@ -74,7 +74,9 @@ nav::NavState AidedNavigation::initialState(const nav::NavState& truth) const {
   s.lon += initialError_[1] / ((N + truth.h) * std::cos(truth.lat));
   s.h -= initialError_[2];
   s.v_n += initialError_.segment<3>(3);
-  s.q_nb = nav::quatFromEuler(nav::eulerFromQuat(truth.q_nb) + initialError_.segment<3>(6));
+  // Without an attitude error the start keeps the true quaternion's bits (no Euler round trip).
+  if (!initialError_.segment<3>(6).isZero())
+    s.q_nb = nav::quatFromEuler(nav::eulerFromQuat(truth.q_nb) + initialError_.segment<3>(6));
   return s;
 }
 
@@ -134,7 +136,9 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::N
   // Sensor-error compensation of this interval (first order in dt).
   const nav::Mat3 C = sd.state().q_nb.toRotationMatrix();
   const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
-  sd.correct(nav::Vec3::Zero(), C * ba * m.dt, -C * bg * m.dt);
+  // Nothing estimated, nothing touched: a filter without fixes (and zero prior means) leaves the
+  // navigation bit-identical to the free-inertial run (correct() renormalises q_nb).
+  if (!(bg.isZero() && ba.isZero())) sd.correct(nav::Vec3::Zero(), C * ba * m.dt, -C * bg * m.dt);
 
   // Means of the linearisation point over the propagation step.
   const nav::NavState& s = sd.state();

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "common/error.hpp"
+#include "errormodels/model_io.hpp"
+#include "sim/aided/filter_model.hpp"
+
 namespace sinsim::sim::aided {
 namespace {
 
@@ -112,16 +116,40 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
   parseOutages(n["outages"], duration, g.outages);
 }
 
+// The filter's model from a file (relative to the scenario) or an inline model map, read into an
+// ErrorModelSpec by the one model reader and converted by filterModelFromSpec; the problems of a
+// model file are recorded at filter.model with the model file's own line and key.
 void parseFilter(const ConfigNode& root, const std::string& baseDir, FilterConfig& f) {
   const ConfigNode n = root["filter"];
   if (!n.exists()) return;
   n.allowKeys({"model"});
-  const std::string model = n.string("model");
-  if (model.empty()) return;
-  fs::path p(model);
-  if (p.is_relative()) p = fs::path(baseDir) / p;
-  f.model = p.lexically_normal().string();
-  f.enabled = n["model"].check(fs::exists(f.model), "no such model file: " + f.model);
+  const ConfigNode m = n.require("model");
+  if (!m.exists()) return;
+  errormodels::ErrorModelSpec spec;
+  if (m.isMap()) {
+    spec = errormodels::readErrorModel(m);
+    f.model = "inline";
+  } else {
+    const std::string model = n.string("model");
+    if (model.empty()) return;
+    fs::path p(model);
+    if (p.is_relative()) p = fs::path(baseDir) / p;
+    f.model = p.lexically_normal().string();
+    if (!m.check(fs::exists(f.model), "no such model file: " + f.model)) return;
+    try {
+      spec = errormodels::loadErrorModel(f.model);
+    } catch (const ConfigError& e) {
+      for (const Diagnostic& d : e.diagnostics()) m.error(d.str());
+      return;
+    } catch (const InputError& e) {
+      m.error(e.what());
+      return;
+    }
+  }
+  std::vector<Diagnostic> problems;
+  f.sensors = filterModelFromSpec(spec, problems);
+  for (const Diagnostic& d : problems) m.error(d.str());
+  f.enabled = problems.empty();
 }
 
 }  // namespace
@@ -144,9 +172,9 @@ AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, dou
   parseAlignment(root, c.alignment);
   parseGnss(root, duration, c.gnss);
   parseFilter(root, baseDir, c.filter);
-  if (c.filter.enabled && !c.gnss.enabled)
+  if (root.has("filter") && !c.gnss.enabled)
     root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
-  if (c.gnss.enabled && !c.filter.enabled && root.has("gnss"))
+  if (c.gnss.enabled && !root.has("filter"))
     root["gnss"].error("GNSS fixes need a filter to use them (filter: {model: FILE})");
   return c;
 }

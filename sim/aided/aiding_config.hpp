@@ -4,7 +4,8 @@
 //   alignment        coarse alignment (leveling + gyrocompassing) over the first static seconds
 //   gnss             position (and velocity) fixes from the truth with white noise, a lever arm,
 //                    outages as time windows
-//   filter           the filter's own sensor model file (may differ from the truth `errors:`)
+//   filter           the filter's own sensor model, a file or inline (may differ from the truth
+//                    `errors:`), converted to filter states at reading
 // Read once by the scenario reader (parseAiding); nothing below re-reads YAML.
 #pragma once
 
@@ -14,6 +15,7 @@
 
 #include "common/config.hpp"
 #include "nav/types.hpp"
+#include "sim/aided/error_state_filter.hpp"
 
 namespace sinsim::sim::aided {
 
@@ -54,7 +56,8 @@ struct GnssConfig {
 
 struct FilterConfig {
   bool enabled = false;
-  std::string model;  // path of the filter's sensor model file, resolved against the scenario
+  std::string model;           // the model file's path (resolved against the scenario), or "inline"
+  FilterSensorModel sensors;   // its sensor-error states (filter_model.hpp)
 };
 
 struct AidingConfig {

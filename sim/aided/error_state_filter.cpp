@@ -70,7 +70,7 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
 void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
   Eigen::MatrixXd F, Qc;
   continuousModel(p, F, Qc);
-  DiscreteSystem d = vanLoan(F, Qc, T);
+  DiscreteSystem d = discretize(F, Qc, T);
   for (const Placed& pl : placed_) {
     if (!pl.block->discrete) continue;
     const DiscreteSystem s = discretizeBlock(*pl.block, T);

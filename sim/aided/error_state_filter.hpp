@@ -4,9 +4,10 @@
 // update the caller takes the navigation correction (and the states are zeroed) and compensates
 // the IMU with the sensor-error estimate.
 //
-// Propagation is exact for the model held constant over the step: Van Loan on the continuous part
-// (INS errors, white noise, bias / random-walk / Gauss-Markov states), the AR blocks' own A^m and
-// Σ A^j Q A^jᵀ spliced in (sensor_states.hpp).
+// Propagation is exact for the model held constant over the step: Φ and Qd of the continuous part
+// (INS errors, white noise, bias / random-walk / Gauss-Markov states) from their series summed to
+// rounding (discretize.hpp; Van Loan's matrix exponential where the series is not safe), the AR
+// blocks' own A^m and Σ A^j Q A^jᵀ spliced in (sensor_states.hpp).
 #pragma once
 
 #include <vector>

@@ -11,6 +11,7 @@
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "sim/run.hpp"
+#include "sim/scenario_aiding.hpp"
 
 using namespace sinsim;
 
@@ -65,8 +66,7 @@ TEST_CASE("aided run: filter.csv, imu.csv and per-outage drift in the summary") 
 initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {sigma: [0.5 deg, 0.5 deg, 3 deg]}}
 gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 2 m], outages: [[90 s, 110 s]]}
 )";
-  // The scenario names no filter (the model-file path needs the ErrorModelSpec reader); a
-  // gnss block without a filter is refused with its line and key.
+  // A gnss block without a filter is refused with its line and key.
   try {
     sim::parseScenario(text, "aided.yaml");
     FAIL("expected a ConfigError");
@@ -74,20 +74,11 @@ gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 2 m], outages: [[90 s, 110 s]]}
     CHECK(std::string(e.what()).find("aided.yaml:") != std::string::npos);
     CHECK(std::string(e.what()).find("gnss") != std::string::npos);
   }
-  sim::Scenario sc = sim::parseScenario(std::string(kBase) + R"(
-initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {sigma: [0.5 deg, 0.5 deg, 3 deg]}}
+  const sim::Scenario sc = sim::parseScenario(text + R"(
+filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]},
+                 accel: {all: [{type: white, density: 0.05 m/s/sqrt(h)}]}}}
 )", "aided.yaml");
-  sc.aiding.gnss.enabled = true;
-  sc.aiding.gnss.positionSigma = nav::Vec3(1, 1, 2);
-  sc.aiding.gnss.outages = {{90.0, 110.0}};
-  sc.aiding.filter.enabled = true;
-  sim::aided::FilterSensorModel fm;
-  for (int i = 0; i < 3; ++i) {
-    fm.gyro[i].whiteDensity = 0.1 * kRadPerDeg / 60;
-    fm.accel[i].whiteDensity = 0.05 / 60;
-  }
   sim::RunOptions o;
-  o.filterModel = fm;
   o.writeImu = true;
   o.outDir = tmpDir("run");
   std::filesystem::remove_all(o.outDir);
@@ -131,4 +122,48 @@ filter: {model: no-such-file.yaml}
                             "alignment.duration", "gnss.rate", "gnss.outages[0]", "filter.model"})
       CHECK(m.find(key) != std::string::npos);
   }
+}
+
+TEST_CASE("GNSS off: the aided run navigates bit-identically to the free-inertial run") {
+  // Same seed, same IMU errors (the aiding's streams are separate, aided_navigation.hpp). With no
+  // fix ever used — one outage over the whole run — and a filter model of zero-mean processes,
+  // the filter predicts but estimates nothing, so the navigation must not move by a single bit;
+  // likewise with the aiding hook present but every aiding key off.
+  const std::string imu = std::string(kBase) + R"(
+output_rate: 100 Hz
+seed: 7
+errors:
+  gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}, {type: bias, sigma: 10 deg/h}]}
+  accel: {all: [{type: white, density: 0.05 m/s/sqrt(h)}, {type: gauss_markov, sigma: 1 mg, tau: 60 s}]}
+)";
+  auto rows = [](const sim::Scenario& sc, sim::NavAiding* hook) {
+    std::vector<sim::NavError> r;
+    sim::RunOptions o;
+    o.aiding = hook;
+    o.onRow = [&](const sim::NavError& e) { r.push_back(e); };
+    sim::run(sc, o);
+    return r;
+  };
+  const std::vector<sim::NavError> free = rows(sim::parseScenario(imu, "free.yaml"), nullptr);
+  const sim::Scenario off = sim::parseScenario(imu + R"(
+gnss: {rate: 1 Hz, position_sigma: 1 m, outages: [[0 s, 200 s]]}
+filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}, {type: bias, sigma: 10 deg/h}]},
+                 accel: {all: [{type: gauss_markov, sigma: 1 mg, tau: 60 s}]}}}
+)", "off.yaml");
+  REQUIRE(!off.aiding.inert());
+  const std::vector<sim::NavError> aided = rows(off, nullptr);
+  const sim::Scenario plain = sim::parseScenario(imu, "plain.yaml");
+  sim::ScenarioAiding inertHook(sim::sharedEarth(), plain, {7, 0});
+  const std::vector<sim::NavError> hooked = rows(plain, &inertHook);
+  REQUIRE(free.size() == 12001);
+  REQUIRE(aided.size() == free.size());
+  REQUIRE(hooked.size() == free.size());
+  int differ = 0;
+  for (std::size_t k = 0; k < free.size(); ++k)
+    for (const auto* other : {&aided, &hooked}) {
+      const sim::NavError &a = free[k], &b = (*other)[k];
+      if (!(a.pos_n == b.pos_n && a.vel_n == b.vel_n && a.euler == b.euler)) ++differ;
+    }
+  CHECK(differ == 0);
+  CHECK(free.back().horizontal() > 1.0);  // the IMU errors do make the free run drift
 }

@@ -3,11 +3,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "common/constants.hpp"
 #include "errormodels/ar_model.hpp"
+#include "nav/earth.hpp"
 #include "sim/aided/discretize.hpp"
+#include "sim/aided/error_state_filter.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
 
@@ -149,4 +152,94 @@ TEST_CASE("discrete AR blocks refuse a filter step that is not a whole number of
   CHECK_NOTHROW(discretizeBlock(b, 0.01));
   CHECK_THROWS(gaussMarkovState(1.0, -1.0));
   CHECK_THROWS(arState({-1.5}, 1.0, 100.0));  // pole at 1.5: unstable
+}
+
+TEST_CASE("series discretisation: the closed form, the 9 + 18-state filter model, fast processes") {
+  // 1) The single-axis case above: Φ in closed form, Qd by Simpson quadrature (independent).
+  const double T = 1.0, tau = 300.0, Na = 0.002, sigmaB = 5e-3;
+  const StateBlock gm = gaussMarkovState(sigmaB, tau);
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3, 3), Qc = Eigen::MatrixXd::Zero(3, 3);
+  F(0, 1) = 1.0;
+  F(1, 2) = 1.0;
+  F(2, 2) = gm.F(0, 0);
+  Qc(1, 1) = Na * Na;
+  Qc(2, 2) = gm.Qc(0, 0);
+  const DiscreteSystem s = discretize(F, Qc, T);
+  const Eigen::Matrix3d Phi = phiClosed(T, tau);
+  const int n = 4000;  // Simpson: error ∝ (T/n)^4, ≪ 1e-12 relative here
+  Eigen::Matrix3d Qd = Eigen::Matrix3d::Zero();
+  for (int i = 0; i <= n; ++i) {
+    const double t = T * i / n, w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    const Eigen::Matrix3d Ps = phiClosed(t, tau);
+    Qd += w * Ps * Eigen::Matrix3d(Qc) * Ps.transpose();
+  }
+  Qd *= T / (3.0 * n);
+  // The series is summed to rounding with no cancellation (decaying terms): a few ulp. The
+  // closed form's Φ_02 = τ(T − τ(1 − e^(−T/τ))) itself cancels ~5 digits (τ²/T = 9e4 × ulp,
+  // ~1e-11), the quadrature's error is ~1e-13: the bounds of the Van Loan check above.
+  CHECK((s.Phi - Eigen::MatrixXd(Phi)).norm() <= 1e-10 * Phi.norm());
+  CHECK((s.Qd - Eigen::MatrixXd(Qd)).norm() <= 1e-9 * Qd.norm());
+
+  // 2) The filter's own continuous model (9 INS errors + bias, GM, random walk per axis, white
+  // noise) at a moving, tilted point: the series equals Van Loan's Padé result per entry, each
+  // entry measured against its own diagonal scale sqrt(Q_ii Q_jj) (the states span 12 orders of
+  // magnitude: metres to rad/s), to 1e-9 — scaling and squaring's forward error is ~1e-12 of the
+  // largest entries, so the looser bound leaves room for it, not for a wrong term.
+  FilterSensorModel m;
+  for (int i = 0; i < 3; ++i) {
+    m.gyro[i].whiteDensity = 0.15 * kRadPerDeg / 60.0;
+    m.gyro[i].blocks = {biasState(10 * kRadPerDeg / 3600), gaussMarkovState(20 * kRadPerDeg / 3600, 200),
+                        randomWalkState(3 * kRadPerDeg / 3600 / 60)};
+    m.accel[i].whiteDensity = 0.1 / 60.0;
+    m.accel[i].blocks = {biasState(0.01), gaussMarkovState(0.02, 300), randomWalkState(1e-5)};
+  }
+  const sinsim::nav::Earth earth;
+  ErrorStateFilter filter(earth, m, FilterOptions{});
+  sinsim::nav::InsErrorPoint p;
+  p.lat = 0.8;
+  p.h = 500.0;
+  p.v_n = sinsim::nav::Vec3(12.0, -5.0, 0.3);
+  p.f_n = sinsim::nav::Vec3(1.5, -2.0, -9.81);
+  p.C_nb = Eigen::AngleAxisd(0.7, sinsim::nav::Vec3(0.2, -0.3, 1.0).normalized()).toRotationMatrix();
+  Eigen::MatrixXd Ff, Qf;
+  filter.continuousModel(p, Ff, Qf);
+  REQUIRE(Ff.rows() == 27);
+  const DiscreteSystem a = discretize(Ff, Qf, 1.0), b = vanLoan(Ff, Qf, 1.0);
+  const Eigen::VectorXd scale = b.Qd.diagonal().cwiseSqrt();
+  double worstPhi = 0.0, worstQ = 0.0;
+  for (int i = 0; i < 27; ++i)
+    for (int j = 0; j < 27; ++j) {
+      // Φ_ij maps state j to state i: compare it in units of state i per state j.
+      worstPhi = std::max(worstPhi, std::abs(a.Phi(i, j) - b.Phi(i, j)) * scale(j) / scale(i));
+      worstQ = std::max(worstQ, std::abs(a.Qd(i, j) - b.Qd(i, j)) / (scale(i) * scale(j)));
+    }
+  std::printf("series vs Van Loan, 27 states: worst scaled difference Phi %.2e, Qd %.2e\n", worstPhi,
+              worstQ);
+  CHECK(worstPhi < 1e-9);
+  CHECK(worstQ < 1e-9);
+
+  // 3) Fast processes (GM τ = 20 ms and 3 ms: |F_ii| T = 50 and 333, where Van Loan's exp(−F T)
+  // is e^333 and overflows): halved steps and doublings against the closed form and Simpson, with
+  // n = 200000 (Simpson's error ∝ (T/(n τ))^4 ~ 3e-9 relative at τ = 3 ms, hence 1e-7).
+  for (double fastTau : {0.02, 0.003}) {
+    Eigen::MatrixXd F2 = F, Qc2 = Qc;
+    F2(2, 2) = -1.0 / fastTau;
+    Qc2(2, 2) = 2.0 * sigmaB * sigmaB / fastTau;
+    const DiscreteSystem c = discretize(F2, Qc2, T);
+    const Eigen::Matrix3d Phi2 = phiClosed(T, fastTau);
+    const int n2 = 200000;
+    Eigen::Matrix3d Qd2 = Eigen::Matrix3d::Zero();
+    for (int i = 0; i <= n2; ++i) {
+      const double t = T * i / n2, w = (i == 0 || i == n2) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+      const Eigen::Matrix3d Ps = phiClosed(t, fastTau);
+      Qd2 += w * Ps * Eigen::Matrix3d(Qc2) * Ps.transpose();
+    }
+    Qd2 *= T / (3.0 * n2);
+    INFO("tau = " << fastTau);
+    CHECK(c.Phi.allFinite());
+    CHECK((c.Phi - Eigen::MatrixXd(Phi2)).norm() <= 1e-10 * Phi2.norm());
+    for (int i = 0; i < 3; ++i)  // each entry in its own scale (the bias variance is tiny)
+      for (int j = 0; j < 3; ++j)
+        CHECK(std::abs(c.Qd(i, j) - Qd2(i, j)) <= 1e-7 * std::sqrt(Qd2(i, i) * Qd2(j, j)));
+  }
 }

@@ -1,0 +1,70 @@
+// Aided Monte Carlo throughput on ONE core: bench/car-10min-aided.yaml (10 min, 100 Hz IMU, 1 Hz
+// GNSS, 30 s and 60 s outages, filter with 9 + 18 states from bench/aided-model.yaml) against the
+// same scenario navigated free-inertially (aiding keys cleared, same IMU errors). The brief asks a
+// 1000-run Monte Carlo of the default aided scenario in under a minute on one core; the counters
+// give the CPU time per run and that projection (cpu_s_per_1000_runs), and the ratio aided/free
+// follows from the two benchmarks' cpu_ms_per_run. CPU time of the process, since the machine
+// may be shared; the reference (ideal IMU + truth) is built once outside the timing.
+//
+//   cmake --build build --target bench_aided_mc && build/bench/bench_aided_mc
+//   build/bench/bench_aided_mc --benchmark_filter=Full    # the whole 1000 runs (minutes)
+#include <benchmark/benchmark.h>
+
+#include <time.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "sim/montecarlo.hpp"
+#include "sim/scenario.hpp"
+
+using namespace sinsim;
+
+namespace {
+
+double cpuTime() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+void runBatch(benchmark::State& state, bool aided, std::uint64_t runs) {
+  sim::Scenario sc =
+      sim::loadScenario(std::string(SINSIM_SOURCE_DIR) + "/bench/car-10min-aided.yaml");
+  if (!aided) sc.aiding = {};
+  const sim::Reference ref = sim::buildReference(sc);
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("sinsim_bench_aided_mc_" + std::to_string(::getpid())))
+                              .string();
+  double cpu = 0, steps = 0;
+  for (auto _ : state) {
+    std::filesystem::remove_all(dir);
+    const double c0 = cpuTime();
+    sim::McOptions opt;
+    opt.runs = runs;
+    opt.seed = 1;
+    opt.threads = 1;
+    opt.outDir = dir;
+    const sim::McResult r = sim::runMonteCarlo(ref, {{"m", sc.errors, "m"}}, opt);
+    if (!r.complete) state.SkipWithError("batch incomplete");
+    cpu += cpuTime() - c0;
+    steps += double(runs) * double(ref.samples.size());
+  }
+  std::filesystem::remove_all(dir);
+  const double perRun = cpu / double(state.iterations()) / double(runs);
+  state.counters["cpu_ms_per_run"] = 1e3 * perRun;
+  state.counters["cpu_s_per_1000_runs"] = 1e3 * perRun;
+  state.counters["imu_epochs_per_cpu_s"] = steps / cpu;
+}
+
+void BM_AidedMc(benchmark::State& s) { runBatch(s, true, std::uint64_t(s.range(0))); }
+void BM_FreeMc(benchmark::State& s) { runBatch(s, false, std::uint64_t(s.range(0))); }
+void BM_AidedMcFull(benchmark::State& s) { runBatch(s, true, 1000); }
+BENCHMARK(BM_AidedMc)->Arg(40)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_FreeMc)->Arg(40)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_AidedMcFull)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

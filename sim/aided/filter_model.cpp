@@ -1,0 +1,100 @@
+#include "sim/aided/filter_model.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "errormodels/effect.hpp"
+
+namespace sinsim::sim::aided {
+namespace {
+
+using errormodels::EffectList;
+using errormodels::EffectSpec;
+using errormodels::Sensor;
+
+const char* kSupported = "white, bias, random_walk, gauss_markov, ar";
+
+void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
+  out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
+}
+
+// Adds one effect of an axis to the filter's model of that axis.
+void addEffect(const EffectSpec& e, SensorAxisModel& axis, std::vector<Diagnostic>& problems) {
+  using errormodels::valueOr;
+  try {
+    if (e.type == "white") {
+      const double N = errormodels::whiteDensityOf(e);
+      axis.whiteDensity = std::sqrt(axis.whiteDensity * axis.whiteDensity + N * N);
+    } else if (e.type == "bias") {
+      const double value = valueOr(e, "value", 0.0), sigma = valueOr(e, "sigma", 0.0);
+      if (value == 0.0 && sigma == 0.0) return;  // a known zero: no state to carry
+      StateBlock b = biasState(sigma);
+      b.x0(0) = value;
+      axis.blocks.push_back(std::move(b));
+    } else if (e.type == "random_walk") {
+      axis.blocks.push_back(randomWalkState(valueOr(e, "K", NAN)));
+    } else if (e.type == "gauss_markov") {
+      axis.blocks.push_back(gaussMarkovState(valueOr(e, "sigma", NAN), valueOr(e, "tau", NAN)));
+    } else if (e.type == "ar") {
+      axis.blocks.push_back(arState(errormodels::valuesOf(e, "a"),
+                                    errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));
+    } else {
+      problem(problems, e,
+              std::string("the GNSS/INS filter has no states for this effect (it carries ") +
+                  kSupported + "); leave it out of the filter's model or set enabled: no");
+    }
+  } catch (const InputError& err) {
+    problem(problems, e, err.what());
+  }
+}
+
+}  // namespace
+
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
+                                      std::vector<Diagnostic>& problems) {
+  FilterSensorModel m;
+  for (Sensor s : {Sensor::gyro, Sensor::accel}) {
+    const errormodels::SensorSpec& ss = spec.sensor(s);
+    for (const EffectSpec& e : ss.triad)
+      if (e.enabled)
+        problem(problems, e,
+                "the GNSS/INS filter has no triad states (scale factor, misalignment, "
+                "g-sensitivity); leave it out of the filter's model or set enabled: no");
+    for (int axis = 0; axis < 3; ++axis) {
+      SensorAxisModel& am = s == Sensor::gyro ? m.gyro[axis] : m.accel[axis];
+      std::vector<Diagnostic> repeated;  // an `all` effect's problem is reported once, at x
+      for (EffectList l : {EffectList::all, errormodels::axisList(axis)})
+        for (const EffectSpec& e : ss.list(l))
+          if (e.enabled) addEffect(e, am, axis > 0 && l == EffectList::all ? repeated : problems);
+    }
+  }
+  return m;
+}
+
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec) {
+  std::vector<Diagnostic> problems;
+  FilterSensorModel m = filterModelFromSpec(spec, problems);
+  if (!problems.empty()) throw ConfigError(problems);
+  return m;
+}
+
+bool operator==(const StateBlock& a, const StateBlock& b) {
+  auto same = [](const auto& x, const auto& y) {
+    return x.rows() == y.rows() && x.cols() == y.cols() && x == y;
+  };
+  return a.name == b.name && a.size == b.size && a.discrete == b.discrete &&
+         a.period == b.period && same(a.F, b.F) && same(a.Qc, b.Qc) && same(a.A, b.A) &&
+         same(a.Qs, b.Qs) && same(a.c, b.c) && same(a.P0, b.P0) && same(a.x0, b.x0);
+}
+
+bool operator==(const SensorAxisModel& a, const SensorAxisModel& b) {
+  return a.whiteDensity == b.whiteDensity && a.blocks == b.blocks;
+}
+
+bool operator==(const FilterSensorModel& a, const FilterSensorModel& b) {
+  for (int i = 0; i < 3; ++i)
+    if (!(a.gyro[i] == b.gyro[i] && a.accel[i] == b.accel[i])) return false;
+  return true;
+}
+
+}  // namespace sinsim::sim::aided

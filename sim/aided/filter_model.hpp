@@ -1,0 +1,39 @@
+// The filter's sensor-error states from an error-model spec (the `filter: {model: ...}` of a
+// scenario; docs/aided.md, "The filter's model"). The one place that turns effects into filter
+// state blocks (sensor_states.hpp), per sensor axis, from the axis's own list and `all`:
+//   white          → no state: its density N adds N² to the axis's white-noise density
+//                    (`sigma` at `rate`: N = sigma/sqrt(rate), the density of the held sequence)
+//   bias           → 1 constant state, prior mean `value`, prior sigma `sigma`
+//   random_walk    → 1 random-walk state with K, starting at 0 (exact without a rate; with a
+//                    `rate` the held discrete walk is modelled by the continuous walk of the same K)
+//   gauss_markov   → 1 state σ, τ (with a `rate`: the held discrete GM, φ = exp(−h/τ), by the
+//                    continuous GM of the same σ, τ)
+//   ar             → p companion states at the model's own rate
+// Disabled effects (`enabled: no`) are skipped. Every other effect (triad scale factor,
+// misalignment, g-sensitivity; bias_instability, ramp, sinusoid, temperature, warmup, outliers,
+// quantization) has no filter state here and is refused, naming the model file, line and key.
+#pragma once
+
+#include <vector>
+
+#include "common/error.hpp"
+#include "errormodels/model_spec.hpp"
+#include "sim/aided/error_state_filter.hpp"
+
+namespace sinsim::sim::aided {
+
+/// The filter's sensor model of `spec`. Problems (effects the filter cannot represent) are
+/// appended to `problems` with the effect's file, line and key path; the returned model then holds
+/// the effects that could be converted.
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
+                                      std::vector<Diagnostic>& problems);
+
+/// The same, throwing ConfigError with every problem when there is any.
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec);
+
+/// Exact equality of two state blocks (every matrix entry, rate and name).
+bool operator==(const StateBlock& a, const StateBlock& b);
+bool operator==(const SensorAxisModel& a, const SensorAxisModel& b);
+bool operator==(const FilterSensorModel& a, const FilterSensorModel& b);
+
+}  // namespace sinsim::sim::aided

@@ -1,0 +1,171 @@
+// The filter's sensor states from a model file (`filter: {model: FILE}`): the same filter from a
+// file (relative to the scenario), from the same model inline, and from the state blocks built by
+// hand with the SI values worked out here from the units; effects the filter cannot carry are
+// refused naming the model file, line and key.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "common/constants.hpp"
+#include "common/error.hpp"
+#include "sim/aided/filter_model.hpp"
+#include "sim/scenario.hpp"
+#include "test_support.hpp"
+
+using namespace sinsim;
+using namespace sinsim::sim::aided;
+
+namespace {
+
+const char* kScenario = R"(
+name: fm
+start: {latitude: 45 deg, longitude: 7 deg, height: 300 m, heading: 0 deg}
+imu_rate: 100 Hz
+segments:
+  - {type: static, duration: 20 s}
+gnss: {rate: 1 Hz, position_sigma: 1 m}
+)";
+
+// Every supported effect: white (density and sigma at a rate), bias (value + sigma), random walk,
+// Gauss-Markov, AR(1) by output sigma; `all` and an axis's own list; a disabled unsupported effect.
+const char* kModel = R"(gyro:
+  all:
+    - {type: white, density: 0.15 deg/sqrt(h)}
+    - {type: gauss_markov, sigma: 20 deg/h, tau: 200 s}
+  x:
+    - {type: white, sigma: 0.01 deg/s, rate: 100 Hz}
+    - {type: ar, a: [-0.9], output_sigma: 0.02 deg/s, rate: 10 Hz}
+    - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s], enabled: no}
+accel:
+  all:
+    - {type: bias, value: 1 mg, sigma: 2 mg}
+    - {type: random_walk, K: 0.05 m/s/h/sqrt(h)}
+)";
+
+// The same model by hand, SI from the units: 1 deg = π/180 rad, 1 h = 3600 s, 1 mg = 9.80665e-3
+// m/s² (standard gravity, as the unit table defines g).
+FilterSensorModel byHand() {
+  const double deg = kPi / 180.0, g0 = 9.80665;
+  const double Nall = 0.15 * deg / 60.0;  // deg/sqrt(h) → rad/sqrt(s): / sqrt(3600)
+  const double Nx = 0.01 * deg / 10.0;    // sigma / sqrt(rate) = 0.01 deg/s / sqrt(100 Hz)
+  FilterSensorModel m;
+  for (int i = 0; i < 3; ++i) {
+    m.gyro[i].whiteDensity = Nall;
+    m.gyro[i].blocks = {gaussMarkovState(20 * deg / 3600, 200)};
+    StateBlock b = biasState(2e-3 * g0);
+    b.x0(0) = 1e-3 * g0;
+    m.accel[i].blocks = {b, randomWalkState(0.05 / 3600 / 60)};
+  }
+  m.gyro[0].whiteDensity = std::sqrt(Nall * Nall + Nx * Nx);
+  // AR(1) y = 0.9 y + e: var y = σe² / (1 − 0.81), so σe = output sigma · sqrt(0.19).
+  m.gyro[0].blocks.push_back(arState({-0.9}, 0.02 * deg * std::sqrt(0.19), 10.0));
+  return m;
+}
+
+// Entry by entry to 1e-12 relative: the unit conversions round differently from the hand-written
+// products (a few ulp), a wrong conversion or placement is off by orders of magnitude.
+bool close(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return false;
+  for (Eigen::Index i = 0; i < a.size(); ++i)
+    if (std::abs(a.data()[i] - b.data()[i]) > 1e-12 * std::max(std::abs(b.data()[i]), 1e-300))
+      return false;
+  return true;
+}
+
+void requireClose(const FilterSensorModel& a, const FilterSensorModel& b) {
+  for (int i = 0; i < 6; ++i) {
+    const SensorAxisModel& x = i < 3 ? a.gyro[i] : a.accel[i - 3];
+    const SensorAxisModel& y = i < 3 ? b.gyro[i] : b.accel[i - 3];
+    INFO("axis " << i);
+    CHECK(std::abs(x.whiteDensity - y.whiteDensity) <= 1e-12 * y.whiteDensity);
+    REQUIRE(x.blocks.size() == y.blocks.size());
+    for (std::size_t k = 0; k < x.blocks.size(); ++k) {
+      const StateBlock &p = x.blocks[k], &q = y.blocks[k];
+      INFO("block " << k << " " << q.name);
+      CHECK(p.name == q.name);
+      CHECK(p.discrete == q.discrete);
+      CHECK(p.period == q.period);
+      for (auto [u, v] : {std::pair(&p.F, &q.F), {&p.Qc, &q.Qc}, {&p.A, &q.A}, {&p.Qs, &q.Qs},
+                          {&p.P0, &q.P0}})
+        CHECK(close(*u, *v));
+      CHECK(close(p.x0, q.x0));
+      CHECK(close(p.c, q.c));
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("filter model file: equal to the same model inline and to the states built by hand") {
+  const auto dir = test::freshTempDir("sinsim-filter-model");
+  test::writeText(dir / "filt.yaml", kModel);
+  const sim::Scenario fromFile = sim::parseScenario(
+      std::string(kScenario) + "filter: {model: filt.yaml}\n", "fm.yaml", dir.string());
+  REQUIRE(fromFile.aiding.filter.enabled);
+  CHECK(fromFile.aiding.filter.model == (dir / "filt.yaml").string());
+
+  // The same model inline, indented under filter.model.
+  std::string inlineModel = "filter:\n  model:\n";
+  for (std::size_t a = 0, b; a < std::string(kModel).size(); a = b + 1) {
+    b = std::string(kModel).find('\n', a);
+    inlineModel += "    " + std::string(kModel).substr(a, b - a) + "\n";
+  }
+  const sim::Scenario inl = sim::parseScenario(std::string(kScenario) + inlineModel, "fm.yaml");
+  CHECK(inl.aiding.filter.model == "inline");
+  CHECK(fromFile.aiding.filter.sensors == inl.aiding.filter.sensors);  // bit for bit
+
+  const FilterSensorModel& m = fromFile.aiding.filter.sensors;
+  CHECK(m.stateCount() == 3 * 1 + 1 + 3 * 2);  // GM per gyro axis, AR(1) on x, bias + RW per accel
+  requireClose(m, byHand());
+}
+
+TEST_CASE("filter model file: effects without filter states are refused with file, line, key") {
+  const auto dir = test::freshTempDir("sinsim-filter-model-bad");
+  test::writeText(dir / "bad.yaml", R"(gyro:
+  triad:
+    - {type: scale_factor, value: 100 ppm}
+  all:
+    - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s]}
+accel:
+  y:
+    - {type: ramp, slope: 1 mg/h}
+    - {type: white, density: 0.1 m/s/sqrt(h)}
+)");
+  try {
+    sim::parseScenario(std::string(kScenario) + "filter: {model: bad.yaml}\n", "fm.yaml",
+                       dir.string());
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    INFO(m);
+    // The scenario's key and, inside the message, the model file's line and key of each effect.
+    CHECK(m.find("fm.yaml:") != std::string::npos);
+    CHECK(m.find("filter.model") != std::string::npos);
+    CHECK(m.find("bad.yaml:3: gyro.triad[0]: scale_factor:") != std::string::npos);
+    CHECK(m.find("bad.yaml:5: gyro.all[0]: bias_instability:") != std::string::npos);
+    CHECK(m.find("bad.yaml:8: accel.y[0]: ramp:") != std::string::npos);
+    CHECK(m.find("accel.y[1]") == std::string::npos);  // the supported white is not blamed
+    // bias_instability sits in `all`: reported once, not once per axis.
+    CHECK(m.find("bias_instability") == m.rfind("bias_instability"));
+  }
+}
+
+TEST_CASE("filter model: a missing model key and a model file that does not parse") {
+  const auto dir = test::freshTempDir("sinsim-filter-model-missing");
+  test::writeText(dir / "broken.yaml", "gyro:\n  x: [{type: white, density: -1 deg/sqrt(h)}]\n");
+  for (const char* filter : {"filter: {}\n", "filter: {model: broken.yaml}\n"}) {
+    try {
+      sim::parseScenario(std::string(kScenario) + filter, "fm.yaml", dir.string());
+      FAIL("expected a ConfigError");
+    } catch (const ConfigError& e) {
+      const std::string m = e.what();
+      INFO(m);
+      CHECK(m.find("filter") != std::string::npos);
+      if (std::string(filter).find("broken") != std::string::npos)
+        CHECK(m.find("broken.yaml:2: gyro.x[0].density") != std::string::npos);
+      // A present but broken filter is not also reported as a missing one.
+      CHECK(m.find("GNSS fixes need a filter") == std::string::npos);
+    }
+  }
+}
