@@ -1,6 +1,7 @@
 #include "errormodels/identify.hpp"
 
 #include "errormodels/model_io.hpp"
+#include "errormodels/channels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,24 +33,8 @@ std::string friendly(double si, fit::SensorSignal s) {
   return fmt(si / kStandardGravity * 1e3) + " mg";
 }
 
-struct Channel {
-  std::string name;
-  fit::SensorSignal sensor;
-  int axis;
-};
-
-const std::vector<Channel>& allChannels() {
-  static const std::vector<Channel> c{{"gx", fit::SensorSignal::Gyro, 0},
-                                      {"gy", fit::SensorSignal::Gyro, 1},
-                                      {"gz", fit::SensorSignal::Gyro, 2},
-                                      {"ax", fit::SensorSignal::Accel, 0},
-                                      {"ay", fit::SensorSignal::Accel, 1},
-                                      {"az", fit::SensorSignal::Accel, 2}};
-  return c;
-}
-
-const std::vector<double>& channelData(const Record& r, const Channel& c) {
-  return c.sensor == fit::SensorSignal::Gyro ? r.gyro[c.axis] : r.accel[c.axis];
+fit::SensorSignal signalOf(Sensor s) {
+  return s == Sensor::gyro ? fit::SensorSignal::Gyro : fit::SensorSignal::Accel;
 }
 
 /// Points of an Allan curve usable by the term fit: finite, positive dev and EDF, and
@@ -480,22 +465,20 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   if (!(opt.confidence > 0.0 && opt.confidence < 1.0))
     throw InputError("confidence: expected a level in (0, 1)");
 
-  std::vector<Channel> chans;
+  std::vector<int> chans;  // indices into kRecordChannels
   if (opt.axes.empty()) {
-    for (const auto& c : allChannels())
+    for (int c = 0; c < int(kRecordChannels.size()); ++c)
       if (!channelData(record, c).empty()) chans.push_back(c);
     if (chans.empty()) throw InputError(record.source + ": no gx/gy/gz/ax/ay/az column to fit");
   } else {
     for (const auto& name : opt.axes) {
-      auto it = std::find_if(allChannels().begin(), allChannels().end(),
-                             [&](const Channel& c) { return c.name == name; });
-      if (it == allChannels().end())
-        throw InputError("axis \"" + name + "\": expected one of gx, gy, gz, ax, ay, az");
-      if (channelData(record, *it).empty())
+      const std::optional<int> c = findChannel(name);
+      if (!c) throw InputError("axis \"" + name + "\": expected one of " + kChannelList);
+      if (channelData(record, *c).empty())
         throw InputError(record.source + ": axis \"" + name + "\" is not in the record");
-      if (std::any_of(chans.begin(), chans.end(), [&](const Channel& c) { return c.name == name; }))
+      if (std::find(chans.begin(), chans.end(), *c) != chans.end())
         throw InputError("axis \"" + name + "\" given twice");
-      chans.push_back(*it);
+      chans.push_back(*c);
     }
   }
 
@@ -522,12 +505,14 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   out.skipped = skip;
   out.options = opt;
 
-  for (const Channel& c : chans) withContext(record.source + ": channel " + c.name, [&] {
-    const std::vector<double>& src = channelData(record, c);
+  for (const int ci : chans) withContext(record.source + ": channel " + kRecordChannels[ci].name, [&] {
+    const Channel& c = kRecordChannels[ci];
+    const fit::SensorSignal sensor = signalOf(c.sensor);
+    const std::vector<double>& src = channelData(record, ci);
     std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip), src.end());
     AxisIdentification ax;
     ax.channel = c.name;
-    ax.sensor = c.sensor;
+    ax.sensor = sensor;
     ax.axis = std::string(1, "xyz"[c.axis]);
     ax.samples = n;
     ax.rate_hz = record.rate_hz;
@@ -584,20 +569,20 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       if (!den.empty()) ax.arDenoised = fit::selectArOrder(den, os);
     }
 
-    ax.written.sensor = c.sensor;
+    ax.written.sensor = sensor;
     ax.written.axis = ax.axis;
-    ax.written.notes.push_back("mean removed (not written): " + friendly(mean, c.sensor) + " = " +
-                               fmt(mean, 8) + " (SI); sd " + friendly(ax.stddev, c.sensor));
+    ax.written.notes.push_back("mean removed (not written): " + friendly(mean, sensor) + " = " +
+                               fmt(mean, 8) + " (SI); sd " + friendly(ax.stddev, sensor));
     if (ax.correlationTime)
       ax.written.notes.push_back(std::string("1/e correlation time of the ") +
                                  (den.empty() ? "raw" : "denoised") + " ACF: " +
                                  fmt(*ax.correlationTime * 1e3, 4) + " ms");
     if (ax.denoise)
       ax.written.notes.push_back("db5 denoise: level " + std::to_string(ax.denoise->level) +
-                                 ", noise sigma " + friendly(ax.denoise->sigma, c.sensor) +
+                                 ", noise sigma " + friendly(ax.denoise->sigma, sensor) +
                                  ", finest threshold " +
                                  friendly(ax.denoise->thresholds.empty() ? 0.0 : ax.denoise->thresholds[0],
-                                          c.sensor));
+                                          sensor));
 
     switch (opt.kind) {
       case IdentifyKind::Ar: {
@@ -615,7 +600,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         if (opt.kind == IdentifyKind::Gm) {
           ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
           ax.written.notes.push_back("for comparison, GM from the ACF (not written): sigma " +
-                                     friendly(ax.gaussMarkov->sigma, c.sensor) + ", tau " +
+                                     friendly(ax.gaussMarkov->sigma, sensor) + ", tau " +
                                      fmt(ax.gaussMarkov->tau, 4) + " s");
         }
         fit::LatentFitOptions lo;
@@ -628,7 +613,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.latent = fit::fitLatentModel(x, lo);
         ax.kind = opt.kind;
         ax.written.latent = ax.latent;
-        for (const auto& w : ax.latent->warnings) out.warnings.push_back(c.name + ": " + w);
+        for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
         break;
       }
       case IdentifyKind::Allan: {
@@ -651,8 +636,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
                       ") on the " + (opt.arOnDenoised ? "raw" : "denoised") + " record: a = [";
       for (std::size_t i = 1; i < other.fit.a.size(); ++i)
         s += (i > 1 ? ", " : "") + fmt(other.fit.a[i], 6);
-      s += "], driving sigma " + friendly(std::sqrt(other.fit.drivingVariance), c.sensor) +
-           " (written: " + friendly(std::sqrt(ax.written.ar->drivingVariance), c.sensor) + ")";
+      s += "], driving sigma " + friendly(std::sqrt(other.fit.drivingVariance), sensor) +
+           " (written: " + friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
       ax.written.notes.push_back(s);
     }
     out.axes.push_back(std::move(ax));

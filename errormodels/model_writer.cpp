@@ -18,10 +18,8 @@
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels {
-namespace {
 
-// The unit a value of dimension d is written in, for a sensor; "" for a plain number.
-std::string unitFor(Dimension d, Sensor sensor) {
+std::string displayUnit(Dimension d, Sensor sensor) {
   const bool gyro = sensor == Sensor::gyro;
   const Dimension sig = gyro ? Dimension::angularRate() : Dimension::acceleration();
   const Dimension t = Dimension::time(), T = Dimension::temperature();
@@ -40,9 +38,11 @@ std::string unitFor(Dimension d, Sensor sensor) {
   if (d == T) return "degC";
   if (d == Dimension::angularRate() / Dimension::acceleration()) return "deg/s/g";
   // The other sensor's signal units (a value of a fixed dimension, e.g. in a hand-built spec).
-  if (gyro) return unitFor(d, Sensor::accel);
+  if (gyro) return displayUnit(d, Sensor::accel);
   throw InputError("model writer: no unit to write a value of dimension " + d.siUnit());
 }
+
+namespace {
 
 std::string number(double v, int digits) {
   char buf[64];
@@ -51,7 +51,7 @@ std::string number(double v, int digits) {
 }
 
 std::string value(double si, Dimension d, Sensor sensor, int digits) {
-  const std::string unit = unitFor(d, sensor);
+  const std::string unit = displayUnit(d, sensor);
   if (unit.empty()) return number(si, digits);
   // A lone temperature is absolute: degC with its offset (parseQuantity adds 273.15 back).
   const double shown = unit == "degC" ? si - 273.15 : si / parseUnit(unit).si;
