@@ -401,31 +401,6 @@ void parseVertical(const ConfigNode& root, Scenario& sc) {
   sc.strapdown.dampingTimeConstant = tau;
 }
 
-void parseTemperature(const ConfigNode& root, Scenario& sc, double duration) {
-  const ConfigNode t = root["temperature"];
-  if (!t.exists()) return;
-  TemperatureProfile& p = sc.temperature;
-  if (t.isScalar()) {
-    p.start = t.asQuantity(D::temperature()).value_or(NAN);
-    p.rate = 0.0;
-  } else if (t.isMap()) {
-    t.allowKeys({"start", "end", "rate"});
-    p.start = t.quantity("start", D::temperature());
-    if (t.has("end") && t.has("rate")) {
-      t["rate"].error("give end or rate, not both");
-    } else if (t.has("end")) {
-      const double end = t.quantity("end", D::temperature());
-      p.rate = duration > 0.0 ? (end - p.start) / duration : 0.0;
-    } else {
-      p.rate = t.quantity("rate", D::temperature() / D::time(), 0.0);
-    }
-  } else {
-    t.error("expected a temperature (\"25 degC\") or a map {start, end} or {start, rate}");
-  }
-  p.present = true;
-  if (std::isfinite(p.start)) t.check(p.start > 0.0, "expected an absolute temperature above 0 K");
-}
-
 errormodels::ImuErrorModel parseErrors(const ConfigNode& root, const std::string& baseDir,
                                        std::vector<Diagnostic>& foreign) {
   const ConfigNode e = root["errors"];
@@ -497,7 +472,7 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
     layout(specs, c, sc.segments, "");
   }
 
-  parseTemperature(root, sc, sc.duration());
+  sc.temperature = readTemperature(root["temperature"], sc.duration());
   sc.aiding = aided::parseAiding(root, baseDir, sc.duration());
 
   std::vector<Diagnostic> foreign;
