@@ -20,7 +20,7 @@ double predictionGain(const fit::ArFit& f) {
 
 }  // namespace
 
-/// Auto (the rule, stated once here and in the README):
+/// Auto (the rule, stated once here and in docs/identify.md, "The auto rule"):
 ///  1. Fit all five Allan terms to the raw curve (GLS) — the white-noise-family description.
 ///  2. Screen for short correlation: Burg AR by the order criterion on the record; if step 1
 ///     detected a random walk, on the record minus its smoothed random-walk level (the composite

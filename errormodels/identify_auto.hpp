@@ -1,5 +1,5 @@
 // The `auto` kind of the identify pipeline: the rule that chooses between an AR model and the
-// Allan terms (stated in identify_auto.cpp above chooseAuto, and in the README). Internal to
+// Allan terms (stated in identify_auto.cpp above chooseAuto, and in docs/identify.md, "The auto rule"). Internal to
 // errormodels/identify*.cpp.
 #pragma once
 

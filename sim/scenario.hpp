@@ -1,6 +1,7 @@
 // A scenario: where the vehicle starts, how it moves (segments), how its IMU is sampled and
 // corrupted, and how the navigation runs. Read from YAML once, at the edge; everything inside
-// is SI. The file format is documented in README.md ("Simulate") and in scenarios/*.yaml.
+// is SI. The file format is documented in docs/simulate.md ("Scenario files") and in
+// scenarios/*.yaml.
 #pragma once
 
 #include <cstdint>

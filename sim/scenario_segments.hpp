@@ -1,6 +1,6 @@
 // The scenario's `segments:` list: each segment type's keys (a registry keyed by `type:`), the
 // parse into specs whose targets are still symbolic, and their layout in time from the start
-// state. Internal to sim/scenario*.cpp; the format is in README.md ("Simulate").
+// state. Internal to sim/scenario*.cpp; the format is in docs/simulate.md ("Scenario files").
 #pragma once
 
 #include <vector>
