@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "errormodels/effect.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels {
@@ -45,9 +46,7 @@ std::string displayUnit(Dimension d, Sensor sensor) {
 namespace {
 
 std::string number(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 std::string value(double si, Dimension d, Sensor sensor, int digits) {

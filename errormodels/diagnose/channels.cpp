@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -44,9 +45,7 @@ std::string quantity(double si, const char* unit) {
 }
 
 std::string num(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -43,9 +44,7 @@ std::string q(double si, const std::string& unit) {
 }
 
 std::string num(double v, int digits = 10) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 Sensor sensorOf(SensorSignal s) { return s == SensorSignal::Gyro ? Sensor::gyro : Sensor::accel; }
