@@ -157,7 +157,7 @@ sim::MeasuredOptions measuredOptions(const Args& a) {
 
 // The batch's outcome on the terminal (rank 0): damaged checkpoints, an interruption, or the
 // summary line and each model's headline.
-void printBatch(const sim::McBatch& batch, int size) {
+void printBatch(const sim::McCommandResult& batch, int size) {
   const sim::McResult& r = batch.result;
   const sim::McOptions& opt = batch.options;
   if (opt.partition.rank != 0) return;
@@ -259,7 +259,7 @@ int runMc(const Args& a) {
       };
     }
     std::signal(SIGINT, onSigint);
-    const sim::McBatch batch = sim::runMcBatch(req);
+    const sim::McCommandResult batch = sim::runMcBatch(req);
     std::signal(SIGINT, SIG_DFL);
     if (tty) std::fputs("\n", stderr);
     printBatch(batch, size);

@@ -11,7 +11,7 @@
 
 namespace sinsim::sim {
 
-McBatch runMcBatch(const McRequest& request) {
+McCommandResult runMcBatch(const McRequest& request) {
   // ---- the reference: a scenario, or a static one matching a measured record ------------------
   Scenario sc;
   std::string scenarioIdentity;
@@ -46,7 +46,7 @@ McBatch runMcBatch(const McRequest& request) {
     opt.measured = &measured;
   }
 
-  McBatch batch;
+  McCommandResult batch;
   batch.result = runMonteCarlo(ref, models, opt);
   opt.measured = nullptr;  // points into this frame
   batch.scenarioName = sc.name;

@@ -1,7 +1,7 @@
 // `sinsim mc` as one library call: the reference (a scenario file, or the static scenario of a
 // measured record, navigated once as the batch's measured participant), the models, the batch
 // (sim/montecarlo.hpp) and the headline numbers. The CLI parses options into an McRequest, calls
-// runMcBatch and prints the McBatch.
+// runMcBatch and prints the McCommandResult.
 #pragma once
 
 #include <cstddef>
@@ -27,7 +27,7 @@ struct McRequest {
   McOptions options;
 };
 
-struct McBatch {
+struct McCommandResult {
   std::string scenarioName;
   std::size_t modelCount = 0;
   McOptions options;       ///< as run (seed, outDir and bias window resolved)
@@ -39,6 +39,6 @@ struct McBatch {
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,
 /// a record without a model to compare with, and whatever the scenario, record, models and batch
 /// options refuse.
-McBatch runMcBatch(const McRequest& request);
+McCommandResult runMcBatch(const McRequest& request);
 
 }  // namespace sinsim::sim
