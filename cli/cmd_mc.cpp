@@ -10,8 +10,6 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -27,30 +25,17 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
-#include "sim/mc_models.hpp"
-#include "sim/mc_output.hpp"
-#include "sim/measured.hpp"
-#include "sim/montecarlo.hpp"
+#include "sim/mc_batch.hpp"
 #include "sim/nav_loop.hpp"
-#include "sim/scenario.hpp"
 
 namespace sinsim::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::atomic<bool> gInterrupted{false};
 
 extern "C" void onSigint(int) {
   gInterrupted.store(true);
   std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills at once (chunks on disk stay valid)
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 std::vector<std::string> splitList(const std::string& s) {
@@ -166,6 +151,45 @@ sim::MeasuredOptions measuredOptions(const Args& a) {
   return o;
 }
 
+// The batch's outcome on the terminal (rank 0): damaged checkpoints, an interruption, or the
+// summary line and each model's headline.
+void printBatch(const sim::McCommandResult& batch, int size) {
+  const sim::McResult& r = batch.result;
+  const sim::McOptions& opt = batch.options;
+  if (opt.partition.rank != 0) return;
+  if (!r.damaged.empty()) {
+    std::cerr << "sinsim mc: " << r.damaged.size()
+              << " damaged checkpoint(s) (checksum mismatch, truncated or unreadable) were "
+                 "recomputed:";
+    for (const auto& p : r.damaged) std::cerr << " " << p;
+    std::cerr << "\n";
+  }
+  const double steps = double(r.runsComputedAll) * double(batch.samples);
+  if (!r.complete) {
+    std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
+              << ") after " << r.runsComputed << " runs this session; "
+              << r.runsResumed + r.runsComputed << " of " << r.runsTotal
+              << " runs may be saved in " << opt.outDir
+              << "/runs. Continue with the same command and --resume.\n";
+    return;
+  }
+  std::cout << "sinsim mc: " << batch.scenarioName << ", " << batch.modelCount << " model(s) x "
+            << opt.runs << " runs" << (opt.budget ? " (+ budget variants)" : "") << " -> "
+            << opt.outDir << " (";
+  for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
+  std::cout << ")\n  " << r.runsComputedAll << " runs computed";
+  if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
+  if (!r.damaged.empty()) std::cout << " (" << r.damaged.size() << " damaged checkpoint(s) recomputed)";
+  std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
+            << " s CPU, " << r.threads << " thread(s)"
+            << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
+            << "; " << fmt(steps / std::max(r.wallTime, 1e-9) / 1e6, "%.2f")
+            << " M IMU steps/s\n";
+  for (const sim::McHeadline& h : batch.headlines)
+    std::cout << "  " << h.label << ": horizontal error at " << h.t << " s: CEP "
+              << fmt(h.cep, "%.4g") << " m, R95 " << fmt(h.r95, "%.4g") << " m\n";
+}
+
 int runMc(const Args& a) {
   int rank = 0, size = 1;
   sim::McPartition partition;
@@ -192,30 +216,13 @@ int runMc(const Args& a) {
   }
 #endif
   try {
-    // ---- the reference: a scenario, or a static one matching a measured record ------------------
-    sim::Scenario sc;
-    std::string scenarioIdentity;
-    std::optional<sim::MeasuredSetup> measuredSetup;
-    double biasWindow = a.biasWindow.empty() ? 0.0 : parseTime(a.biasWindow, "--bias-window");
-    if (!a.measured.empty()) {
-      if (!a.scenario.empty())
-        throw InputError("give either a scenario or --measured (the measured record defines a "
-                         "static scenario), not both");
-      if (a.models.empty()) throw InputError("--measured needs at least one --model to compare with");
-      measuredSetup = sim::prepareMeasured(measuredOptions(a));
-      sc = measuredSetup->scenario;
-      scenarioIdentity = measuredSetup->identity;
-      biasWindow = measuredSetup->biasWindow;
-    } else {
-      if (a.scenario.empty()) throw InputError("name a scenario file (or give --measured DATA.csv)");
-      sc = sim::loadScenario(a.scenario);
-      scenarioIdentity = slurp(a.scenario);
-    }
-    const std::vector<sim::McModel> models = sim::loadMcModels(a.models, sc, scenarioIdentity);
-
-    sim::McOptions opt;
+    sim::McRequest req;
+    req.scenarioPath = a.scenario;
+    if (!a.measured.empty()) req.measured = measuredOptions(a);
+    req.models = a.models;
+    req.seed = a.seed;
+    sim::McOptions& opt = req.options;
     opt.runs = a.runs;
-    opt.seed = a.seed ? *a.seed : sc.seed.value_or(0);
     opt.threads = a.threads;
     if (opt.threads == 0 && size > 1) {
       // Ranks sharing a machine share its cores.
@@ -226,21 +233,12 @@ int runMc(const Args& a) {
     if (!a.times.empty())
       for (const auto& t : splitList(a.times)) opt.times.push_back(parseTime(t, "--times"));
     opt.budget = a.budget;
-    opt.navigate.biasWindow = biasWindow;
+    opt.navigate.biasWindow = a.biasWindow.empty() ? 0.0 : parseTime(a.biasWindow, "--bias-window");
     opt.resume = a.resume;
-    opt.outDir = a.outDir.empty() ? (fs::path("out") / ("mc-" + sc.name)).string() : a.outDir;
-    opt.scenarioIdentity = scenarioIdentity;
+    opt.outDir = a.outDir;
     opt.interrupt = &gInterrupted;
     opt.stopAfterRuns = a.stopAfter;
     opt.partition = partition;
-
-    const sim::Reference ref = sim::buildReference(sc);
-
-    sim::McMeasured measured;
-    if (measuredSetup) {
-      measured = sim::navigateMeasured(*measuredSetup, ref, opt.navigate);
-      opt.measured = &measured;
-    }
 
     const bool tty = rank == 0 && !a.noProgress && ::isatty(2);
     if (tty) {
@@ -257,43 +255,11 @@ int runMc(const Args& a) {
       };
     }
     std::signal(SIGINT, onSigint);
-    const sim::McResult r = sim::runMonteCarlo(ref, models, opt);
+    const sim::McCommandResult batch = sim::runMcBatch(req);
     std::signal(SIGINT, SIG_DFL);
     if (tty) std::fputs("\n", stderr);
-
-    if (rank != 0) return r.complete ? 0 : 130;
-    if (!r.damaged.empty()) {
-      std::cerr << "sinsim mc: " << r.damaged.size()
-                << " damaged checkpoint(s) (checksum mismatch, truncated or unreadable) were "
-                   "recomputed:";
-      for (const auto& p : r.damaged) std::cerr << " " << p;
-      std::cerr << "\n";
-    }
-    const double steps = double(r.runsComputedAll) * double(ref.samples.size());
-    if (!r.complete) {
-      std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
-                << ") after " << r.runsComputed << " runs this session; "
-                << r.runsResumed + r.runsComputed << " of " << r.runsTotal
-                << " runs may be saved in " << opt.outDir
-                << "/runs. Continue with the same command and --resume.\n";
-      return 130;
-    }
-    std::cout << "sinsim mc: " << sc.name << ", " << models.size() << " model(s) x " << opt.runs
-              << " runs" << (opt.budget ? " (+ budget variants)" : "") << " -> " << opt.outDir
-              << " (";
-    for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
-    std::cout << ")\n  " << r.runsComputedAll << " runs computed";
-    if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
-    if (!r.damaged.empty()) std::cout << " (" << r.damaged.size() << " damaged checkpoint(s) recomputed)";
-    std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
-              << " s CPU, " << r.threads << " thread(s)"
-              << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
-              << "; " << fmt(steps / std::max(r.wallTime, 1e-9) / 1e6, "%.2f")
-              << " M IMU steps/s\n";
-    for (const sim::McHeadline& h : sim::mcHeadlines(ref, r, models.size()))
-      std::cout << "  " << h.label << ": horizontal error at " << h.t << " s: CEP "
-                << fmt(h.cep, "%.4g") << " m, R95 " << fmt(h.r95, "%.4g") << " m\n";
-    return 0;
+    printBatch(batch, size);
+    return batch.result.complete ? 0 : 130;
   } catch (...) {
 #ifdef SINSIM_HAVE_MPI
     if (size > 1) {

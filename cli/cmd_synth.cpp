@@ -52,7 +52,7 @@ int runSynth(const SynthOptions& o) {
   spec.lat = parseQuantityAs(o.latitude, Dimension::angle());
   spec.h = parseQuantityAs(o.height, Dimension::length());
   spec.rpy = parseAttitude(o.attitude);
-  const sim::RecordTemperature temperature(o.temperature, spec.duration);
+  const sim::TemperatureProfile temperature = sim::temperatureFromText(o.temperature, spec.duration);
   const long long n = sim::writeStaticRecord(model, spec, temperature, o.output);
   std::printf("wrote %s: %lld samples at %g Hz, model %s (%zu effects), seed %llu run %llu\n",
               o.output.c_str(), n, o.rate, model.source().c_str(), model.effectNames().size(),

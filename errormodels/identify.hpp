@@ -14,11 +14,11 @@
 //          flicker, random walk, drift), chosen by BIC; docs/fitting.md.
 //   Allan  IEEE 952 five-term fit (Q, N, B, K, R) of the Allan variance, correlated-point GLS;
 //          only detected terms are written.
-//   Auto   what the data ask for (the rule is stated in identify.cpp, above chooseAuto, and in the
-//          README): an AR model when the record has short correlation that white noise + Allan
-//          terms cannot carry, else the Allan terms alone; an AR + random walk composite when the
-//          long-tau Allan slope needs a random walk; bias instability / ramp from the long-tau
-//          Allan curve on top of an AR.
+//   Auto   what the data ask for (the rule is stated in identify_auto.cpp, above chooseAuto, and
+//          in docs/identify.md): an AR model when the record has short correlation that white
+//          noise + Allan terms cannot carry, else the Allan terms alone; an AR + random walk
+//          composite when the long-tau Allan slope needs a random walk; bias instability / ramp
+//          from the long-tau Allan curve on top of an AR.
 //
 // Bias. A static record's mean is the turn-on bias plus the projection of Earth rate (gyro) or
 // gravity (accelerometer); one record holds ONE draw of the turn-on bias, not its spread. The

@@ -27,6 +27,12 @@ ErrorModelSpec loadErrorModel(const std::string& path);
 /// Reads model text as if from the named file (tests, generated models); throws like loadErrorModel.
 ErrorModelSpec errorModelFromString(const std::string& text, const std::string& name);
 
+/// The unit the writer writes a value of dimension d in, for a sensor's effect: the table at the
+/// top of model_writer.cpp (deg/s and mg levels, deg/h/sqrt(h) walks, ...); "" for a plain number.
+/// Reports and the diagnosis print in the same units. Throws InputError for a dimension it has no
+/// unit for.
+std::string displayUnit(Dimension d, Sensor sensor);
+
 /// The model-file text of a spec. Throws InputError when a parameter cannot be written (an
 /// unknown effect type, a value of a dimension its schema does not accept).
 std::string errorModelYaml(const ErrorModelSpec& spec);

@@ -16,13 +16,12 @@
 
 #include "common/atomic_file.hpp"
 #include "errormodels/effect.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels {
-namespace {
 
-// The unit a value of dimension d is written in, for a sensor; "" for a plain number.
-std::string unitFor(Dimension d, Sensor sensor) {
+std::string displayUnit(Dimension d, Sensor sensor) {
   const bool gyro = sensor == Sensor::gyro;
   const Dimension sig = gyro ? Dimension::angularRate() : Dimension::acceleration();
   const Dimension t = Dimension::time(), T = Dimension::temperature();
@@ -41,14 +40,14 @@ std::string unitFor(Dimension d, Sensor sensor) {
   if (d == T) return "degC";
   if (d == Dimension::angularRate() / Dimension::acceleration()) return "deg/s/g";
   // The other sensor's signal units (a value of a fixed dimension, e.g. in a hand-built spec).
-  if (gyro) return unitFor(d, Sensor::accel);
+  if (gyro) return displayUnit(d, Sensor::accel);
   throw InputError("model writer: no unit to write a value of dimension " + d.siUnit());
 }
 
+namespace {
+
 std::string number(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 // A lone temperature is absolute: degC with its offset (parseQuantity adds 273.15 back).
@@ -57,14 +56,14 @@ double shownIn(double si, const std::string& unit) {
 }
 
 std::string value(double si, Dimension d, Sensor sensor, int digits) {
-  const std::string unit = unitFor(d, sensor);
+  const std::string unit = displayUnit(d, sensor);
   if (unit.empty()) return number(si, digits);
   return number(shownIn(si, unit), digits) + " " + unit;
 }
 
 // si as the reader reads back value(si, d, sensor, digits).
 double readBack(double si, Dimension d, Sensor sensor, int digits) {
-  const std::string unit = unitFor(d, sensor);
+  const std::string unit = displayUnit(d, sensor);
   const double printed = std::strtod(number(unit.empty() ? si : shownIn(si, unit), digits).c_str(), nullptr);
   if (unit.empty()) return printed;
   return unit == "degC" ? printed + 273.15 : printed * parseUnit(unit).si;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "common/atomic_file.hpp"
+#include "common/number_text.hpp"
 #include "sim/report/report.hpp"
 
 namespace sinsim {
@@ -20,9 +21,7 @@ const char* kAfter = "#2ca02c";   // improved model
 const char* kFail = "#d62728";    // failing ranges
 
 std::string fmt(double v, int digits = 3) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
+  return significant(v, digits);
 }
 
 std::vector<double> scaled(const std::vector<double>& v, double f) {

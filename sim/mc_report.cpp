@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/constants.hpp"
+#include "common/number_text.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/report/report.hpp"
@@ -13,9 +14,7 @@ namespace {
 
 std::string num(double v, int sig = 4) {
   if (!std::isfinite(v)) return "–";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", sig, v);
-  return buf;
+  return significant(v, sig);
 }
 
 std::string pText(double p) {

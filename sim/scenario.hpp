@@ -1,6 +1,7 @@
 // A scenario: where the vehicle starts, how it moves (segments), how its IMU is sampled and
 // corrupted, and how the navigation runs. Read from YAML once, at the edge; everything inside
-// is SI. The file format is documented in README.md ("Simulate") and in scenarios/*.yaml.
+// is SI. The file format is documented in docs/simulate.md ("Scenario files") and in
+// scenarios/*.yaml.
 #pragma once
 
 #include <cstdint>
@@ -12,17 +13,9 @@
 #include "nav/strapdown.hpp"
 #include "sim/aided/aiding_config.hpp"
 #include "sim/motion.hpp"
+#include "sim/temperature.hpp"
 
 namespace sinsim::sim {
-
-/// Sensor temperature over the run (the value handed to ImuCorruptor::corrupt).
-struct TemperatureProfile {
-  bool present = false;
-  double start = NAN;  // temperature at t = 0 [K]
-  double rate = 0.0;   // linear ramp [K/s]
-  /// Temperature at time t [s] [K]; NaN when the scenario has no temperature profile.
-  double at(double t) const { return present ? start + rate * t : NAN; }
-};
 
 struct Scenario {
   std::string name;         // `name:` or the file stem

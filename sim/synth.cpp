@@ -26,73 +26,8 @@ char* put(char* p, char* end, double v, int precision) {
 
 }  // namespace
 
-RecordTemperature::RecordTemperature(const std::string& spec, double duration)
-    : duration_(duration) {
-  const auto dots = spec.find("..");
-  if (dots != std::string::npos) {
-    try {
-      t0_ = parseQuantityAs(spec.substr(0, dots), Dimension::temperature());
-      t1_ = parseQuantityAs(spec.substr(dots + 2), Dimension::temperature());
-    } catch (const InputError& e) {
-      throw InputError("--temperature \"" + spec + "\": a ramp is \"20 degC..45 degC\": " +
-                       e.what());
-    }
-    kind_ = Kind::ramp;
-    return;
-  }
-  try {
-    t0_ = parseQuantityAs(spec, Dimension::temperature());
-    kind_ = Kind::constant;
-    return;
-  } catch (const InputError& e) {
-    std::ifstream probe(spec);
-    if (!probe)
-      throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
-                       "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
-  }
-  readCsv(spec);
-  kind_ = Kind::table;
-}
-
-double RecordTemperature::at(double t) const {
-  switch (kind_) {
-    case Kind::constant: return t0_;
-    case Kind::ramp: return t0_ + (t1_ - t0_) * (duration_ > 0 ? t / duration_ : 0.0);
-    case Kind::table: break;
-  }
-  if (t <= ts_.front()) return temps_.front();
-  if (t >= ts_.back()) return temps_.back();
-  while (t > ts_[i_ + 1]) ++i_;  // t only grows
-  const double w = (t - ts_[i_]) / (ts_[i_ + 1] - ts_[i_]);
-  return temps_[i_] + w * (temps_[i_ + 1] - temps_[i_]);
-}
-
-void RecordTemperature::readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("t,temp", 0) != 0)
-    throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" + line + "\"");
-  int row = 1;
-  while (std::getline(in, line)) {
-    ++row;
-    if (line.empty()) continue;
-    double t = NAN, c = NAN;
-    char comma = 0;
-    std::istringstream ss(line);
-    if (!(ss >> t >> comma >> c) || comma != ',' || !std::isfinite(t) || !std::isfinite(c))
-      throw InputError(path + ":" + std::to_string(row) + ": expected \"t,temp\" numbers, got \"" +
-                       line + "\"");
-    if (!ts_.empty() && !(t > ts_.back()))
-      throw InputError(path + ":" + std::to_string(row) + ": times must increase");
-    ts_.push_back(t);
-    temps_.push_back(c + kZeroCelsius);
-  }
-  if (ts_.empty()) throw InputError(path + ": no temperature rows");
-}
-
 long long writeStaticRecord(const errormodels::ImuErrorModel& model, const StaticRecordSpec& o,
-                            const RecordTemperature& temperature, const std::string& path) {
+                            const TemperatureProfile& temperature, const std::string& path) {
   if (!(o.rate >= limits::kMinRate && o.rate <= limits::kMaxRate))
     throw InputError("--rate must be from " + limits::fmt(limits::kMinRate) + " to " +
                      limits::fmt(limits::kMaxRate) + " Hz");

@@ -11,30 +11,9 @@
 
 #include "errormodels/imu_model.hpp"
 #include "nav/types.hpp"
+#include "sim/temperature.hpp"
 
 namespace sinsim::sim {
-
-/// Sensor temperature over a record [K]: a constant ("25 degC"), a linear ramp over the whole
-/// record ("20 degC..45 degC"), or a CSV file with header t,temp (s, degC) interpolated linearly
-/// and held constant outside its time span.
-class RecordTemperature {
- public:
-  /// Reads `spec` (a temperature, a ramp or a CSV file name) for a record of `duration` [s];
-  /// InputError naming the option, file and row otherwise.
-  RecordTemperature(const std::string& spec, double duration);
-  /// Temperature at t [s] [K]; calls must come in increasing t.
-  double at(double t) const;
-
- private:
-  enum class Kind { constant, ramp, table };
-  void readCsv(const std::string& path);
-
-  Kind kind_ = Kind::constant;
-  double duration_;             // [s]
-  double t0_ = NAN, t1_ = NAN;  // [K]
-  std::vector<double> ts_, temps_;  // [s], [K]
-  mutable std::size_t i_ = 0;
-};
 
 struct StaticRecordSpec {
   double rate = 0.0;      // [Hz] > 0
@@ -50,6 +29,6 @@ struct StaticRecordSpec {
 /// (normal gravity, GeographicLib via nav::Earth), then `model` corrupts each interval at the
 /// mid-interval temperature. Returns the number of samples, round(duration · rate).
 long long writeStaticRecord(const errormodels::ImuErrorModel& model, const StaticRecordSpec& spec,
-                            const RecordTemperature& temperature, const std::string& path);
+                            const TemperatureProfile& temperature, const std::string& path);
 
 }  // namespace sinsim::sim

@@ -5,25 +5,36 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "common/number_text.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
-const std::array<const char*, 6> kChannels = {"gx", "gy", "gz", "ax", "ay", "az"};
-
 int channelIndex(const std::string& name) {
-  for (int c = 0; c < 6; ++c)
-    if (name == kChannels[c]) return c;
-  throw InputError("unknown channel \"" + name + "\" (known: gx, gy, gz, ax, ay, az)");
+  if (const auto c = findChannel(name)) return *c;
+  throw InputError("unknown channel \"" + name + "\" (known: " + kChannelList + ")");
 }
 
-const std::vector<double>& channelData(const Record& r, int c) {
-  return c < 3 ? r.gyro[c] : r.accel[c - 3];
-}
+namespace {
+// The six units of a sensor, kept alive for the const char* of Units.
+struct SensorUnits {
+  std::array<std::string, 6> text;
+  Units units;
+  explicit SensorUnits(Sensor s) {
+    const Dimension sig = s == Sensor::gyro ? Dimension::angularRate() : Dimension::acceleration();
+    const Dimension t = Dimension::time(), T = Dimension::temperature();
+    const Dimension dims[6] = {sig, sig / t.sqrt(), sig * t, sig / t, sig / T, sig / T.pow(2)};
+    for (int i = 0; i < 6; ++i) text[i] = displayUnit(dims[i], s);
+    units = {text[0].c_str(), text[1].c_str(), text[2].c_str(),
+             text[3].c_str(), text[4].c_str(), text[5].c_str()};
+  }
+  SensorUnits(const SensorUnits&) = delete;  // units points into text
+};
+}  // namespace
 
 const Units& unitsFor(int channel) {
-  static const Units gyro{"deg/s", "deg/h/sqrt(h)", "deg", "deg/h^2", "deg/s/degC", "deg/s/degC^2"};
-  static const Units accel{"mg", "m/s^2/sqrt(h)", "m/s", "m/s^3", "mg/degC", "mg/degC^2"};
-  return isGyro(channel) ? gyro : accel;
+  static const SensorUnits gyro(Sensor::gyro), accel(Sensor::accel);
+  return isGyro(channel) ? gyro.units : accel.units;
 }
 
 std::string quantity(double si, const char* unit) {
@@ -34,9 +45,7 @@ std::string quantity(double si, const char* unit) {
 }
 
 std::string num(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -1,23 +1,31 @@
-// The six channels of a record as the diagnosis names them (gx..az), their display units, and the
-// number formatting of findings and tables.
+// The six channels of a record as the diagnosis names them (gx..az) — views of the one channel
+// table (errormodels/channels.hpp) — their display units (the model writer's, displayUnit), and
+// the number formatting of findings and tables.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "errormodels/channels.hpp"
 #include "errormodels/stats/record.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
-extern const std::array<const char*, 6> kChannels;  // gx gy gz ax ay az
+/// gx gy gz ax ay az: the names of kRecordChannels.
+inline constexpr std::array<const char*, 6> kChannels{
+    kRecordChannels[0].name, kRecordChannels[1].name, kRecordChannels[2].name,
+    kRecordChannels[3].name, kRecordChannels[4].name, kRecordChannels[5].name};
 int channelIndex(const std::string& name);           // InputError for an unknown name
-inline bool isGyro(int c) { return c < 3; }
-inline const char* sensorName(int c) { return c < 3 ? "gyro" : "accel"; }
-inline const char* axisName(int c) { static const char* n[3] = {"x", "y", "z"}; return n[c % 3]; }
-const std::vector<double>& channelData(const Record& r, int c);
+inline bool isGyro(int c) { return kRecordChannels[c].sensor == Sensor::gyro; }
+inline const char* sensorName(int c) { return errormodels::sensorName(kRecordChannels[c].sensor); }
+inline const char* axisName(int c) {
+  static const char* n[3] = {"x", "y", "z"};
+  return n[kRecordChannels[c].axis];
+}
+using errormodels::channelData;
 
-/// Display units of the model files and reports (the same as fit/model_writer).
+/// Display units of the model files and reports: displayUnit (model_io.hpp) of each quantity.
 struct Units {
   const char* level;      // signal
   const char* walk;       // signal / sqrt(time)

@@ -69,7 +69,7 @@ struct AllanFitOptions {
   /// Refit without undetected terms (backward elimination) until every remaining term is
   /// detected; removed terms are reported as 0 with an upper bound. Without it, terms held at
   /// the zero bound bias the terms correlated with them (Monte Carlo, white + random walk with
-  /// all five terms: K pull mean -0.6 -> see README).
+  /// all five terms: K pull mean -0.6; docs/identify.md, "Allan-term fit").
   bool eliminateUndetected = true;
   int maxReweight = 20;  ///< reweighting iterations (stops earlier at 1e-7 relative change)
   /// Sample interval [s] and length (samples) of the record the curve came from. When both are

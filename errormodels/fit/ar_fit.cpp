@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "errormodels/ar_model.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -306,74 +307,27 @@ Eigen::MatrixXd arCoefficientCovariance(const std::vector<double>& a, std::size_
   return (L * L.transpose() - U * U.transpose()) / static_cast<double>(n);
 }
 
-std::vector<std::complex<double>> arPoles(const std::vector<double>& a) {
+std::vector<double> arCoefficients(const std::vector<double>& a) {
   if (a.size() < 2 || a[0] != 1.0) throw InputError("AR polynomial must be [1, a1, ..., ap]");
-  const auto p = static_cast<Eigen::Index>(a.size() - 1);
-  Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(p, p);
-  for (Eigen::Index j = 0; j < p; ++j) companion(0, j) = -a[static_cast<std::size_t>(j + 1)];
-  for (Eigen::Index i = 1; i < p; ++i) companion(i, i - 1) = 1.0;
-  Eigen::EigenSolver<Eigen::MatrixXd> es(companion, false);
-  std::vector<std::complex<double>> poles(static_cast<std::size_t>(p));
-  for (Eigen::Index i = 0; i < p; ++i) poles[static_cast<std::size_t>(i)] = es.eigenvalues()(i);
-  return poles;
+  return std::vector<double>(a.begin() + 1, a.end());
+}
+
+std::vector<std::complex<double>> arPoles(const std::vector<double>& a) {
+  return ar::poles(arCoefficients(a));
 }
 
 double arMaxPoleMagnitude(const std::vector<double>& a) {
-  double m = 0.0;
-  for (const auto& z : arPoles(a)) m = std::max(m, std::abs(z));
-  return m;
+  return ar::largestPoleMagnitude(arCoefficients(a));
 }
 
 std::vector<double> arAutocovariance(const std::vector<double>& a, double drivingVariance,
                                      std::size_t maxLag) {
-  if (!(arMaxPoleMagnitude(a) < 1.0))
-    throw InputError("AR autocovariance: the polynomial is not stable (a pole on or outside the "
-                     "unit circle)");
-  if (!(std::isfinite(drivingVariance) && drivingVariance >= 0.0))
-    throw InputError("AR autocovariance: driving variance must be finite and >= 0");
-  const std::size_t p = a.size() - 1;
-  // sum_{i=0}^{p} a_i gamma_{|k-i|} = E delta_k, k = 0..p   (Box, Jenkins & Reinsel, eq. 3.2.4)
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p + 1),
-                                            static_cast<Eigen::Index>(p + 1));
-  for (std::size_t k = 0; k <= p; ++k)
-    for (std::size_t i = 0; i <= p; ++i)
-      M(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k > i ? k - i : i - k)) += a[i];
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(p + 1));
-  rhs(0) = drivingVariance;
-  const Eigen::VectorXd g = M.fullPivLu().solve(rhs);
-  std::vector<double> gamma(std::max(maxLag, p) + 1);
-  for (std::size_t k = 0; k <= p; ++k) gamma[k] = g(static_cast<Eigen::Index>(k));
-  for (std::size_t k = p + 1; k < gamma.size(); ++k) {
-    double acc = 0.0;
-    for (std::size_t i = 1; i <= p; ++i) acc -= a[i] * gamma[k - i];
-    gamma[k] = acc;
-  }
-  gamma.resize(maxLag + 1);
-  return gamma;
+  return ar::autocovarianceOfVariance(arCoefficients(a), drivingVariance, maxLag);
 }
 
 std::vector<double> arAllanVariance(const std::vector<double>& a, double drivingVariance,
                                     const std::vector<std::size_t>& m) {
-  std::size_t mMax = 0;
-  for (std::size_t v : m) {
-    if (v == 0) throw InputError("AR Allan variance: averaging factors must be >= 1");
-    mMax = std::max(mMax, v);
-  }
-  const std::vector<double> g = arAutocovariance(a, drivingVariance, 2 * mMax);
-  std::vector<double> out;
-  out.reserve(m.size());
-  for (std::size_t mm : m) {
-    const double md = static_cast<double>(mm);
-    // Var(ybar) = (1/m^2) sum_{|j|<m} (m - |j|) gamma_j
-    double var = md * g[0];
-    for (std::size_t j = 1; j < mm; ++j) var += 2.0 * (md - static_cast<double>(j)) * g[j];
-    // Cov(ybar_k, ybar_{k+1}) = (1/m^2) sum_{|j|<m} (m - |j|) gamma_{m+j}
-    double cov = md * g[mm];
-    for (std::size_t j = 1; j < mm; ++j)
-      cov += (md - static_cast<double>(j)) * (g[mm + j] + g[mm - j]);
-    out.push_back((var - cov) / (md * md));
-  }
-  return out;
+  return ar::allanVariance(arCoefficients(a), drivingVariance, m);
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -97,20 +97,19 @@ LevinsonResult levinsonDurbin(const std::vector<double>& r, std::size_t order);
 /// (1, a1, ..., a_{p-1}), U lower-triangular Toeplitz with first column (ap, ..., a1)).
 Eigen::MatrixXd arCoefficientCovariance(const std::vector<double>& a, std::size_t n);
 
-/// Poles of 1/A(z) (roots of z^p + a1 z^{p-1} + ... + ap), from the companion matrix.
-std::vector<std::complex<double>> arPoles(const std::vector<double>& a);
-/// Largest pole magnitude (< 1 for a stable, stationary model).
-double arMaxPoleMagnitude(const std::vector<double>& a);
+// The AR polynomial math lives once, in errormodels/ar_model.hpp (coefficients a1..ap). These
+// adapters take the polynomial as ArFit holds it, [1, a1..ap], and throw InputError otherwise.
 
-/// Model autocovariance gamma_0..gamma_maxLag [U^2] of the AR process with polynomial a and
-/// driving variance E (solves the Yule-Walker equations for gamma_0..gamma_p, then
-/// gamma_k = -sum a_i gamma_{k-i}). Throws InputError for an unstable polynomial.
+/// a1..ap of a = [1, a1, ..., ap] (p >= 1).
+std::vector<double> arCoefficients(const std::vector<double>& a);
+/// ar::poles of [1, a1..ap].
+std::vector<std::complex<double>> arPoles(const std::vector<double>& a);
+/// ar::largestPoleMagnitude of [1, a1..ap] (< 1 for a stable, stationary model).
+double arMaxPoleMagnitude(const std::vector<double>& a);
+/// ar::autocovarianceOfVariance of [1, a1..ap]: gamma_0..gamma_maxLag [U^2].
 std::vector<double> arAutocovariance(const std::vector<double>& a, double drivingVariance,
                                      std::size_t maxLag);
-
-/// Allan variance [U^2] of the AR process sampled at interval dt, at tau = m dt for each m in
-/// `m` (m >= 1), from its autocovariance: AVAR(m) = Var(ybar) - Cov(ybar_k, ybar_{k+1}) with
-/// m-sample averages ybar (IEEE Std 952-1997 Annex C definition, exact for a stationary process).
+/// ar::allanVariance of [1, a1..ap] [U^2] at tau = m dt.
 std::vector<double> arAllanVariance(const std::vector<double>& a, double drivingVariance,
                                     const std::vector<std::size_t>& m);
 

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "common/error.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/stats/allan.hpp"
@@ -64,9 +65,7 @@ const LatentCandidate* LatentFit::runnerUp() const {
 namespace {
 
 std::string fmt(double v, int digits = 4) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 /// The Allan points and the current whitening W (Omega^-1 = W' W).

@@ -5,7 +5,7 @@
 // Method (Guerrier et al. 2013, JASA 108(503), "GMWM"; the Haar wavelet variance is half the
 // Allan variance, so the two criteria are the same up to a factor):
 //  1. Allan variance nu_i at tau_i = m_i dt, m = 1, 2, 4, ... <= N / 10 (beyond, < ~10 EDF and
-//     the modelled covariance below is unreliable, see identify.cpp usablePoints).
+//     the modelled covariance below is unreliable, see identify_terms.hpp usablePoints).
 //  2. For a term set, minimise the GLS criterion (nu - nu(theta))' Omega^-1 (nu - nu(theta)).
 //     nu(theta) is latent_model.hpp's closed form. It is linear in the variance coefficients
 //     (Q^2, N^2, sigma_j^2, B^2, K^2, R^2) and non-linear only in the GM correlation times, so

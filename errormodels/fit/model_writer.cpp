@@ -8,38 +8,43 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::fit {
 
 namespace {
 
-// Output units per sensor and quantity; the factor comes from the same parser that reads them.
+// Output units per sensor and quantity: the model writer's (displayUnit); the factor comes from
+// the same parser that reads them.
 struct Units {
-  const char* level;       // signal: sigma, B
-  const char* density;     // signal * sqrt(time): N
-  const char* walk;        // signal / sqrt(time): K
-  const char* increment;   // signal * time: quantization LSB
-  const char* slope;       // signal / time: ramp
+  std::string level;      // signal: sigma, B
+  std::string density;    // signal * sqrt(time): N
+  std::string walk;       // signal / sqrt(time): K
+  std::string increment;  // signal * time: quantization LSB
+  std::string slope;      // signal / time: ramp
 };
+Units unitsOf(Sensor s) {
+  const Dimension sig = s == Sensor::gyro ? Dimension::angularRate() : Dimension::acceleration();
+  const Dimension t = Dimension::time();
+  return {displayUnit(sig, s), displayUnit(sig * t.sqrt(), s), displayUnit(sig / t.sqrt(), s),
+          displayUnit(sig * t, s), displayUnit(sig / t, s)};
+}
 const Units& unitsFor(SensorSignal s) {
-  static const Units gyro{"deg/s", "deg/sqrt(h)", "deg/h/sqrt(h)", "deg", "deg/h^2"};
-  static const Units accel{"mg", "m/s/sqrt(h)", "m/s^2/sqrt(h)", "m/s", "m/s^3"};
+  static const Units gyro = unitsOf(Sensor::gyro), accel = unitsOf(Sensor::accel);
   return s == SensorSignal::Gyro ? gyro : accel;
 }
 
 // "<value in unit> <unit>" with 9 significant digits (relative rounding <= 5e-9).
-std::string q(double si, const char* unit) {
+std::string q(double si, const std::string& unit) {
   const double factor = parseUnit(unit).si;
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g %s", si / factor, unit);
+  std::snprintf(buf, sizeof buf, "%.9g %s", si / factor, unit.c_str());
   return buf;
 }
 
 std::string num(double v, int digits = 10) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
+  return significant(v, digits);
 }
 
 Sensor sensorOf(SensorSignal s) { return s == SensorSignal::Gyro ? Sensor::gyro : Sensor::accel; }
@@ -111,7 +116,7 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
                   Dimension signal) {
   const AllanTerm& t = fit.term(kind);
   if (!t.enabled) return;
-  const char* unit = nullptr;
+  std::string unit;
   double scale = 1.0;  // written value = scale * t.value (SI)
   Dimension dim = signal;
   const Dimension time = Dimension::time();

@@ -9,105 +9,13 @@
 
 #include "common/error.hpp"
 #include "sim/report/report.hpp"
+#include "sim/report/plot_detail.hpp"
 #include "sim/report/report_detail.hpp"
 
 namespace sinsim::report {
 namespace {
 
-constexpr const char* kFont = "DejaVu Sans, Helvetica, Arial, sans-serif";
-constexpr double kTitleSize = 15, kLabelSize = 13, kTickSize = 12, kLegendSize = 12;  // [px]
-// Average advance of a sans-serif glyph relative to the font size (DejaVu Sans digits: 0.636,
-// lower case ≈ 0.6); used only to leave room, so err on the wide side.
-constexpr double kCharWidth = 0.62;
-// Pixel coordinates are written with 2 decimals (1/100 px: invisible, keeps files small) and
-// clamped to ±1e5 px so a wild outlier cannot blow up the number width.
-constexpr int kCoordDecimals = 2;
-constexpr double kCoordLimit = 1e5;
-
-double textWidth(const std::string& s, double size) {
-  return static_cast<double>(detail::displayLength(s)) * size * kCharWidth;
-}
-
-std::string num(double v) {
-  return formatFixed(std::clamp(v, -kCoordLimit, kCoordLimit), kCoordDecimals);
-}
-
-struct Axis {
-  bool log = false;
-  double lo = 0, hi = 1;  // data range shown
-  double len = 1;         // [px]
-  bool flip = false;      // y grows downwards in SVG
-  bool usable(double v) const { return std::isfinite(v) && (!log || v > 0); }
-  double t(double v) const { return log ? std::log10(v) : v; }
-  double px(double v) const {
-    const double f = (t(v) - t(lo)) / (t(hi) - t(lo));
-    return flip ? (1 - f) * len : f * len;
-  }
-};
-
-// Data range from all usable values, with a 4 % margin (in log space on a log axis) so curves do
-// not run along the frame.
-std::pair<double, double> autoRange(std::vector<double> v, bool log) {
-  if (v.empty()) return log ? std::make_pair(1.0, 10.0) : std::make_pair(0.0, 1.0);
-  const auto [mn, mx] = std::minmax_element(v.begin(), v.end());
-  double lo = log ? std::log10(*mn) : *mn, hi = log ? std::log10(*mx) : *mx;
-  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi)) || hi == lo) {
-    const double half = log ? 0.5 : (lo == 0 ? 1.0 : 0.1 * std::abs(lo));
-    lo -= half;
-    hi += half;
-  } else {
-    const double pad = 0.04 * (hi - lo);
-    lo -= pad;
-    hi += pad;
-  }
-  return log ? std::make_pair(std::pow(10.0, lo), std::pow(10.0, hi)) : std::make_pair(lo, hi);
-}
-
-void checkRange(const std::optional<std::pair<double, double>>& r, bool log, const char* name) {
-  if (!r) return;
-  const auto [lo, hi] = *r;
-  if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi && (!log || lo > 0)))
-    throw InputError(std::string("plot ") + name + " range [" + formatFixed(lo, 6) + ", " +
-                     formatFixed(hi, 6) + "] is not usable" + (log ? " on a log axis" : ""));
-}
-
-using Run = std::vector<std::pair<double, double>>;  // pixel points of one unbroken piece
-
-// Consecutive points in the same pixel column collapse to first, lowest, highest and last: the
-// drawn line is the same to within a pixel, a 10^6-point record stays a few thousand vertices.
-Run decimate(const Run& in, double width) {
-  if (in.size() <= static_cast<std::size_t>(2 * width)) return in;
-  Run out;
-  std::size_t i = 0;
-  while (i < in.size()) {
-    const double col = std::floor(in[i].first);
-    std::size_t j = i, lo = i, hi = i;
-    while (j < in.size() && std::floor(in[j].first) == col) {
-      if (in[j].second < in[lo].second) lo = j;
-      if (in[j].second > in[hi].second) hi = j;
-      ++j;
-    }
-    std::size_t keep[] = {i, std::min(lo, hi), std::max(lo, hi), j - 1};
-    for (std::size_t n = 0; n < 4; ++n)
-      if (n == 0 || keep[n] != keep[n - 1]) out.push_back(in[keep[n]]);
-    i = j;
-  }
-  return out;
-}
-
-struct LegendEntry {
-  enum Kind { Line, Fill } kind;
-  std::string label, color;
-  bool dashed = false;
-  double width = 1.8, opacity = 1;
-  bool markers = false;
-  bool outline = false;
-};
-
-struct Layout {
-  double W, H, left, top, pw, ph;
-  bool legendOutside;
-};
+using namespace plot_detail;
 
 }  // namespace
 
@@ -478,40 +386,7 @@ std::string Plot::svg(int width, int height) const {
          "\" fill=\"#222\">" + escape(yLabel) + "</text>\n";
   }
 
-  if (!legend.empty()) {
-    o += "<g font-size=\"" + num(kLegendSize) + "\">\n";
-    o += "<rect x=\"" + num(legendX) + "\" y=\"" + num(legendY) + "\" width=\"" + num(legendW) +
-         "\" height=\"" + num(legendH) +
-         "\" rx=\"3\" fill=\"#ffffff\" fill-opacity=\"0.9\" stroke=\"#bbb\"/>\n";
-    for (std::size_t i = 0; i < legend.size(); ++i) {
-      const LegendEntry& e = legend[i];
-      const double cy = legendY + 8 + legendRow * (static_cast<double>(i) + 0.5);
-      const double sx = legendX + 10;
-      if (e.kind == LegendEntry::Line) {
-        o += "<line x1=\"" + num(sx) + "\" y1=\"" + num(cy) + "\" x2=\"" + num(sx + legendSwatch) +
-             "\" y2=\"" + num(cy) + "\" stroke=\"" + escape(e.color) + "\" stroke-width=\"" +
-             formatFixed(e.width, 2) + "\"" +
-             (e.dashed ? " stroke-dasharray=\"" + formatFixed(4 * e.width, 2) + " " +
-                             formatFixed(2.5 * e.width, 2) + "\""
-                       : std::string()) +
-             "/>\n";
-        if (e.markers)
-          o += "<circle cx=\"" + num(sx + legendSwatch / 2) + "\" cy=\"" + num(cy) + "\" r=\"" +
-               formatFixed(e.width + 1.2, 2) + "\" fill=\"" + escape(e.color) + "\"/>\n";
-      } else {
-        o += "<rect x=\"" + num(sx) + "\" y=\"" + num(cy - 6) + "\" width=\"" + num(legendSwatch) +
-             "\" height=\"12\" fill=\"" + escape(e.color) + "\" fill-opacity=\"" +
-             formatFixed(std::max(e.opacity, 0.15), 3) + "\"" +
-             (e.outline ? " stroke=\"" + escape(e.color) +
-                              "\" stroke-opacity=\"0.6\" stroke-width=\"0.8\""
-                        : std::string()) +
-             "/>\n";
-      }
-      o += "<text x=\"" + num(sx + legendSwatch + 8) + "\" y=\"" + num(cy + kLegendSize * 0.36) +
-           "\" fill=\"#222\">" + escape(e.label) + "</text>\n";
-    }
-    o += "</g>\n";
-  }
+  if (!legend.empty()) o += legendSvg(legend, legendX, legendY, legendW, legendH, legendRow, legendSwatch);
   o += "</svg>\n";
   return o;
 }

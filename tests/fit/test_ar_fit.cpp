@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/error.hpp"
+#include "errormodels/ar_model.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "fit_test_util.hpp"
 
@@ -221,6 +222,26 @@ TEST_CASE("Bad AR input is refused with a clear message", "[fit][input]") {
   CHECK_NOTHROW(burg(x, 97));
   CHECK_THROWS_AS(burg(std::vector<double>{1.0, 2.0}, 1), sinsim::InputError);
   CHECK_THROWS_AS(arAutocovariance({1.0, -1.0}, 1.0, 5), sinsim::InputError);  // unit root
+}
+
+TEST_CASE("The AR math has one home: the effect's and the fit's forms agree, one error", "[fit][ar]") {
+  // errormodels/ar_model.hpp takes a1..ap and sigma_e; ArFit holds [1, a1..ap] and E = sigma_e².
+  // Both routes run the same solver, so with E = sigma_e² exactly representable (sigma_e = 0.5)
+  // they must agree bit for bit. Near the unit circle (phi = 1 - 1e-6, the awkward point) the
+  // closed form gamma_0 = E / (1 - phi²) holds to ~1e-9 relative: the (p+1)×(p+1) solve loses
+  // about cond ~ 1 / (1 - phi) = 1e6 times eps.
+  const double phi = 1.0 - 1e-6, sigmaE = 0.5, E = sigmaE * sigmaE;
+  const auto viaEffect = sinsim::errormodels::ar::autocovariance({-phi}, sigmaE, 20);
+  const auto viaFit = arAutocovariance({1.0, -phi}, E, 20);
+  REQUIRE(viaEffect.size() == 21);
+  REQUIRE(viaFit.size() == 21);
+  for (std::size_t k = 0; k <= 20; ++k) CHECK(viaEffect[k] == viaFit[k]);
+  CHECK(viaFit[0] == Approx(E / (1.0 - phi * phi)).epsilon(1e-9));
+  // An unstable polynomial is bad input on both routes (the effect's form threw NumericalError).
+  CHECK_THROWS_AS(sinsim::errormodels::ar::autocovariance({-1.0}, 1.0, 5), sinsim::InputError);
+  CHECK_THROWS_AS(sinsim::errormodels::ar::varianceGain({-1.5}), sinsim::InputError);
+  CHECK_THROWS_AS(arAutocovariance({1.0, 0.5}, -1.0, 5), sinsim::InputError);  // E < 0
+  CHECK_THROWS_AS(arMaxPoleMagnitude({2.0, 0.5}), sinsim::InputError);         // a0 != 1
 }
 
 TEST_CASE("The stated coefficient uncertainty is calibrated (Monte Carlo)", "[fit][uncertainty]") {

@@ -211,3 +211,28 @@ TEST_CASE("bad scenario: error model file that does not exist is located at erro
     CHECK(std::string(e.what()).find("/tmp/no/such/model.yaml") != std::string::npos);
   }
 }
+
+TEST_CASE("One TemperatureProfile for synth's --temperature: constant, ramp, CSV table", "[scenario][temperature]") {
+  // Closed forms: degC + 273.15; a ramp over [0, T] is linear and ends on its end value; a table
+  // is piecewise linear through its knots (exactly at the knots: w = 1 gives t_i + (t_{i+1} - t_i),
+  // exact for these small integers) and held outside its span. 1e-12 K: a few ulps of 300 K.
+  const sim::TemperatureProfile c = sim::temperatureFromText("25 degC", 100.0);
+  CHECK(c.at(0.0) == Approx(298.15).margin(1e-12));
+  CHECK(c.at(1e6) == Approx(298.15).margin(1e-12));
+  const sim::TemperatureProfile r = sim::temperatureFromText("20 degC..45 degC", 100.0);
+  CHECK(r.at(0.0) == Approx(293.15).margin(1e-12));
+  CHECK(r.at(50.0) == Approx(305.65).margin(1e-12));
+  CHECK(r.at(100.0) == Approx(318.15).margin(1e-12));
+  const auto dir = sinsim::test::freshTempDir("temperature_table");
+  const std::string csv = (dir / "t.csv").string();
+  sinsim::test::writeText(csv, "t,temp\n0,20\n10,30\n20,25\n");
+  const sim::TemperatureProfile t = sim::temperatureFromText(csv, 100.0);
+  CHECK(t.at(-5.0) == Approx(293.15).margin(1e-12));   // held before the first row
+  CHECK(t.at(5.0) == Approx(298.15).margin(1e-12));
+  CHECK(t.at(10.0) == Approx(303.15).margin(1e-12));   // a knot
+  CHECK(t.at(15.0) == Approx(300.65).margin(1e-12));
+  CHECK(t.at(99.0) == Approx(298.15).margin(1e-12));   // held after the last row
+  // Calls need not come in increasing time (the old reader kept a cursor and required it).
+  CHECK(t.at(5.0) == Approx(298.15).margin(1e-12));
+  CHECK_THROWS_AS(sim::temperatureFromText("hot", 100.0), InputError);
+}

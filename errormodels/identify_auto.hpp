@@ -1,0 +1,21 @@
+// The `auto` kind of the identify pipeline: the rule that chooses between an AR model and the
+// Allan terms (stated in identify_auto.cpp above chooseAuto, and in docs/identify.md, "The auto rule"). Internal to
+// errormodels/identify*.cpp.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "errormodels/identify.hpp"
+#include "errormodels/identify_terms.hpp"
+
+namespace sinsim::errormodels::detail {
+
+/// Fills out.kind, out.written, out.allanFit / allanLongTau / composite and out.decision for the
+/// demeaned record x (sample interval dt [s]) from its usable Allan points, by the auto rule.
+/// arDen: the AR fitted on the denoised record, written instead when opt.arOnDenoised.
+void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
+                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt,
+                const std::optional<fit::OrderSelection>& arDen);
+
+}  // namespace sinsim::errormodels::detail

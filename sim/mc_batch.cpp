@@ -1,0 +1,61 @@
+// `sinsim mc` as one library call (mc_batch.hpp).
+#include "sim/mc_batch.hpp"
+
+#include <filesystem>
+
+#include "common/error.hpp"
+#include "common/limits.hpp"
+#include "common/read_file.hpp"
+#include "sim/reference.hpp"
+#include "sim/scenario.hpp"
+
+namespace sinsim::sim {
+
+McCommandResult runMcBatch(const McRequest& request) {
+  // ---- the reference: a scenario, or a static one matching a measured record ------------------
+  Scenario sc;
+  std::string scenarioIdentity;
+  std::optional<MeasuredSetup> measuredSetup;
+  McOptions opt = request.options;
+  if (request.measured) {
+    if (!request.scenarioPath.empty())
+      throw InputError("give either a scenario or --measured (the measured record defines a "
+                       "static scenario), not both");
+    if (request.models.empty())
+      throw InputError("--measured needs at least one --model to compare with");
+    measuredSetup = prepareMeasured(*request.measured);
+    sc = measuredSetup->scenario;
+    scenarioIdentity = measuredSetup->identity;
+    opt.navigate.biasWindow = measuredSetup->biasWindow;
+  } else {
+    if (request.scenarioPath.empty())
+      throw InputError("name a scenario file (or give --measured DATA.csv)");
+    sc = loadScenario(request.scenarioPath);
+    scenarioIdentity = readRegularFile(request.scenarioPath, limits::kMaxYamlBytes, "YAML file");
+  }
+  const std::vector<McModel> models = loadMcModels(request.models, sc, scenarioIdentity);
+
+  opt.seed = request.seed ? *request.seed : sc.seed.value_or(0);
+  if (opt.outDir.empty()) opt.outDir = (std::filesystem::path("out") / ("mc-" + sc.name)).string();
+  opt.scenarioIdentity = scenarioIdentity;
+
+  const Reference ref = buildReference(sc);
+  McMeasured measured;
+  if (measuredSetup) {
+    measured = navigateMeasured(*measuredSetup, ref, opt.navigate);
+    opt.measured = &measured;
+  }
+
+  McCommandResult batch;
+  batch.result = runMonteCarlo(ref, models, opt);
+  opt.measured = nullptr;  // points into this frame
+  batch.scenarioName = sc.name;
+  batch.modelCount = models.size();
+  batch.options = opt;
+  batch.samples = ref.samples.size();
+  if (batch.result.complete && opt.partition.rank == 0)
+    batch.headlines = mcHeadlines(ref, batch.result, models.size());
+  return batch;
+}
+
+}  // namespace sinsim::sim

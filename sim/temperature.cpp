@@ -1,0 +1,113 @@
+// Sensor temperature profiles (temperature.hpp).
+#include "sim/temperature.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "common/constants.hpp"
+#include "common/error.hpp"
+#include "common/units.hpp"
+
+namespace sinsim::sim {
+namespace {
+
+using D = Dimension;
+
+TemperatureProfile readCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("t,temp", 0) != 0)
+    throw InputError(path + ":1: expected the header \"t,temp\" (s, degC), got \"" + line + "\"");
+  TemperatureProfile p;
+  p.present = true;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    double t = NAN, c = NAN;
+    char comma = 0;
+    std::istringstream ss(line);
+    if (!(ss >> t >> comma >> c) || comma != ',' || !std::isfinite(t) || !std::isfinite(c))
+      throw InputError(path + ":" + std::to_string(row) + ": expected \"t,temp\" numbers, got \"" +
+                       line + "\"");
+    if (!p.times.empty() && !(t > p.times.back()))
+      throw InputError(path + ":" + std::to_string(row) + ": times must increase");
+    p.times.push_back(t);
+    p.kelvins.push_back(c + kZeroCelsius);
+  }
+  if (p.times.empty()) throw InputError(path + ": no temperature rows");
+  p.start = p.kelvins.front();
+  return p;
+}
+
+}  // namespace
+
+double TemperatureProfile::at(double t) const {
+  if (!present) return NAN;
+  if (times.empty()) return start + rate * t;
+  if (t <= times.front()) return kelvins.front();
+  if (t >= times.back()) return kelvins.back();
+  // times[i] < t <= times[i + 1]
+  const std::size_t i = std::size_t(std::lower_bound(times.begin(), times.end(), t) - times.begin()) - 1;
+  const double w = (t - times[i]) / (times[i + 1] - times[i]);
+  return kelvins[i] + w * (kelvins[i + 1] - kelvins[i]);
+}
+
+TemperatureProfile readTemperature(const ConfigNode& t, double duration) {
+  TemperatureProfile p;
+  if (!t.exists()) return p;
+  if (t.isScalar()) {
+    p.start = t.asQuantity(D::temperature()).value_or(NAN);
+    p.rate = 0.0;
+  } else if (t.isMap()) {
+    t.allowKeys({"start", "end", "rate"});
+    p.start = t.quantity("start", D::temperature());
+    if (t.has("end") && t.has("rate")) {
+      t["rate"].error("give end or rate, not both");
+    } else if (t.has("end")) {
+      const double end = t.quantity("end", D::temperature());
+      p.rate = duration > 0.0 ? (end - p.start) / duration : 0.0;
+    } else {
+      p.rate = t.quantity("rate", D::temperature() / D::time(), 0.0);
+    }
+  } else {
+    t.error("expected a temperature (\"25 degC\") or a map {start, end} or {start, rate}");
+  }
+  p.present = true;
+  if (std::isfinite(p.start)) t.check(p.start > 0.0, "expected an absolute temperature above 0 K");
+  return p;
+}
+
+TemperatureProfile temperatureFromText(const std::string& spec, double duration) {
+  TemperatureProfile p;
+  p.present = true;
+  const auto dots = spec.find("..");
+  if (dots != std::string::npos) {
+    double t0 = NAN, t1 = NAN;
+    try {
+      t0 = parseQuantityAs(spec.substr(0, dots), D::temperature());
+      t1 = parseQuantityAs(spec.substr(dots + 2), D::temperature());
+    } catch (const InputError& e) {
+      throw InputError("--temperature \"" + spec + "\": a ramp is \"20 degC..45 degC\": " +
+                       e.what());
+    }
+    p.start = t0;
+    // The ramp over [0, duration] as a two-row table: t0 + (t/duration) (t1 - t0).
+    if (duration > 0) p.times = {0.0, duration}, p.kelvins = {t0, t1};
+    return p;
+  }
+  try {
+    p.start = parseQuantityAs(spec, D::temperature());
+    return p;
+  } catch (const InputError& e) {
+    std::ifstream probe(spec);
+    if (!probe)
+      throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
+                       "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
+  }
+  return readCsv(spec);
+}
+
+}  // namespace sinsim::sim
