@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "errormodels/random.hpp"
 
@@ -26,6 +28,20 @@ inline double gaussMarkovAllanVariance(double s2, double T, double tau) {
   const double x = tau / T;
   if (x < 1e-4) return 2.0 * s2 * x / 3.0;
   return 2.0 * s2 * T / tau * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x));
+}
+
+/// Autocovariance [unit²] at lags 0..maxLag of the interval averages over dt [s] of a GM process
+/// (variance s2, time T): lag 0 (2 s2 T²/dt²)(dt/T - 1 + e^(-dt/T)), lag k >= 1
+/// (s2 T²/dt²)(1 - e^(-dt/T))² e^(-(k-1) dt/T). Added into r (size maxLag + 1).
+inline void addGaussMarkovIntervalAcov(double s2, double T, double dt, std::vector<double>& r) {
+  const double x = dt / T, c2 = s2 / (x * x);
+  const double om = -std::expm1(-x);
+  r[0] += 2.0 * c2 * (x - om);
+  double decay = 1.0;
+  for (std::size_t k = 1; k < r.size(); ++k) {
+    r[k] += c2 * om * om * decay;
+    decay *= std::exp(-x);
+  }
 }
 
 class ExactGaussMarkov {

@@ -3,6 +3,7 @@
 // (effects/bias_instability.cpp: GM components, 2 per decade over tau_range widened 1.5 decades,
 // each of variance B^2 ln10 / (2 pi)). The floor is 0.664 B within -2.5 %/+1 % over tau_range.
 #include "errormodels/diagnose/detector.hpp"
+#include "errormodels/gm_process.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,30 +20,17 @@ struct Components {
   double tc(int j) const { return wlo * std::pow(10.0, (j + 0.5) / 2); }
 };
 
-/// AVAR per unit B^2 at tau [s], each component from the GM closed form (IEEE 952 Annex C;
-/// q^2 = 2 s^2 / T): AVAR = (2 s^2 T / tau) [1 - (T / 2 tau)(3 - 4 e^(-tau/T) + e^(-2 tau/T))].
+/// AVAR per unit B^2 at tau [s]: the sum of its components' GM closed forms.
 double avar(const Components& m, double t) {
   double v = 0;
-  for (int j = 0; j < m.n; ++j) {
-    const double Tc = m.tc(j), x = t / Tc;
-    v += x < 1e-4 ? 2 * m.s2 * t / (3 * Tc)
-                  : 2 * m.s2 * Tc / t * (1 - (3 - 4 * std::exp(-x) + std::exp(-2 * x)) / (2 * x));
-  }
+  for (int j = 0; j < m.n; ++j) v += gaussMarkovAllanVariance(m.s2, m.tc(j), t);
   return v;
 }
 
-/// Autocovariance per unit B^2 of the samples (interval averages over dt) at lags 0..maxLag: of a
-/// GM (variance s2, time T), lag 0 (2 s2 T^2/dt^2)(dt/T - 1 + e^(-dt/T)), lag k >= 1
-/// s2 T^2/dt^2 (1 - e^(-dt/T))^2 e^(-(k-1) dt/T).
+/// Autocovariance per unit B^2 of the samples (interval averages over dt) at lags 0..maxLag.
 std::vector<double> acov(const Components& m, double dt, std::size_t maxLag) {
   std::vector<double> r(maxLag + 1, 0.0);
-  for (int j = 0; j < m.n; ++j) {
-    const double Tc = m.tc(j), x = dt / Tc;
-    const double c2 = m.s2 / (x * x);
-    r[0] += 2 * c2 * (x - 1 + std::exp(-x));
-    for (std::size_t k = 1; k <= maxLag; ++k)
-      r[k] += c2 * std::pow(1 - std::exp(-x), 2) * std::exp(-double(k - 1) * x);
-  }
+  for (int j = 0; j < m.n; ++j) addGaussMarkovIntervalAcov(m.s2, m.tc(j), dt, r);
   return r;
 }
 
