@@ -142,7 +142,7 @@ void bindModel(py::module_& mod) {
            "every effect: dicts {sensor, list, index, type, enabled, params (SI)}")
       .def("effect_names",
            [](const Model& m) { return imuModel(m).effectNames(); },
-           "the enabled effects as the simulator names them (gyro.x.white, ...)")
+           "the enabled effects as the simulator names them (gyro.x[0].white, ...)")
       .def("get",
            [](const Model& m, const std::string& sensor, const std::string& list, int index,
               const std::string& key) {
