@@ -265,7 +265,8 @@ void bindSimulate(py::module_& mod) {
       .def_property_readonly("error_effects",
                              [](const sim::Scenario& s) { return s.errors.effectNames(); })
       .def("__repr__", [](const sim::Scenario& s) {
-        return "<sinsim.Scenario " + s.name + ": " + py::str(py::float_(s.duration())).cast<std::string>() + " s>";
+        const std::string seconds = py::str(py::float_(s.duration()));
+        return "<sinsim.Scenario " + s.name + ": " + seconds + " s>";
       });
   mod.def("load_scenario", [](const py::object& src) { return toScenario(src); },
           py::arg("source"), "Scenario(source): a scenario file path or a dict of its layout");
