@@ -29,7 +29,7 @@ using namespace sinsim::errormodels;
 
 struct Case {
   std::string name;
-  std::string yaml;  ///< gyro.x effects
+  std::vector<EffectSpec> effects;  ///< gyro.x
   fit::LatentTermSet truth;
   std::map<std::string, double> params;  ///< SI, as fit parameter names
 };
@@ -48,32 +48,36 @@ std::vector<Case> cases(double rate, double duration) {
   // Increment LSB equal to the white noise's per-sample increment sd, so the rounding error is
   // uniform and white (the condition of the 3 Q^2 / tau^2 form): Q = lsb / sqrt(12) [rad].
   const double Q = N * std::sqrt(1.0 / rate) / std::sqrt(12.0);
-  const std::string r = std::to_string(rate);
-  auto num = [](double v) { char b[64]; std::snprintf(b, sizeof b, "%.10g", v); return std::string(b); };
-  const std::string white = "{type: white, density: " + num(N) + " rad/sqrt(s)}";
-  const std::string gm1 = "{type: gauss_markov, sigma: " + num(s1) + " rad/s, tau: " + num(T1) + " s, rate: " + r + " Hz}";
-  const std::string gm2 = "{type: gauss_markov, sigma: " + num(s2) + " rad/s, tau: " + num(T2) + " s, rate: " + r + " Hz}";
-  const std::string rw = "{type: random_walk, K: " + num(K) + " rad/s/sqrt(s)}";
-  const std::string rwf = "{type: random_walk, K: " + num(Kf) + " rad/s/sqrt(s)}";
-  const std::string fl = "{type: bias_instability, B: " + num(B) + " rad/s, tau_range: [" + num(1.0 / rate) +
-                         " s, " + num(duration) + " s]}";
-  const std::string qn = "{type: quantization, lsb: " + num(Q * std::sqrt(12.0)) + " rad}";
+  const Dimension w = Dimension::angularRate(), t = Dimension::time();
+  auto gm = [&](double sigma, double tau) {
+    return EffectSpec::make("gauss_markov", {ParamSpec::quantity("sigma", sigma, w), ParamSpec::quantity("tau", tau, t),
+                                             ParamSpec::quantity("rate", rate, Dimension::frequency())});
+  };
+  auto rw = [&](double k) { return EffectSpec::make("random_walk", {ParamSpec::quantity("K", k, w / t.sqrt())}); };
+  const EffectSpec white = EffectSpec::make("white", {ParamSpec::quantity("density", N, w * t.sqrt())});
+  const EffectSpec fl = EffectSpec::make(
+      "bias_instability", {ParamSpec::quantity("B", B, w), ParamSpec::quantities("tau_range", {1.0 / rate, duration}, t)});
+  const EffectSpec qn = EffectSpec::make("quantization", {ParamSpec::quantity("lsb", Q * std::sqrt(12.0), Dimension::angle())});
   std::vector<Case> c;
-  c.push_back({"white+gm", "[" + white + ", " + gm1 + "]", {false, true, 1, false, false, false},
+  c.push_back({"white+gm", {white, gm(s1, T1)}, {false, true, 1, false, false, false},
                {{"white", N}, {"gm1.sigma", s1}, {"gm1.tau", T1}}});
-  c.push_back({"white+gm+rw", "[" + white + ", " + gm1 + ", " + rw + "]", {false, true, 1, false, true, false},
+  c.push_back({"white+gm+rw", {white, gm(s1, T1), rw(K)}, {false, true, 1, false, true, false},
                {{"white", N}, {"gm1.sigma", s1}, {"gm1.tau", T1}, {"random_walk", K}}});
-  c.push_back({"white+2gm", "[" + white + ", " + gm1 + ", " + gm2 + "]", {false, true, 2, false, false, false},
+  c.push_back({"white+2gm", {white, gm(s1, T1), gm(s2, T2)}, {false, true, 2, false, false, false},
                {{"white", N}, {"gm1.sigma", s1}, {"gm1.tau", T1}, {"gm2.sigma", s2}, {"gm2.tau", T2}}});
-  c.push_back({"white+flicker+rw", "[" + white + ", " + fl + ", " + rwf + "]", {false, true, 0, true, true, false},
+  c.push_back({"white+flicker+rw", {white, fl, rw(Kf)}, {false, true, 0, true, true, false},
                {{"white", N}, {"flicker", B}, {"random_walk", Kf}}});
-  c.push_back({"quantization+white", "[" + white + ", " + qn + "]", {true, true, 0, false, false, false},
+  c.push_back({"quantization+white", {white, qn}, {true, true, 0, false, false, false},
                {{"white", N}, {"quantization", Q}}});
   return c;
 }
 
-std::vector<double> record(const std::string& yaml, double rate, double duration, std::uint64_t seed) {
-  const auto model = ImuErrorModel::fromString("description: study\ngyro:\n  x: " + yaml + "\n", "study.yaml");
+std::vector<double> record(const std::vector<EffectSpec>& effects, double rate, double duration,
+                           std::uint64_t seed) {
+  ErrorModelSpec spec;
+  spec.description = "study";
+  spec.gyro.x = effects;
+  const auto model = ImuErrorModel::fromSpec(spec, "study");
   auto c = model.instantiate(rate, {seed, 0});
   const std::size_t n = static_cast<std::size_t>(std::llround(duration * rate));
   const double dt = 1.0 / rate;
@@ -110,7 +114,7 @@ int main(int argc, char** argv) {
         std::map<std::string, int> covered, seen;
         std::map<std::string, int> chosen;
         for (int s = 0; s < seeds; ++s) {
-          const auto x = record(cs.yaml, rate, duration, 1000 + std::uint64_t(s));
+          const auto x = record(cs.effects, rate, duration, 1000 + std::uint64_t(s));
           fit::LatentFitOptions o;
           o.sampleInterval = 1.0 / rate;
           o.penaltyPerTerm = penalty;

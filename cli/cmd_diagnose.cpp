@@ -8,8 +8,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/model_io.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/diagnose_report.hpp"
 
@@ -45,7 +47,7 @@ int runDiagnose(const DiagnoseArgs& a) {
 int diagnoseAndWrite(const DiagnoseArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto record = errormodels::loadRecord(a.data, recordOptions(a.record));
-  const auto model = dg::ModelText::load(a.model);
+  const auto model = errormodels::loadErrorModel(a.model);
   dg::DiagnoseOptions o;
   o.channels = a.channels;
   o.realisations = a.realisations;
@@ -59,18 +61,18 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   if (adds.empty() && a.edited.empty()) {
     const auto d = dg::diagnose(record, model, o);
     std::cout << dg::summaryTable(d);
-    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(d));
+    if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(d));
     if (!a.html.empty()) writeDiagnoseReport(a.html, d);
   } else {
-    const auto imp = adds.empty() ? dg::compareModels(record, model, dg::ModelText::load(a.edited), o)
+    const auto imp = adds.empty() ? dg::compareModels(record, model, errormodels::loadErrorModel(a.edited), o)
                                   : dg::improve(record, model, adds, o);
     std::cout << dg::summaryTable(imp);
     if (!adds.empty()) {
       const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
-      dg::writeFileAtomic(out, imp.model.text);
+      errormodels::writeErrorModel(out, imp.model);
       std::cout << "wrote the improved model " << out << "\n";
     }
-    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(imp));
+    if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(imp));
     if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

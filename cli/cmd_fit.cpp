@@ -29,7 +29,6 @@ struct FitArgs {
   RecordArgs record;
   std::size_t max_order = 20;
   std::string nav_step = "10 ms";
-  std::string skip = "0 s";
   bool quiet = false;
 };
 
@@ -107,7 +106,6 @@ int runFit(const FitArgs& a) {
   opt.arOnDenoised = a.ar_on_denoised;
   opt.axes = splitAxes(a.axes);
   opt.navigationStep = parseQuantityAs(a.nav_step, Dimension::time());
-  opt.skipStart = parseQuantityAs(a.skip, Dimension::time());
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
 
@@ -147,7 +145,6 @@ void addFitCommand(CLI::App& app, Action& action) {
   c->add_option("--denoise-level", a->denoise_level, "decomposition level (default: largest)");
   c->add_flag("--ar-on-denoised", a->ar_on_denoised,
               "write the AR fitted on the denoised record (the paper's pipeline; too little white noise)");
-  c->add_option("--skip", a->skip, "discard the start of the record, e.g. \"10 min\" (warm-up)");
   addRecordOptions(c, a->record);
   c->add_flag("-q,--quiet", a->quiet, "print only the output file name");
   c->callback([a, &action] { action = [a] { return runFit(*a); }; });

@@ -114,8 +114,6 @@ struct Args {
   std::string latitude = "51.08 deg", longitude = "-114.13 deg", height = "1100 m";
   std::string attitude, heading = "0 deg";
   std::string biasWindow;
-  std::string duration;
-  std::string skip;
   std::string vertical = "held";
   double outputRate = 1.0;
   bool noProgress = false;
@@ -163,8 +161,6 @@ sim::MeasuredOptions measuredOptions(const Args& a) {
   }
   o.heading = parseAngle(a.heading, "--heading");
   if (!a.biasWindow.empty()) o.biasWindow = parseTime(a.biasWindow, "--bias-window");
-  if (!a.skip.empty()) o.skip = parseTime(a.skip, "--skip");
-  if (!a.duration.empty()) o.duration = parseTime(a.duration, "--duration");
   o.strapdown.vertical = sim::verticalChannel(a.vertical, "--vertical");
   o.outputRate = a.outputRate;
   return o;
@@ -344,9 +340,6 @@ void addMcCommand(CLI::App& app, Action& action) {
   c->add_option("--bias-window", a->biasWindow,
                 "Remove the mean error of the first T seconds (record and every model run alike; "
                 "default with --measured: min(60 s, 10 % of the record), else 0)");
-  c->add_option("--skip", a->skip, "Drop the start of the record (e.g. a warm-up: \"10 min\")");
-  c->add_option("--duration", a->duration,
-                "Use only this much of the record (after --skip; e.g. 10 min)");
   c->add_option("--vertical", a->vertical,
                 "Vertical channel for --measured: held (default), free or damped");
   c->add_option("--output-rate", a->outputRate, "Statistics epochs per second for --measured (1)");

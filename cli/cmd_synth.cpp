@@ -17,8 +17,8 @@ namespace {
 
 struct SynthOptions {
   std::string model, output, temperature = "25 degC", latitude = "45 deg", height = "0 m",
-                           attitude = "0 deg, 0 deg, 0 deg";
-  double rate = 0, duration = 0;
+                           attitude = "0 deg, 0 deg, 0 deg", duration;
+  double rate = 0;
   std::uint64_t seed = 0, run = 0;
 };
 
@@ -47,12 +47,12 @@ int runSynth(const SynthOptions& o) {
   const auto model = errormodels::ImuErrorModel::load(o.model);
   sim::StaticRecordSpec spec;
   spec.rate = o.rate;
-  spec.duration = o.duration;
+  spec.duration = parseDuration(o.duration, "--duration");
   spec.key = {o.seed, o.run};
   spec.lat = parseQuantityAs(o.latitude, Dimension::angle());
   spec.h = parseQuantityAs(o.height, Dimension::length());
   spec.rpy = parseAttitude(o.attitude);
-  const sim::RecordTemperature temperature(o.temperature, o.duration);
+  const sim::RecordTemperature temperature(o.temperature, spec.duration);
   const long long n = sim::writeStaticRecord(model, spec, temperature, o.output);
   std::printf("wrote %s: %lld samples at %g Hz, model %s (%zu effects), seed %llu run %llu\n",
               o.output.c_str(), n, o.rate, model.source().c_str(), model.effectNames().size(),
@@ -69,7 +69,7 @@ void addSynthCommand(CLI::App& app, Action& action) {
                "with Earth rate, gravity and the errors of MODEL");
   c->add_option("model", o->model, "error model file (YAML)")->required();
   c->add_option("--rate", o->rate, "IMU output rate [Hz]")->required();
-  c->add_option("--duration", o->duration, "record length [s]")->required();
+  c->add_option("--duration", o->duration, "record length, e.g. \"20 min\" (a plain number is seconds)")->required();
   c->add_option("--seed", o->seed, "seed of the random streams (default 0)");
   c->add_option("--run", o->run, "run index: the stream of run k of a batch (default 0)");
   c->add_option("--temperature", o->temperature,

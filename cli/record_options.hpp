@@ -1,6 +1,7 @@
 // The options every command that reads a measured record shares (analyze, fit, diagnose, mc
-// --measured): the units of its columns, its rate when it has no time column, and whether
-// irregular time stamps are accepted. One place, so the commands read records alike.
+// --measured): the units of its columns, its rate when it has no time column, whether irregular
+// time stamps are accepted, its separator and column mapping, and the window of it to use
+// (--skip, --duration). One place, so the commands read records alike.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
 
 namespace sinsim::cli {
@@ -18,6 +20,10 @@ struct RecordArgs {
   std::string accelUnit;  // e.g. "g"; empty: from the header, else m/s^2
   double rate = 0.0;      // [Hz]; 0: from the t column
   bool allowIrregular = false;
+  std::string delimiter = "auto";
+  std::string columns;   // "t=Time[ms],gx=GyroX[deg/s],..."
+  std::string skip;      // "10 min"; empty: none
+  std::string duration;  // "1 h"; empty: the rest
 };
 
 inline void addRecordOptions(CLI::App* c, RecordArgs& r) {
@@ -26,6 +32,13 @@ inline void addRecordOptions(CLI::App* c, RecordArgs& r) {
   c->add_option("--rate", r.rate, "sample rate [Hz] (required without a t column)");
   c->add_flag("--allow-irregular-time", r.allowIrregular,
               "accept irregular/gapped time stamps (reported, never resampled)");
+  c->add_option("--delimiter", r.delimiter,
+                "field separator: auto (default: from the header), comma, semicolon, whitespace");
+  c->add_option("--columns", r.columns,
+                "column mapping, e.g. \"t=Time[ms],gx=GyroX[deg/s],...,az=7\" (by header name or "
+                "1-based number; only numbers: the file has no header)");
+  c->add_option("--skip", r.skip, "discard the start of the record, e.g. \"10 min\" (a warm-up)");
+  c->add_option("--duration", r.duration, "use only this much of the record after --skip, e.g. \"1 h\"");
 }
 
 /// The loader's options; a negative or non-finite --rate is refused here.
@@ -37,6 +50,10 @@ inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
   if (!r.accelUnit.empty()) ro.accel_unit = r.accelUnit;
   if (r.rate > 0.0) ro.rate_hz = r.rate;
   ro.allow_irregular_time = r.allowIrregular;
+  ro.separator = errormodels::parseSeparator(r.delimiter);
+  if (!r.columns.empty()) ro.columns = errormodels::parseColumnMapping(r.columns);
+  if (!r.skip.empty()) ro.skip_s = parseDuration(r.skip, "--skip");
+  if (!r.duration.empty()) ro.duration_s = parseDuration(r.duration, "--duration");
   return ro;
 }
 

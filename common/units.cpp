@@ -312,4 +312,18 @@ double parseQuantityAs(std::string_view text, Dimension expected) {
   return q.si;
 }
 
+double parseDuration(std::string_view text, const std::string& option) {
+  try {
+    Quantity q = parseQuantity(text);
+    if (q.dim == Dimension::none()) q.dim = Dimension::time();  // a plain number is seconds
+    if (q.dim != Dimension::time())
+      throw InputError("expected a time such as \"90 s\", \"10 min\" or \"2 h\", got \"" +
+                       limits::echo(trim(text)) + "\"");
+    if (!(q.si >= 0.0)) throw InputError("expected a non-negative time, got \"" + limits::echo(trim(text)) + "\"");
+    return q.si;
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
+}
+
 }  // namespace sinsim

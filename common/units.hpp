@@ -80,6 +80,10 @@ Quantity parseUnit(std::string_view unit);
 /// an example unit. A plain number is accepted only for a dimensionless expectation.
 double parseQuantityAs(std::string_view text, Dimension expected);
 
+/// A time option: "90" (seconds), "90 s", "10 min", "2 h"; >= 0. Errors are prefixed with
+/// `option` ("--duration: ...").
+double parseDuration(std::string_view text, const std::string& option);
+
 /// A typical unit for messages ("deg/s", "m/s^2", "deg/sqrt(h)"), falling back to the SI form.
 std::string exampleUnit(Dimension d);
 

@@ -30,8 +30,16 @@ ErrorModelSpec errorModelFromString(const std::string& text, const std::string& 
 /// The model-file text of a spec. Throws InputError when a parameter cannot be written (an
 /// unknown effect type, a value of a dimension its schema does not accept).
 std::string errorModelYaml(const ErrorModelSpec& spec);
-/// Writes errorModelYaml(spec) to `path` through a temporary file renamed into place, so a failure
-/// never leaves a half-written model. Throws sinsim::Error on I/O failure.
+/// One effect in the writer's inline (flow) syntax, exactly as errorModelYaml writes it on its
+/// line, e.g. {type: ramp, slope: 12.5 deg/h^2}, in the units of `sensor` (reports show an effect
+/// as the model file will hold it). Throws like errorModelYaml.
+std::string effectYaml(const EffectSpec& effect, Sensor sensor);
+/// The spec as a file written from it reads back: every value rounded to the digits the writer
+/// prints, in the unit it prints it in (what a diagnosis or a simulation of the written file
+/// sees). Locations, notes and comments are kept. Throws like errorModelYaml.
+ErrorModelSpec asWritten(ErrorModelSpec spec);
+/// Writes errorModelYaml(spec) to `path` atomically (common/atomic_file.hpp: a failure never
+/// leaves a half-written model). Throws InputError when the folder is missing, Error on I/O failure.
 void writeErrorModel(const std::string& path, const ErrorModelSpec& spec);
 
 }  // namespace sinsim::errormodels

@@ -244,6 +244,7 @@ ErrorModelSpec scaleParameter(ErrorModelSpec spec, const EffectRef& ref, const s
     throw InputError("effect " + e.type + " has no numeric parameter " + key);
   for (double& v : p->values) v *= factor;
   for (double& s : p->sigma) s *= std::abs(factor);
+  p->where.text.clear();  // the text as written no longer states this value (messages quote it)
   return spec;
 }
 

@@ -11,9 +11,10 @@
 // and s, Hz, deg, degC (absolute, for a lone temperature), plain numbers, deg/s/g.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <cstdlib>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "errormodels/effect.hpp"
 #include "errormodels/model_io.hpp"
 
@@ -50,12 +51,23 @@ std::string number(double v, int digits) {
   return buf;
 }
 
+// A lone temperature is absolute: degC with its offset (parseQuantity adds 273.15 back).
+double shownIn(double si, const std::string& unit) {
+  return unit == "degC" ? si - 273.15 : si / parseUnit(unit).si;
+}
+
 std::string value(double si, Dimension d, Sensor sensor, int digits) {
   const std::string unit = unitFor(d, sensor);
   if (unit.empty()) return number(si, digits);
-  // A lone temperature is absolute: degC with its offset (parseQuantity adds 273.15 back).
-  const double shown = unit == "degC" ? si - 273.15 : si / parseUnit(unit).si;
-  return number(shown, digits) + " " + unit;
+  return number(shownIn(si, unit), digits) + " " + unit;
+}
+
+// si as the reader reads back value(si, d, sensor, digits).
+double readBack(double si, Dimension d, Sensor sensor, int digits) {
+  const std::string unit = unitFor(d, sensor);
+  const double printed = std::strtod(number(unit.empty() ? si : shownIn(si, unit), digits).c_str(), nullptr);
+  if (unit.empty()) return printed;
+  return unit == "degC" ? printed + 273.15 : printed * parseUnit(unit).si;
 }
 
 std::string quoted(const std::string& s) {
@@ -96,17 +108,24 @@ std::string paramText(const ParamSpec& p, int digits, Sensor sensor) {
   return "";
 }
 
-std::string effectLine(const EffectSpec& e, Sensor sensor) {
+const EffectType& typeOf(const EffectSpec& e) {
   const EffectType* et = findEffectType(e.type);
   if (!et) throw InputError("model writer: unknown effect type \"" + e.type + "\"");
+  return *et;
+}
+
+// The significant digits the writer prints parameter `key` of an effect with (its schema's).
+int digitsOf(const EffectType& et, const std::string& key) {
+  for (const auto& sc : et.params())
+    if (sc.key == key) return sc.digits;
+  return 9;
+}
+
+std::string effectLine(const EffectSpec& e, Sensor sensor) {
+  const EffectType& et = typeOf(e);
   std::string s = "{type: " + e.type;
   if (!e.enabled) s += ", enabled: false";
-  for (const auto& p : e.parameters) {
-    int digits = 9;
-    for (const auto& sc : et->params())
-      if (sc.key == p.key) digits = sc.digits;
-    s += ", " + p.key + ": " + paramText(p, digits, sensor);
-  }
+  for (const auto& p : e.parameters) s += ", " + p.key + ": " + paramText(p, digitsOf(et, p.key), sensor);
   if (!e.note.empty()) s += ", note: " + quoted(e.note);
   return s + "}";
 }
@@ -142,23 +161,22 @@ std::string errorModelYaml(const ErrorModelSpec& spec) {
   return out.str();
 }
 
+std::string effectYaml(const EffectSpec& effect, Sensor sensor) { return effectLine(effect, sensor); }
+
+ErrorModelSpec asWritten(ErrorModelSpec spec) {
+  for (Sensor sensor : {Sensor::gyro, Sensor::accel})
+    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y, EffectList::z})
+      for (auto& e : spec.sensor(sensor).list(l)) {
+        const EffectType& et = typeOf(e);
+        for (auto& p : e.parameters)
+          for (std::size_t i = 0; i < p.values.size(); ++i)
+            p.values[i] = readBack(p.values[i], p.dims.at(i), sensor, digitsOf(et, p.key));
+      }
+  return spec;
+}
+
 void writeErrorModel(const std::string& path, const ErrorModelSpec& spec) {
-  const std::string text = errorModelYaml(spec);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error("cannot write model file " + tmp);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw Error("cannot write model file " + tmp);
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot move model file into place: " + path);
-  }
+  writeFileAtomic(path, errorModelYaml(spec));
 }
 
 }  // namespace sinsim::errormodels

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/atomic_file.hpp"
 #include "sim/report/report.hpp"
 
 namespace sinsim {
@@ -82,7 +83,7 @@ Table findingsTable(const dg::AxisDiagnosis& a, double threshold) {
     const bool rep = f.reported;
     t.rows.push_back({Cell(f.effect, rep ? "fail" : "muted"), Cell(fmt(f.score, 3), rep ? "num fail" : "num muted"),
                       Cell(f.size, rep ? "" : "muted"), Cell(f.evidence, rep ? "" : "muted"),
-                      Cell(rep ? f.yaml : "", "muted")});
+                      Cell(rep ? dg::effectText(f.spec, a.channel) : "", "muted")});
   }
   return t;
 }
@@ -120,7 +121,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
     t.header = {"channel", "misfit before", "misfit after", "τ outside before", "after", "added"};
     for (const auto& ch : imp->changes) {
       std::string added;
-      for (const auto& x : ch.added) added += (added.empty() ? "" : "; ") + x;
+      for (const auto& x : ch.added) added += (added.empty() ? "" : "; ") + dg::effectText(x, ch.channel);
       t.rows.push_back({Cell(ch.channel), Cell(fmt(ch.misfitBefore), "num"),
                         Cell(fmt(ch.misfitAfter), ch.misfitAfter <= 0.5 * ch.misfitBefore ? "num pass" : "num"),
                         Cell(fmt(100 * ch.fractionOutsideBefore, 3) + " %", "num"),
@@ -161,7 +162,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
 
 void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp) {
   const std::string html = diagnoseReportHtml(d, imp);
-  dg::writeFileAtomic(path, html);
+  writeFileAtomic(path, html);
 }
 
 }  // namespace sinsim

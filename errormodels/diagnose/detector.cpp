@@ -27,7 +27,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
   for (double v : y) var += (v - mean) * (v - mean);
   var /= double(N);
   const DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
-                            mean, var, latticeStep(y), blockMeans(y, dt, 2000), modelEffects};
+                            mean, var, latticeStep(y), blockMeans(y, dt, 2000), modelEffects,
+                            isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration()};
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
     if (std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end()) continue;

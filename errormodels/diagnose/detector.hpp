@@ -7,7 +7,9 @@
 //
 // To add a detector: write detectors/<effect>.cpp defining
 //   std::vector<Candidate> detect_<effect>(const DetectorContext& ctx)
-// and add one line SINSIM_DETECTOR(<effect>, "summary") to detectors.def. A detector is not run
+// and add one line SINSIM_DETECTOR(<effect>, "summary") to detectors.def. A candidate's describe
+// states the effect as an EffectSpec in SI, each size rounded (stated()) to the digits its
+// finding reports, so that the improved model holds what the report says. A detector is not run
 // on a channel whose model already has its effect (enabled).
 #pragma once
 
@@ -16,7 +18,9 @@
 #include <vector>
 
 #include "errormodels/diagnose/candidate.hpp"
+#include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
 
@@ -36,6 +40,7 @@ struct DetectorContext {
   double lattice = 0;                // latticeStep(y) [SI]; 0 off a lattice
   BlockMeans blocks;                 // <= 2000 block means of y
   const std::vector<std::string>& modelEffects;  // enabled effect types of the model here
+  Dimension signal;                  // of the channel: angular rate or acceleration
 
   /// g_k = f(tau_k): an Allan signature on the tau grid.
   template <class F>

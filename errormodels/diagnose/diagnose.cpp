@@ -3,20 +3,18 @@
 #include "errormodels/diagnose/diagnose.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
-#include <unistd.h>
 
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/compare.hpp"
 #include "errormodels/diagnose/detector.hpp"
-#include "errormodels/diagnose/model_text.hpp"
+#include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
+#include "errormodels/model_io.hpp"
 #include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels::diagnose {
@@ -63,23 +61,9 @@ const AxisDiagnosis& Diagnosis::axis(const std::string& channel) const {
   throw InputError("channel " + channel + " was not diagnosed");
 }
 
-void writeFileAtomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError("cannot write " + path + " (folder missing or not writable)");
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw Error("write error on " + tmp);
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot rename " + tmp + " to " + path);
-  }
+std::string effectText(const EffectSpec& effect, const std::string& channel) {
+  if (effect.type.empty()) return "";
+  return effectYaml(effect, isGyro(channelIndex(channel)) ? Sensor::gyro : Sensor::accel);
 }
 
 namespace {
@@ -103,7 +87,7 @@ std::vector<int> channelsToDiagnose(const Record& record, const DiagnoseOptions&
 
 /// Steps 1-3 of one channel: compare, Ljung-Box of an AR base at the record's rate, candidates
 /// and their forward selection.
-ChannelWork diagnoseChannel(const Record& record, const ModelText& model, int c,
+ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, int c,
                             const std::vector<SeriesStats>& real, const Setup& setup,
                             const DiagnoseOptions& o) {
   const auto& y = channelData(record, c);
@@ -115,9 +99,10 @@ ChannelWork diagnoseChannel(const Record& record, const ModelText& model, int c,
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
-  if (auto a = arOfChannel(model.text, c, record.rate_hz))
+  if (auto a = baseAr(model, c, record.rate_hz))
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
-  w.cands = buildCandidates(record, c, d.adev.x, setup, modelEffectTypes(model.text, c));
+  const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
+  w.cands = buildCandidates(record, c, d.adev.x, setup, effectTypesOn(model, sensor, c % 3));
   selectFindings(w, o.threshold);
   return w;
 }
@@ -126,20 +111,20 @@ ChannelWork diagnoseChannel(const Record& record, const ModelText& model, int c,
 
 namespace detail {
 
-Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOptions& o) {
+Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& o) {
   if (o.realisations < 8) throw InputError("at least 8 Monte Carlo realisations are needed");
   if (!(o.bandLevel > 0 && o.bandLevel < 1)) throw InputError("band level must be in (0, 1)");
   if (record.rows < 256) throw InputError(record.source + ": at least 256 samples are needed");
   const std::vector<int> channels = channelsToDiagnose(record, o);
-  const auto m = ImuErrorModel::fromString(model.text, model.name);
+  const auto m = ImuErrorModel::fromSpec(model, model.source);
   if (m.needsTemperature() && record.temperature.empty())
-    throw InputError("model " + model.name + " needs the sensor temperature, and " + record.source +
+    throw InputError("model " + model.source + " needs the sensor temperature, and " + record.source +
                      " has no temp column");
   const Setup setup = makeSetup(record.rate_hz, record.rows, o);
   const auto mc = monteCarlo(m, record, channels, setup, o);
   Run run;
   run.d.data = record.source;
-  run.d.model = model.name;
+  run.d.model = model.source;
   run.d.rate = record.rate_hz;
   run.d.samples = record.rows;
   run.d.realisations = o.realisations;
@@ -154,7 +139,7 @@ Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOpti
 
 }  // namespace detail
 
-Diagnosis diagnose(const Record& record, const ModelText& model, const DiagnoseOptions& options) {
+Diagnosis diagnose(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& options) {
   return diagnoseRun(record, model, options).d;
 }
 

@@ -8,7 +8,11 @@
 //                  Ljung-Box whiteness of the one-step prediction residuals (AR models)
 //     2. fails     tau ranges / frequency bands where the measurement leaves the band
 //     3. findings  candidate effects ranked by a score (forward selection, see below)
-//   and, with improve(), the model file with the effects added and the comparison redone.
+//   and, with improve(), the model with the effects added and the comparison redone.
+//
+// The model is an ErrorModelSpec (errormodels/model_spec.hpp), read once by the caller
+// (loadErrorModel) and written once (writeErrorModel); findings carry EffectSpecs in SI and
+// improve() changes the spec with the functions on specs, never its text.
 //
 // Definitions (docs: README "Diagnose"):
 //   band      the central `bandLevel` interval of a record's ADEV (PSD band) estimate under the
@@ -37,16 +41,10 @@
 #include <string>
 #include <vector>
 
+#include "errormodels/model_spec.hpp"
 #include "errormodels/stats/record.hpp"
 
 namespace sinsim::errormodels::diagnose {
-
-/// A model file's text (YAML, the error-model format) and the name it is known by.
-struct ModelText {
-  std::string text;
-  std::string name;
-  static ModelText load(const std::string& path);  ///< InputError if unreadable
-};
 
 struct DiagnoseOptions {
   /// Channels "gx".."az" to diagnose; empty: every channel the record has.
@@ -88,7 +86,8 @@ struct Finding {
   std::string effect;    ///< catalogue type, e.g. "random_walk"
   std::string evidence;  ///< why, in words with numbers
   std::string size;      ///< fitted size in words, e.g. "K = 0.012 deg/h/sqrt(h)"
-  std::string yaml;      ///< the effect in model-file syntax, e.g. "{type: ramp, slope: ...}"
+  /// The effect as it is added to the model (SI); effectText() shows it in model-file syntax.
+  EffectSpec spec;
   std::map<std::string, double> params;  ///< fitted parameters, SI
   double score = 0.0;
   bool reported = false;  ///< score >= threshold (accepted by the forward selection)
@@ -119,7 +118,7 @@ struct AxisDiagnosis {
 };
 
 struct Diagnosis {
-  std::string data, model;
+  std::string data, model;  ///< the record's and the model's names (record.source, spec.source)
   double rate = 0.0;
   std::size_t samples = 0, realisations = 0;
   double threshold = 8.0;
@@ -130,8 +129,10 @@ struct Diagnosis {
 
 /// Compares the model with the record, per channel. Throws InputError for a channel the record
 /// lacks, a model that needs temperature when the record has none, too few samples (< 256),
-/// fewer than 8 realisations; ConfigError for a bad model file.
-Diagnosis diagnose(const Record& record, const ModelText& model, const DiagnoseOptions& options = {});
+/// fewer than 8 realisations; ConfigError for a model whose effects refuse their parameters.
+/// model.source names the model in the diagnosis and in messages.
+Diagnosis diagnose(const Record& record, const ErrorModelSpec& model,
+                   const DiagnoseOptions& options = {});
 
 /// One request of --add: an effect type (or "found": every reported finding) and a channel
 /// ("" = every diagnosed channel).
@@ -143,7 +144,7 @@ struct AddRequest {
 
 struct AxisChange {
   std::string channel;
-  std::vector<std::string> added;  ///< effect YAML added to this channel
+  std::vector<EffectSpec> added;   ///< effects added to this channel (effectText shows them)
   double noiseScale = 1.0;         ///< variance factor applied to the base noise
   double misfitBefore = 0, misfitAfter = 0;
   double fractionOutsideBefore = 0, fractionOutsideAfter = 0;
@@ -151,19 +152,22 @@ struct AxisChange {
 
 struct Improvement {
   Diagnosis before, after;
-  ModelText model;  ///< the improved model file
+  /// The improved model (source: "<model> (improved)"), values as writeErrorModel writes them;
+  /// for compareModels, the second model.
+  ErrorModelSpec model;
   std::vector<AxisChange> changes;
   std::vector<std::string> notes;  ///< requests that could not be honoured, and why
 };
 
 /// Diagnoses, refits the requested effects (sizes from the data with the base noise level
-/// refitted, as in the findings), writes them into the model text and diagnoses again.
-Improvement improve(const Record& record, const ModelText& model,
+/// refitted, as in the findings), adds them to the model and diagnoses again. Throws
+/// InputError naming the model when the improved model is not a valid one.
+Improvement improve(const Record& record, const ErrorModelSpec& model,
                     const std::vector<AddRequest>& adds, const DiagnoseOptions& options = {});
 
 /// Compares the record with a second model file (e.g. one the user edited) as before -> after.
-Improvement compareModels(const Record& record, const ModelText& before, const ModelText& after,
-                          const DiagnoseOptions& options = {});
+Improvement compareModels(const Record& record, const ErrorModelSpec& before,
+                          const ErrorModelSpec& after, const DiagnoseOptions& options = {});
 
 /// The catalogue effects the diagnosis can detect and add.
 const std::vector<std::string>& detectableEffects();
@@ -171,7 +175,7 @@ const std::vector<std::string>& detectableEffects();
 /// A static record of `samples` samples at rate [Hz] produced by `model` (the machinery of
 /// `sinsim synth`: ImuErrorModel realisation `key`, ideal rates `ideal` [rad/s x3, m/s^2 x3]
 /// held constant, temperature [K] per sample or empty). Writes gx..az (and temperature).
-Record simulateRecord(const ModelText& model, double rate, std::size_t samples,
+Record simulateRecord(const ErrorModelSpec& model, double rate, std::size_t samples,
                       std::uint64_t seed, std::uint64_t run, const std::vector<double>& ideal,
                       const std::vector<double>& temperatureK = {});
 
@@ -184,7 +188,9 @@ std::string toJson(const Improvement& imp);
 std::string summaryTable(const Diagnosis& d);
 std::string summaryTable(const Improvement& imp);
 
-/// Writes text to path through a temporary renamed into place (never half-written).
-void writeFileAtomic(const std::string& path, const std::string& text);
+/// An effect of a channel ("gx".."az") in model-file syntax, e.g. {type: ramp, slope: 12 deg/h^2}:
+/// the one writer's inline form (errormodels/model_io.hpp: effectYaml) in the channel's units;
+/// "" for an empty spec.
+std::string effectText(const EffectSpec& effect, const std::string& channel);
 
 }  // namespace sinsim::errormodels::diagnose

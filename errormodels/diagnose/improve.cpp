@@ -8,21 +8,16 @@
 #include "errormodels/diagnose/base_refit.hpp"
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
-#include "errormodels/diagnose/model_text.hpp"
+#include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/run.hpp"
+#include "errormodels/imu_model.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
 using namespace detail;
 
 namespace {
-
-/// What improve() changes in the model, per channel.
-struct Edits {
-  std::array<std::vector<std::string>, 6> addYaml;
-  std::array<double, 6> scale{1, 1, 1, 1, 1, 1};
-  std::array<std::vector<double>, 6> arReplace;
-};
 
 AxisChange changeOf(const AxisDiagnosis& b, const AxisDiagnosis& a) {
   AxisChange ch;
@@ -66,7 +61,7 @@ std::vector<std::string> wantedEffects(const AxisDiagnosis& d, const std::vector
 /// parameter). A base fitted to the record usually has the right level, and the short-tau bands
 /// are too narrow for a level nudged by the long-tau points.
 AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wanted,
-                        const ModelText& model, std::vector<const Candidate*>& set,
+                        const ErrorModelSpec& model, std::vector<const Candidate*>& set,
                         std::vector<std::string>& notes) {
   AllanSolution sol = solveAllan(w.prob, {}, {}, true);
   for (const auto& e : wanted) {
@@ -82,7 +77,8 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
       if (!bestC || s.chi2 < bestS.chi2) bestC = &c, bestS = s;
     }
     if (!bestC) {
-      const auto present = modelEffectTypes(model.text, w.channel);
+      const Sensor sensor = isGyro(w.channel) ? Sensor::gyro : Sensor::accel;
+      const auto present = effectTypesOn(model, sensor, w.channel % 3);
       std::string why = std::find(present.begin(), present.end(), e) != present.end()
                             ? "the model already has it"
                             : "no evidence in the record to size it (no temperature channel, no PSD "
@@ -94,15 +90,23 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
     sol = bestS;
   }
   const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
-  if (sol.chi2 - freeLevel.chi2 > 9.0) sol = freeLevel;
+  if (sol.chi2 - freeLevel.chi2 > 9.0) {
+    // A level that reaches 0 would write the base noise with size 0, which no model accepts
+    // (issue 10: "sigma: must be positive, got 0 mg" after the whole diagnosis).
+    if (std::isfinite(freeLevel.s) && freeLevel.s > 0)
+      sol = freeLevel;
+    else
+      notes.push_back(w.d.channel + ": the refitted base noise level is 0 (the added effects take the "
+                                    "whole Allan curve); the base level is kept");
+  }
   return sol;
 }
 
 /// The change of one channel: the wanted effects sized, a base AR at the record's rate refitted
 /// (base_refit.hpp; other bases keep their parameters and take the level refit), the effects'
-/// YAML into edits.
-AxisChange improveChannel(const ChannelWork& w, const Record& record, const ModelText& model,
-                          const std::vector<AddRequest>& adds, Edits& edits,
+/// effects into edits.
+AxisChange improveChannel(const ChannelWork& w, const Record& record, const ErrorModelSpec& model,
+                          const std::vector<AddRequest>& adds, ModelEdits& edits,
                           std::vector<std::string>& notes) {
   AxisChange ch;
   ch.channel = w.d.channel;
@@ -111,7 +115,7 @@ AxisChange improveChannel(const ChannelWork& w, const Record& record, const Mode
   const auto c = std::size_t(w.channel);
   std::vector<const Candidate*> set;
   AllanSolution sol = fitWanted(w, wanted, model, set, notes);
-  const auto arBase = arOfChannel(model.text, w.channel, record.rate_hz);
+  const auto arBase = baseAr(model, w.channel, record.rate_hz);
   if (arBase) edits.arReplace[c] = refitBaseAr(w, record, arBase->size() - 1, set, sol);
   const bool arRefitted = !edits.arReplace[c].empty();
   for (std::size_t j = 0; j < set.size(); ++j) {
@@ -122,11 +126,11 @@ AxisChange improveChannel(const ChannelWork& w, const Record& record, const Mode
     }
     Finding f;
     set[j]->describe(sol.theta[j], f);
-    edits.addYaml[c].push_back(f.yaml);
-    ch.added.push_back(f.yaml);
+    edits.add[c].push_back(f.spec);
+    ch.added.push_back(f.spec);
   }
   if (!ch.added.empty() && !arRefitted) {
-    edits.scale[c] = sol.s;
+    edits.varianceScale[c] = sol.s;
     ch.noiseScale = sol.s;
   }
   if (arRefitted) notes.push_back(w.d.channel + ": base AR refitted (Burg, order " +
@@ -135,31 +139,42 @@ AxisChange improveChannel(const ChannelWork& w, const Record& record, const Mode
   return ch;
 }
 
-std::string improvedHeader(const ModelText& model, const Record& record,
-                           const std::vector<AxisChange>& changes) {
-  std::string header = "Improved by sinsim diagnose from " + model.name + " and " + record.source + ":";
+/// The comment lines above the improved model: what was changed, then the model's own header.
+std::vector<std::string> improvedHeader(const ErrorModelSpec& model, const Record& record,
+                                        const std::vector<AxisChange>& changes) {
+  std::vector<std::string> header{"Improved by sinsim diagnose from " + model.source + " and " +
+                                  record.source + ":"};
   for (const auto& ch : changes)
-    for (const auto& a : ch.added) header += "\n  " + ch.channel + " += " + a;
+    for (const auto& a : ch.added) header.push_back("  " + ch.channel + " += " + effectText(a, ch.channel));
   for (const auto& ch : changes)
     if (!ch.added.empty() && std::fabs(ch.noiseScale - 1) > 1e-9)
-      header += "\n  " + ch.channel + ": base noise scaled by sqrt(" + num(ch.noiseScale, 6) + ")";
+      header.push_back("  " + ch.channel + ": base noise scaled by sqrt(" + num(ch.noiseScale, 6) + ")");
+  if (!model.headerComments.empty()) header.push_back("");
+  header.insert(header.end(), model.headerComments.begin(), model.headerComments.end());
   return header;
 }
 
 }  // namespace
 
-Improvement improve(const Record& record, const ModelText& model, const std::vector<AddRequest>& adds,
+Improvement improve(const Record& record, const ErrorModelSpec& model, const std::vector<AddRequest>& adds,
                     const DiagnoseOptions& options) {
   if (adds.empty()) throw InputError("nothing to add");
   const Run run = diagnoseRun(record, model, options);
   Improvement imp;
   imp.before = run.d;
-  Edits edits;
+  ModelEdits edits;
   std::vector<AxisChange> changes;
   for (const auto& w : run.work) changes.push_back(improveChannel(w, record, model, adds, edits, imp.notes));
-  imp.model.name = model.name + " (improved)";
-  imp.model.text = editModel(model.text, edits.addYaml, edits.scale,
-                             improvedHeader(model, record, changes), edits.arReplace);
+  // The values as the written file will hold them, so the comparison after is of that file.
+  imp.model = asWritten(editedModel(model, edits));
+  imp.model.source = model.source + " (improved)";
+  imp.model.headerComments = improvedHeader(model, record, changes);
+  try {
+    (void)ImuErrorModel::fromSpec(imp.model, imp.model.source);
+  } catch (const ConfigError& e) {
+    throw InputError("the model improved from " + model.source + " is not valid (nothing written): " +
+                     e.what());
+  }
   imp.after = diagnose(record, imp.model, options);
   for (auto& ch : changes) {
     AxisChange full = changeOf(imp.before.axis(ch.channel), imp.after.axis(ch.channel));
@@ -170,7 +185,7 @@ Improvement improve(const Record& record, const ModelText& model, const std::vec
   return imp;
 }
 
-Improvement compareModels(const Record& record, const ModelText& before, const ModelText& after,
+Improvement compareModels(const Record& record, const ErrorModelSpec& before, const ErrorModelSpec& after,
                           const DiagnoseOptions& options) {
   Improvement imp;
   imp.before = diagnose(record, before, options);

@@ -91,17 +91,17 @@ McResult monteCarlo(const ImuErrorModel& model, const Record& record,
 
 }  // namespace detail
 
-Record simulateRecord(const ModelText& model, double rate, std::size_t samples, std::uint64_t seed,
+Record simulateRecord(const ErrorModelSpec& model, double rate, std::size_t samples, std::uint64_t seed,
                       std::uint64_t run, const std::vector<double>& ideal,
                       const std::vector<double>& temperatureK) {
   if (ideal.size() != 6) throw InputError("simulateRecord: 6 ideal values expected");
   if (!temperatureK.empty() && temperatureK.size() != samples)
     throw InputError("simulateRecord: one temperature per sample expected");
-  const auto m = ImuErrorModel::fromString(model.text, model.name);
+  const auto m = ImuErrorModel::fromSpec(model, model.source);
   std::array<std::vector<double>, 6> out;
   detail::simulate(m, rate, samples, ideal, temperatureK, seed, run, {0, 1, 2, 3, 4, 5}, out);
   Record r;
-  r.source = model.name + " (simulated, seed " + std::to_string(seed) + ")";
+  r.source = model.source + " (simulated, seed " + std::to_string(seed) + ")";
   r.rate_hz = rate;
   r.rows = samples;
   for (int a = 0; a < 3; ++a) r.gyro[a] = std::move(out[a]), r.accel[a] = std::move(out[3 + a]);

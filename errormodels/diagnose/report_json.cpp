@@ -28,11 +28,11 @@ nlohmann::json failsJson(const std::vector<FailRange>& fails) {
   return j;
 }
 
-nlohmann::json findingsJson(const std::vector<Finding>& findings) {
+nlohmann::json findingsJson(const AxisDiagnosis& a) {
   nlohmann::json j = nlohmann::json::array();
-  for (const auto& f : findings)
+  for (const auto& f : a.findings)
     j.push_back({{"effect", f.effect}, {"evidence", f.evidence}, {"size", f.size},
-                 {"yaml", f.yaml}, {"params", f.params}, {"score", f.score},
+                 {"yaml", effectText(f.spec, a.channel)}, {"params", f.params}, {"score", f.score},
                  {"reported", f.reported}});
   return j;
 }
@@ -54,7 +54,7 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   else
     j["ljung_box"] = nullptr;
   j["fails"] = failsJson(a.fails);
-  j["findings"] = findingsJson(a.findings);
+  j["findings"] = findingsJson(a);
   j["units"] = {{"adev", "SI (rad/s or m/s^2)"}, {"psd", "SI^2/Hz"}, {"tau", "s"}, {"f", "Hz"}};
   j["curves"] = {{"adev", curveJson(a.adev, "tau")}, {"psd", curveJson(a.psd, "f")},
                  {"acf", curveJson(a.acf, "lag")}};
@@ -81,7 +81,7 @@ std::string toJson(const Diagnosis& d) { return diagnosisJson(d).dump(1) + "\n";
 
 std::string toJson(const Improvement& imp) {
   nlohmann::json j;
-  j["model_written"] = imp.model.name;
+  j["model_written"] = imp.model.source;
   j["notes"] = imp.notes;
   j["axes"] = nlohmann::json::array();
   for (const auto& ch : imp.changes) {
@@ -90,7 +90,9 @@ std::string toJson(const Improvement& imp) {
     a["misfit_after"] = ch.misfitAfter;
     a["fraction_outside_before"] = ch.fractionOutsideBefore;
     a["fraction_outside_after"] = ch.fractionOutsideAfter;
-    a["added"] = ch.added;
+    std::vector<std::string> added;
+    for (const auto& e : ch.added) added.push_back(effectText(e, ch.channel));
+    a["added"] = added;
     a["noise_scale_applied"] = ch.noiseScale;
     a["after"] = axisJson(imp.after.axis(ch.channel), imp.after.threshold);
     j["axes"].push_back(a);

@@ -67,7 +67,7 @@ std::string summaryTable(const Improvement& imp) {
     << pad("after", 8) << "added\n";
   for (const auto& ch : imp.changes) {
     std::string added;
-    for (const auto& a : ch.added) added += (added.empty() ? "" : "; ") + a;
+    for (const auto& a : ch.added) added += (added.empty() ? "" : "; ") + effectText(a, ch.channel);
     o << pad(ch.channel, 8) << pad(num(ch.misfitBefore, 3), 15) << pad(num(ch.misfitAfter, 3), 8)
       << pad(num(100 * ch.fractionOutsideBefore, 3) + " %", 16)
       << pad(num(100 * ch.fractionOutsideAfter, 3) + " %", 8) << (added.empty() ? "-" : added) << "\n";

@@ -25,6 +25,6 @@ struct Run {
 };
 
 /// The diagnosis with its working state (diagnose() keeps only run.d).
-Run diagnoseRun(const Record& record, const ModelText& model, const DiagnoseOptions& o);
+Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& o);
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -6,11 +6,9 @@ namespace sinsim::errormodels::diagnose::detail {
 /// Scores are capped here (a p-value beyond it underflows and says nothing more).
 constexpr double kMaxScore = 40.0;
 
-/// z with P(|Z| > z) = p (two-sided), by bisection on erfc to 1e-12; kMaxScore when p underflows.
+/// z with P(|Z| > z) = p (two-sided; stats/special.hpp normalTwoSidedCritical), capped at
+/// kMaxScore (also when p underflows to 0); 0 for p >= 1.
 double zFromTwoSidedP(double p);
-/// The same z as the upper end of 200 bisection steps on [0, 40] (the look-elsewhere thresholds
-/// of the PSD-line and outlier tests).
-double zUpperBisect(double p);
 /// Student-t statistic with nu dof -> Gaussian-equivalent z (Wallace 1959):
 /// z = sqrt(nu ln(1 + t^2/nu)) (8 nu + 1) / (8 nu + 3).
 double zFromStudentT(double t, double nu);

@@ -13,6 +13,7 @@
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
 #include "common/units.hpp"
+#include "errormodels/stats/record_time.hpp"
 
 namespace sinsim::errormodels {
 namespace {
@@ -40,11 +41,7 @@ std::string lower(std::string_view s) {
 }
 
 [[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& what) {
-  std::ostringstream os;
-  os << source;
-  if (line > 0) os << ":" << line;
-  os << ": " << what;
-  throw InputError(os.str());
+  detail::recordError(source, line, what);
 }
 
 /// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
@@ -139,15 +136,19 @@ UnitSpec resolveUnit(std::string_view header_unit, const std::optional<std::stri
   return spec;
 }
 
-std::vector<Column> parseHeader(std::string_view header, const std::string& source,
-                                std::size_t line, const RecordOptions& options) {
+/// The mapping entry for the header field `name` (lower case) at 1-based position `pos`.
+const ColumnMap* mappedAs(const std::vector<ColumnMap>& mapping, const std::string& name,
+                          std::size_t pos) {
+  for (const ColumnMap& m : mapping)
+    if (m.byNumber() ? m.column == std::to_string(pos) : m.column == name) return &m;
+  return nullptr;
+}
+
+std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
+                                const std::string& source, std::size_t line,
+                                const RecordOptions& options) {
   std::vector<Column> cols;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = header.find(',', start);
-    std::string_view field =
-        trim(header.substr(start, comma == std::string_view::npos ? std::string_view::npos
-                                                                  : comma - start));
+  for (std::string_view field : fields) {
     if (cols.size() >= limits::kMaxRecordColumns)
       fail(source, line, "header: more than " + std::to_string(limits::kMaxRecordColumns) +
                              " columns (docs/limits.md)");
@@ -165,7 +166,18 @@ std::vector<Column> parseHeader(std::string_view header, const std::string& sour
       name = trim(field.substr(0, open));
       unit = trim(field.substr(open + 1, close - open - 1));
     }
-    const std::string key = lower(name);
+    std::string key = lower(name);
+    if (const ColumnMap* m = mappedAs(options.columns, key, cols.size() + 1)) {
+      if (!m->unit.empty() && !unit.empty() && lower(m->unit) != lower(unit))
+        fail(source, line, "column \"" + col.header + "\": unit [" + std::string(unit) +
+                               "] in the file and [" + m->unit + "] in the column mapping");
+      if (!m->unit.empty()) unit = m->unit;
+      key = m->quantity;
+    } else {
+      const std::string q = key == "time" ? "t" : key == "temperature" ? "temp" : key;
+      for (const ColumnMap& m : options.columns)
+        if (m.quantity == q) key.clear();  // the mapping reads this quantity from another column
+    }
     if (key == "t" || key == "time") {
       col.role = Role::Time;
       UnitSpec u = resolveUnit(unit, std::nullopt, "s", Dimension::time(), source, line, col.header);
@@ -193,17 +205,29 @@ std::vector<Column> parseHeader(std::string_view header, const std::string& sour
                                "\" hold the same quantity");
     }
     cols.push_back(col);
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
+  }
+  for (const ColumnMap& m : options.columns) {
+    bool found = false;
+    for (std::size_t i = 0; i < fields.size() && !found; ++i) {
+      std::string_view f = fields[i];
+      const std::size_t open = f.find_first_of("[(");
+      found = m.byNumber() ? m.column == std::to_string(i + 1)
+                           : lower(trim(f.substr(0, open))) == m.column;
+    }
+    if (!found)
+      fail(source, line, "column mapping " + m.quantity + "=" + m.column + ": the file has no " +
+                             (m.byNumber() ? "column " + m.column + " (it has " +
+                                                 std::to_string(fields.size()) + ")"
+                                           : "column named \"" + m.column + "\""));
   }
   return cols;
 }
 
-/// Parses one number occupying [p, end) up to the next ',' or end of line; returns the position
-/// after the field (at the separator or end). Throws with line/column context on anything that
-/// is not a finite number.
+/// Parses one number occupying [p, end) up to the next separator or end of line; returns the
+/// position after the field (at a character separator, at the next field after blanks, or at the
+/// end). Throws with line/column context on anything that is not a finite number.
 inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
-                              const std::string& source, std::size_t line) {
+                              const Separator& sep, const std::string& source, std::size_t line) {
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
   const char* q = p;
   if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
@@ -213,9 +237,10 @@ inline const char* parseField(const char* p, const char* end, double& value, con
     fail(source, line, "column \"" + col.header + "\": a field longer than " +
                            std::to_string(limits::kMaxFieldChars) + " characters");
   while (after < end && (*after == ' ' || *after == '\t' || *after == '\r')) ++after;
-  if (res.ec != std::errc() || (after < end && *after != ',') || !std::isfinite(value)) {
+  const bool separated = after == end || (sep.blanks ? after > res.ptr : *after == sep.c);
+  if (res.ec != std::errc() || !separated || !std::isfinite(value)) {
     const char* stop = p;
-    while (stop < end && *stop != ',' && *stop != '\r') ++stop;
+    while (stop < end && !sep.at(*stop) && *stop != '\r') ++stop;
     const std::string text = limits::echo(std::string_view(p, static_cast<std::size_t>(stop - p)));
     if (res.ec == std::errc::result_out_of_range)
       fail(source, line, "column \"" + col.header + "\": number out of range: \"" + text + "\"");
@@ -225,76 +250,16 @@ inline const char* parseField(const char* p, const char* end, double& value, con
   return after;
 }
 
-/// Checks that time stamps increase and are uniform; first_line is the file line of row 0.
-void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options) {
-  const std::vector<double>& t = rec.t;
-  const std::size_t n = t.size();
-  auto lineOf = [&](std::size_t row) { return first_line + row; };
-  for (std::size_t k = 1; k < n; ++k) {
-    if (!(t[k] > t[k - 1])) {
-      fail(rec.source, lineOf(k),
-           "time stamp " + std::to_string(t[k]) + " s does not increase (previous " +
-               std::to_string(t[k - 1]) + " s)");
-    }
-  }
-  double dt0 = 0.0;
-  if (n >= 2) {
-    std::vector<double> dt(n - 1);
-    for (std::size_t k = 1; k < n; ++k) dt[k - 1] = t[k] - t[k - 1];
-    auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-    std::nth_element(dt.begin(), mid, dt.end());
-    dt0 = *mid;  // median step: robust to a few gaps
-  }
-  if (options.rate_hz) {
-    const double dt_opt = 1.0 / *options.rate_hz;
-    if (n >= 2 && std::abs(dt_opt - dt0) > options.time_tolerance * dt_opt) {
-      std::ostringstream os;
-      os << "the rate option " << *options.rate_hz << " Hz disagrees with the time stamps (median step "
-         << dt0 << " s, i.e. " << 1.0 / dt0 << " Hz)";
-      fail(rec.source, 0, os.str());
-    }
-    dt0 = dt_opt;
-  }
-  if (n < 2 && !options.rate_hz) fail(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");
-  rec.rate_hz = 1.0 / dt0;
-  std::size_t count = 0;
-  std::vector<TimeIrregularity> found;
-  for (std::size_t k = 1; k < n; ++k) {
-    const double dt = t[k] - t[k - 1];
-    if (std::abs(dt - dt0) > options.time_tolerance * dt0) {
-      ++count;
-      if (found.size() < 1000) found.push_back({lineOf(k), k, t[k], dt, dt > 1.5 * dt0});
-    }
-  }
-  rec.irregular_count = count;
-  if (count > 0 && !options.allow_irregular_time) {
-    std::ostringstream os;
-    os << count << " irregular time step(s) (nominal " << dt0 << " s, tolerance "
-       << options.time_tolerance * 100 << " %); first at:";
-    for (std::size_t i = 0; i < std::min<std::size_t>(found.size(), 5); ++i) {
-      os << (i ? "," : "") << " line " << found[i].line << " (t = " << found[i].t << " s, dt = "
-         << found[i].dt << " s" << (found[i].gap ? ", gap" : "") << ")";
-    }
-    os << ". Records are not resampled; fix the file or allow irregular time.";
-    fail(rec.source, 0, os.str());
-  }
-  rec.irregularities = std::move(found);
-}
-
-/// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate).
-void checkRate(double rate, const std::string& source, const std::string& what) {
-  if (!(rate >= limits::kMinRate && rate <= limits::kMaxRate))
-    fail(source, 0, what + " " + limits::fmt(rate) + " Hz is outside what an IMU record can be (" +
-                        limits::fmt(limits::kMinRate) + " to " + limits::fmt(limits::kMaxRate) +
-                        " Hz; docs/limits.md)");
-}
-
 }  // namespace
 
 Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
-  if (options.rate_hz) checkRate(*options.rate_hz, source, "the rate option");
+  if (options.rate_hz) detail::checkRate(*options.rate_hz, source, "the rate option");
   if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
     fail(source, 0, "time tolerance must be positive");
+  if (!(std::isfinite(options.skip_s) && options.skip_s >= 0))
+    fail(source, 0, "skip: expected a non-negative time, got " + limits::fmt(options.skip_s));
+  if (options.duration_s && !(std::isfinite(*options.duration_s) && *options.duration_s > 0))
+    fail(source, 0, "duration: expected a positive time, got " + limits::fmt(*options.duration_s));
 
   // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
@@ -302,20 +267,35 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
   const char* const end = p + text.size();
   std::size_t line = 0;
   // Comment lines and blank lines before the header.
+  const bool noHeader = headerless(options.columns);
   std::string_view header;
   while (p < end) {
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
     if (eol == nullptr) eol = end;
     ++line;
     std::string_view l = trim(std::string_view(p, static_cast<std::size_t>(eol - p)));
+    const char* const lineStart = p;
     p = eol < end ? eol + 1 : end;
     if (l.empty() || l.front() == '#') continue;
     header = l;
+    if (noHeader) {  // the first data row: read again below
+      p = lineStart;
+      --line;
+    }
     break;
   }
   if (header.empty()) fail(source, 0, "empty file: no header line and no data");
   const std::size_t header_line = line;
-  std::vector<Column> cols = parseHeader(header, source, line, options);
+  const Separator sep = options.separator ? *options.separator : detectSeparator(header);
+  std::vector<std::string_view> fields = splitHeader(header, sep);
+  std::vector<std::string> numbered;  // a file without a header: "column 1", "column 2", ...
+  if (noHeader) {
+    for (std::size_t i = 0; i < fields.size(); ++i) numbered.push_back(std::to_string(i + 1));
+    fields.assign(numbered.begin(), numbered.end());
+  }
+  std::vector<Column> cols = parseHeader(fields, source, line, options);
+  if (noHeader)
+    for (Column& c : cols) c.header = "column " + c.header;
   const std::size_t ncol = cols.size();
 
   // Upper bound of the row count, so that columns are written in place.
@@ -348,13 +328,13 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
                                std::to_string(ncol));
       }
       double v;
-      q = parseField(q, eol, v, cols[c], source, line);
+      q = parseField(q, eol, v, cols[c], sep, source, line);
       data[c][rows] = v;
       if (c + 1 < ncol) {
         if (q >= eol)
           fail(source, line, "short row: " + std::to_string(c + 1) + " field(s), the header has " +
                                  std::to_string(ncol));
-        ++q;  // the ','
+        if (!sep.blanks) ++q;  // the separator (blanks were skipped by parseField)
       }
     }
     if (q < eol) {
@@ -393,13 +373,14 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     }
   }
   if (!rec.t.empty()) {
-    checkTime(rec, header_line + 1, options);
+    detail::checkTime(rec, header_line + 1, options);
   } else {
     if (!options.rate_hz)
-      fail(source, 0, "the file has no time column (t): give the sample rate");
+      fail(source, 0, "the file has no time column (t): give the sample rate, or name its time column in the column mapping (t=NAME)");
     rec.rate_hz = *options.rate_hz;
   }
-  checkRate(rec.rate_hz, source, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
+  detail::checkRate(rec.rate_hz, source, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
+  detail::applyWindow(rec, options);
   return rec;
 }
 

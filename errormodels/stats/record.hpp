@@ -1,15 +1,16 @@
 // A measured IMU record read from CSV (plain or gzip): the entry point of the identify path.
 //
 // File format: optional '#' comment lines, one header line, then one row per sample, fields
-// separated by ','. Recognised column names (case-insensitive, surrounding blanks ignored):
+// separated by ',', ';' or blanks (detected from the header; record_layout.hpp). Recognised column names (case-insensitive, surrounding blanks ignored):
 //   t | time            time stamp            default unit s
 //   gx gy gz            angular rate          default unit rad/s  (RecordOptions::gyro_unit)
 //   ax ay az            specific force        default unit m/s^2  (RecordOptions::accel_unit)
 //   temp | temperature  sensor temperature    default unit degC
 // A unit may be written in the header after the name in brackets or parentheses, e.g.
 // "gx [deg/s]", "ax (g)", "t[ms]"; it is parsed with sinsim::parseUnit and its dimension checked.
-// Every other column is kept, unconverted, as an auxiliary channel. Values are converted to SI
-// once, here; everything downstream is SI.
+// Every other column is kept, unconverted, as an auxiliary channel. Other names are read through
+// a column mapping (RecordOptions::columns: "gx=GyroX[deg/s]", or by column number for a file
+// without a header). Values are converted to SI once, here; everything downstream is SI.
 #pragma once
 
 #include <array>
@@ -18,6 +19,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "errormodels/stats/record_layout.hpp"
 
 namespace sinsim::errormodels {
 
@@ -36,6 +39,14 @@ struct RecordOptions {
   /// true: they are listed in Record::irregularities and the record is returned as read
   /// (never resampled).
   bool allow_irregular_time = false;
+  /// Field separator; unset: detected from the header line.
+  std::optional<Separator> separator;
+  /// Column mapping (parseColumnMapping); empty: the standard names above.
+  std::vector<ColumnMap> columns;
+  /// [s] Discard this much of the start of the record (e.g. a warm-up). >= 0.
+  double skip_s = 0.0;
+  /// [s] Keep only this much after the skip; unset: the rest of the record.
+  std::optional<double> duration_s;
 };
 
 /// One time step that departs from the nominal step (only records with a time column).

@@ -20,12 +20,14 @@
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
-#include "errormodels/diagnose/model_text.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
+#include "errormodels/model_io.hpp"
 
 namespace dg = sinsim::errormodels::diagnose;
+using sinsim::errormodels::ErrorModelSpec;
+using sinsim::errormodels::errorModelFromString;
 using sinsim::errormodels::Record;
 
 namespace {
@@ -50,18 +52,20 @@ Record record(const std::string& hidden, std::uint64_t seed,
               const std::vector<double>& temperatureK = {}) {
   const std::string truth = kBase + hidden;
   // Earth rate and gravity are irrelevant to a static gyro-x record: ideal 0.
-  return dg::simulateRecord({truth, "truth.yaml"}, kRate, kSamples, seed, 0,
+  return dg::simulateRecord(errorModelFromString(truth, "truth.yaml"), kRate, kSamples, seed, 0,
                             {0, 0, 0, 0, 0, 0}, temperatureK);
 }
 
 /// The base model as the identify pipeline fits it: Burg AR(2) on the record (hidden effect and all).
-dg::ModelText fitBase(const Record& r) {
+ErrorModelSpec fitBase(const Record& r) {
   sinsim::errormodels::IdentifyOptions io;
   io.axes = {"gx"};
   io.kind = sinsim::errormodels::IdentifyKind::Ar;
   io.order = 2;  // the base family's order (MDL picks 2 on the base record alone)
   const auto id = sinsim::errormodels::identify(r, io);
-  return {id.modelYaml(), "fitted.yaml"};
+  auto spec = sinsim::errormodels::asWritten(id.modelSpec());  // as the fit's file holds it
+  spec.source = "fitted.yaml";
+  return spec;
 }
 
 void print(const dg::AxisDiagnosis& a) {
@@ -203,8 +207,11 @@ TEST_CASE("the same seed gives identical diagnoses and threads do not matter", "
 TEST_CASE("the improved model file loads and its JSON carries before and after", "[diagnose]") {
   const auto r = record("    - {type: warmup, amplitude: 0.1 deg/s, tau: 60 s}\n", 107);
   const auto imp = dg::improve(r, fitBase(r), {dg::AddRequest::parse("warmup")}, options());
-  // The written model is an ordinary model file: it loads and names the added effect.
-  const auto m = sinsim::errormodels::ImuErrorModel::fromString(imp.model.text, "improved.yaml");
+  // The written model is an ordinary model file: it reads back as the improved spec (whose values
+  // are as written) and names the added effect.
+  const std::string text = sinsim::errormodels::errorModelYaml(imp.model);
+  CHECK(errorModelFromString(text, "improved.yaml") == imp.model);
+  const auto m = sinsim::errormodels::ImuErrorModel::fromString(text, "improved.yaml");
   bool hasWarmup = false;
   for (const auto& n : m.effectNames()) hasWarmup = hasWarmup || n.find("warmup") != std::string::npos;
   CHECK(hasWarmup);
@@ -225,8 +232,8 @@ TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
   o.realisations = 4;
   CHECK_THROWS_WITH(dg::diagnose(r, fitBase(r), o), Catch::Contains("at least 8"));
   // A temperature model on a record without temperature.
-  const dg::ModelText temp{"gyro:\n  x:\n    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}\n",
-                           "t.yaml"};
+  const auto temp = errorModelFromString(
+      "gyro:\n  x:\n    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}\n", "t.yaml");
   CHECK_THROWS_WITH(dg::diagnose(r, temp, options()), Catch::Contains("temperature"));
 }
 
@@ -243,19 +250,24 @@ TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
 }
 
 // The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
-// `false` and `off` switch it off for both (the simulator's side is in test_model_spec).
-TEST_CASE("a disabled effect is absent for the diagnosis, as for the simulator") {
-  using sinsim::errormodels::diagnose::detail::modelEffectTypes;
+// `false` and `off` switch it off for both (the reader's side is in test_model_spec). A ramp on gx
+// listed after the base keeps the base's random streams (they are keyed by list position), so a
+// model with the ramp disabled must give the diagnosis of the model without it, bit for bit: the
+// same realisations (simulator) and the same candidates, the ramp among them (diagnosis).
+TEST_CASE("a disabled effect is absent for the diagnosis, as for the simulator", "[diagnose]") {
+  const auto r = record("    - {type: ramp, slope: 900 deg/h^2}\n", 113);
+  auto o = options();
+  o.realisations = 8;
+  const auto without = errorModelFromString(kBase, "m.yaml");
+  const std::string absent = dg::toJson(dg::diagnose(r, without, o));
+  CHECK(absent.find("\"effect\": \"ramp\"") != std::string::npos);
   for (const char* off : {"no", "false", "off"}) {
-    const std::string text = std::string("gyro:\n  all: [{type: white, density: 0.1 deg/sqrt(h)}]\n"
-                                         "  y: [{type: ramp, slope: 1 deg/h^2, enabled: ") +
-                             off + "}]\n";
-    const auto gy = modelEffectTypes(text, 1);
-    CHECK(std::find(gy.begin(), gy.end(), "ramp") == gy.end());
-    CHECK(std::find(gy.begin(), gy.end(), "white") != gy.end());
+    INFO("enabled: " << off);
+    const auto disabled = errorModelFromString(
+        kBase + "    - {type: ramp, slope: 900 deg/h^2, enabled: " + off + "}\n", "m.yaml");
+    CHECK(dg::toJson(dg::diagnose(r, disabled, o)) == absent);
   }
-  const auto on = modelEffectTypes(
-      "gyro:\n  y: [{type: ramp, slope: 1 deg/h^2, enabled: yes}]\n", 1);
-  CHECK(std::find(on.begin(), on.end(), "ramp") != on.end());
-  CHECK(modelEffectTypes("gyro:\n  y: [{type: ramp, slope: 1 deg/h^2}]\n", 0).empty());
+  // Enabled, the ramp is in the model: no ramp candidate.
+  const auto on = errorModelFromString(kBase + "    - {type: ramp, slope: 900 deg/h^2, enabled: yes}\n", "m.yaml");
+  CHECK(dg::toJson(dg::diagnose(r, on, o)).find("\"effect\": \"ramp\"") == std::string::npos);
 }

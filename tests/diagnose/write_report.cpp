@@ -4,6 +4,7 @@
 
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/identify.hpp"
+#include "errormodels/model_io.hpp"
 #include "sim/diagnose_report.hpp"
 
 int main(int argc, char** argv) {
@@ -15,12 +16,13 @@ int main(int argc, char** argv) {
   const std::string truth =
       "gyro:\n  x:\n    - {type: ar, a: [-1.2, 0.4], sigma: 0.02 deg/s, rate: 100 Hz}\n"
       "    - {type: random_walk, K: 0.0005 deg/s/sqrt(s)}\n";
-  const auto r = dg::simulateRecord({truth, "truth.yaml"}, 100, 100000, 5, 0, {0, 0, 0, 0, 0, 0});
+  const auto r = dg::simulateRecord(sinsim::errormodels::errorModelFromString(truth, "truth.yaml"), 100, 100000, 5, 0, {0, 0, 0, 0, 0, 0});
   sinsim::errormodels::IdentifyOptions io;
   io.axes = {"gx"};
   io.kind = sinsim::errormodels::IdentifyKind::Ar;
   io.order = 2;
-  const dg::ModelText base{sinsim::errormodels::identify(r, io).modelYaml(), "fitted.yaml"};
+  auto base = sinsim::errormodels::identify(r, io).modelSpec();
+  base.source = "fitted.yaml";
   dg::DiagnoseOptions o;
   o.channels = {"gx"};
   o.realisations = 16;

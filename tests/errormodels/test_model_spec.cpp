@@ -255,6 +255,14 @@ TEST_CASE("spec: 400 random valid specs round-trip through the writer and the re
     const ErrorModelSpec once = roundTrip(spec);
     CHECK(closeSpecs(spec, once));  // equal to the printed digits
     CHECK(roundTrip(once) == once);  // and exactly equal from then on
+    // asWritten is the spec as its file reads back, exactly (no file involved).
+    CHECK(asWritten(spec) == once);
+    // effectYaml is the effect's line of the file.
+    const std::string text = errorModelYaml(spec);
+    for (Sensor s : {Sensor::gyro, Sensor::accel})
+      for (int l = 0; l < 5; ++l)
+        for (const auto& e : spec.sensor(s).list(EffectList(l)))
+          CHECK(text.find("    - " + effectYaml(e, s) + "\n") != std::string::npos);
   }
 }
 

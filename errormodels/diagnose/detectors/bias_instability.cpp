@@ -62,11 +62,14 @@ std::vector<Candidate> detect_bias_instability(const DetectorContext& ctx) {
   c.acov = [m, dt](std::size_t maxLag) { return acov(m, dt, maxLag); };
   c.g = ctx.shape([&](double t) { return avar(m, t); });
   c.evidence = "a flat Allan floor the model falls below (0.664 B)";
-  c.describe = [u, lo, hi](double theta, Finding& f) {
+  const Dimension signalDim = ctx.signal;
+  c.describe = [u, lo, hi, signalDim](double theta, Finding& f) {
     const double B = std::sqrt(theta);
     f.size = "B = " + quantity(B, u.level) + " (floor " + quantity(0.664 * B, u.level) + ")";
-    f.yaml = "{type: bias_instability, B: " + quantity(B, u.level) + ", tau_range: [" +
-             num(lo, 4) + " s, " + num(hi, 4) + " s]}";
+    f.spec = EffectSpec::make(
+        "bias_instability",
+        {ParamSpec::quantity("B", stated(B, u.level), signalDim),
+         ParamSpec::quantities("tau_range", {stated(lo, "s", 4), stated(hi, "s", 4)}, Dimension::time())});
     f.params["B"] = B;
   };
   return {c};

@@ -60,7 +60,7 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   for (double& v : absd) v = std::fabs(v - med);
   const double sigma = 1.482602218505602 * median(absd);
   if (!(sigma > 0)) return {};
-  const double zt = zUpperBisect(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
+  const double zt = zFromTwoSidedP(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
   const auto iso = isolatedPeaks(e, med, sigma, zt, ctx.lattice);
   if (iso.empty()) return {};
   double zmax = 0, sumsq = 0;
@@ -83,9 +83,12 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   c.evidence = std::to_string(iso.size()) + " isolated samples beyond " + num(zt, 3) +
                " robust sigma of the one-step prediction residual (largest " + num(zmax, 4) +
                " sigma, sigma " + quantity(sigma, u.level) + ")";
-  c.describe = [rate, amp, u](double, Finding& f) {
+  const Dimension signalDim = ctx.signal;
+  c.describe = [rate, amp, u, signalDim](double, Finding& f) {
     f.size = num(rate, 4) + " Hz of +-" + quantity(amp, u.level);
-    f.yaml = "{type: outliers, rate: " + num(rate, 6) + " Hz, amplitude: " + quantity(amp, u.level) + "}";
+    f.spec = EffectSpec::make("outliers",
+                              {ParamSpec::quantity("rate", stated(rate, "Hz"), Dimension::frequency()),
+                               ParamSpec::quantity("amplitude", stated(amp, u.level), signalDim)});
     f.params["rate"] = rate;
     f.params["amplitude"] = amp;
   };

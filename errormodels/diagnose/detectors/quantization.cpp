@@ -24,9 +24,10 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   rateLsb.zSpecial = kMaxScore;
   rateLsb.lsbRate = q;
   rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
-  rateLsb.describe = [q, u](double, Finding& f) {
+  const Dimension signalDim = ctx.signal;
+  rateLsb.describe = [q, u, signalDim](double, Finding& f) {
     f.size = "LSB " + quantity(q, u.level) + " (rate output, each sample rounded)";
-    f.yaml = "{type: quantization, lsb: " + quantity(q, u.level) + "}";
+    f.spec = EffectSpec::make("quantization", {ParamSpec::quantity("lsb", stated(q, u.level), signalDim)});
     f.params["lsb"] = q;
     f.params["lattice"] = q;
   };
@@ -35,9 +36,11 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   // Increment output with carry: AVAR = 3 Q^2 / tau^2, Q = q dt / sqrt(12) (IEEE 952 C).
   carry.g = ctx.shape([&](double t) { return q * q * dt * dt / (4.0 * t * t); });
   carry.evidence = ev + "; remainder carried (Allan slope -1)";
-  carry.describe = [q, dt, u](double, Finding& f) {
+  carry.describe = [q, dt, u, signalDim](double, Finding& f) {
     f.size = "LSB " + quantity(q * dt, u.increment) + " (increment output, carried)";
-    f.yaml = "{type: quantization, lsb: " + quantity(q * dt, u.increment) + "}";
+    // An increment LSB: the effect carries the remainder (effects/quantization.cpp).
+    f.spec = EffectSpec::make("quantization", {ParamSpec::quantity("lsb", stated(q * dt, u.increment),
+                                                                   signalDim * Dimension::time())});
     f.params["lsb"] = q * dt;
     f.params["lattice"] = q;
   };

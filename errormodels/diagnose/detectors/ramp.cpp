@@ -63,10 +63,11 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
   // The size written is the least-squares slope: the realised trend of this record, which the
   // long-tau Allan points (deterministic, no scatter) must meet; the Allan fit's R scored it.
-  c.describe = [u, slope](double, Finding& f) {
+  const Dimension rampDim = ctx.signal / Dimension::time();
+  c.describe = [u, slope, rampDim](double, Finding& f) {
     const double R = slope;
     f.size = "R = " + quantity(R, u.slope);
-    f.yaml = "{type: ramp, slope: " + quantity(R, u.slope) + "}";
+    f.spec = EffectSpec::make("ramp", {ParamSpec::quantity("slope", stated(R, u.slope), rampDim)});
     f.params["slope"] = R;
   };
   return {c};

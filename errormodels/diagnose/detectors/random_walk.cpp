@@ -12,9 +12,10 @@ std::vector<Candidate> detect_random_walk(const DetectorContext& ctx) {
   c.effect = "random_walk";
   c.g = ctx.shape([](double t) { return t / 3.0; });  // K^2 tau / 3
   c.evidence = "Allan deviation rising with slope +1/2 at long tau (K^2 tau/3)";
-  c.describe = [u](double theta, Finding& f) {
+  const Dimension walk = ctx.signal / Dimension::time().sqrt();
+  c.describe = [u, walk](double theta, Finding& f) {
     f.size = "K = " + quantity(std::sqrt(theta), u.walk);
-    f.yaml = "{type: random_walk, K: " + quantity(std::sqrt(theta), u.walk) + "}";
+    f.spec = EffectSpec::make("random_walk", {ParamSpec::quantity("K", stated(std::sqrt(theta), u.walk), walk)});
     f.params["K"] = std::sqrt(theta);
   };
   return {c};

@@ -48,7 +48,7 @@ void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
     freq = 0;
     return;
   }
-  z = pAll > 0 ? zUpperBisect(pAll) : 40.0;
+  z = pAll > 0 ? zFromTwoSidedP(pAll) : 40.0;
 }
 
 /// Periodogram of the record at f [Hz]: y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt;
@@ -120,10 +120,13 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   c.zSpecial = lineZ;
   c.evidence = "a narrow line in the PSD at " + num(f0, 6) + " Hz (" + num(lineZ, 3) +
                " sigma above its neighbourhood, look-elsewhere corrected)";
-  c.describe = [A, f0, phase, u](double, Finding& f) {
+  const Dimension signalDim = ctx.signal;
+  c.describe = [A, f0, phase, u, signalDim](double, Finding& f) {
     f.size = "A = " + quantity(A, u.level) + " at " + num(f0, 6) + " Hz";
-    f.yaml = "{type: sinusoid, amplitude: " + quantity(A, u.level) + ", frequency: " + num(f0, 9) +
-             " Hz, phase: " + num(phase * 180 / M_PI, 6) + " deg}";
+    f.spec = EffectSpec::make("sinusoid",
+                              {ParamSpec::quantity("amplitude", stated(A, u.level), signalDim),
+                               ParamSpec::quantity("frequency", stated(f0, "Hz", 9), Dimension::frequency()),
+                               ParamSpec::quantity("phase", stated(phase, "deg"), Dimension::angle())});
     f.params["amplitude"] = A;
     f.params["frequency"] = f0;
     f.params["phase"] = phase;

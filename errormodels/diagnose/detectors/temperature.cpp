@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -23,16 +24,24 @@ std::vector<double> polynomialSignal(const std::vector<double>& TK, double T0,
   return sig;
 }
 
-void describeTemperature(const std::vector<double>& coef, double T0, const Units& u, Finding& f) {
-  std::string list, words;
+void describeTemperature(const std::vector<double>& coef, double T0, const Units& u,
+                         Dimension signalDim, Finding& f) {
+  std::string words;
+  std::vector<double> coefStated;
+  std::vector<Dimension> dims;
   for (std::size_t p = 0; p < coef.size(); ++p) {
-    const std::string v = quantity(coef[p], p == 0 ? u.perKelvin : u.perKelvin2);
-    list += (p ? ", " : "") + v;
-    words += (p ? ", c" : "c") + std::to_string(p + 1) + " = " + v;
+    const char* unit = p == 0 ? u.perKelvin : u.perKelvin2;
+    words += (p ? ", c" : "c") + std::to_string(p + 1) + " = " + quantity(coef[p], unit);
     f.params["c" + std::to_string(p + 1)] = coef[p];
+    coefStated.push_back(stated(coef[p], unit));
+    dims.push_back(signalDim / Dimension::temperature().pow(int(p) + 1));
   }
   f.size = words + " about " + num(T0 - 273.15, 5) + " degC";
-  f.yaml = "{type: temperature, T0: " + num(T0 - 273.15, 8) + " degC, coefficients: [" + list + "]}";
+  // T0 stated to 8 digits in degC (an absolute temperature: the offset, not a factor).
+  const double T0stated = std::strtod(num(T0 - 273.15, 8).c_str(), nullptr) + 273.15;
+  f.spec = EffectSpec::make("temperature",
+                            {ParamSpec::quantity("T0", T0stated, Dimension::temperature()),
+                             ParamSpec::quantities("coefficients", coefStated, dims)});
   f.params["T0"] = T0;
 }
 
@@ -69,7 +78,8 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
     c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
                  num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
                  " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance";
-    c.describe = [coef, T0, u](double, Finding& f) { describeTemperature(coef, T0, u, f); };
+    const Dimension signalDim = ctx.signal;
+    c.describe = [coef, T0, u, signalDim](double, Finding& f) { describeTemperature(coef, T0, u, signalDim, f); };
     out.push_back(c);
   }
   return out;

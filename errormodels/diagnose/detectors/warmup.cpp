@@ -92,9 +92,11 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   c.zSpecial = startTest(ctx, tStart);
   c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
                num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
-  c.describe = [A, tw, u](double, Finding& f) {
+  const Dimension signalDim = ctx.signal;
+  c.describe = [A, tw, u, signalDim](double, Finding& f) {
     f.size = "A = " + quantity(A, u.level) + ", tau = " + num(tw, 4) + " s";
-    f.yaml = "{type: warmup, amplitude: " + quantity(A, u.level) + ", tau: " + num(tw, 6) + " s}";
+    f.spec = EffectSpec::make("warmup", {ParamSpec::quantity("amplitude", stated(A, u.level), signalDim),
+                                         ParamSpec::quantity("tau", stated(tw, "s"), Dimension::time())});
     f.params["amplitude"] = A;
     f.params["tau"] = tw;
   };

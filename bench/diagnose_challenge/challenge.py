@@ -1,0 +1,216 @@
+#!/usr/bin/python3
+"""Challenge benchmark of `sinsim diagnose` on records it has never seen.
+
+Makes --records static IMU records with generate.py (NumPy only, independent of sinsim), runs
+`sinsim diagnose RECORD --model BASE.yaml --json` on each, and scores the findings against the
+hidden truth: top-1 on the effect channel, both effects on two-effect channels, false alarms on
+clean channels, out-of-catalogue effects named as their physical equivalent or "unexplained",
+and (with --add) the misfit after / before adding the correct effect.
+
+    /usr/bin/python3 bench/diagnose_challenge/challenge.py --records 60 --seed 1 \
+        --sinsim build/sinsim --work out/challenge
+
+Results: a table on stdout and WORK/results.json (one row per record).
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+from collections import Counter, defaultdict
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import generate as g  # noqa: E402
+
+BASES = ["white+gm", "white+rw+flicker", "ar"]
+RATES = [50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0]
+SIZES = [1.5, 3.0, 6.0, 10.0]
+GYRO_SCALE = math.radians(0.005)  # rad/s/sqrt(Hz): a MEMS gyro's white density
+ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
+
+
+def draw_record(rng, max_samples):
+    fs = float(rng.choice(RATES))
+    T = 10 ** rng.uniform(math.log10(1200.0), math.log10(4 * 3600.0))
+    n = int(min(T * fs, max_samples))
+    n_effects = int(rng.choice([0, 1, 1, 2], p=[0.2, 0.5, 0.1, 0.2]))
+    pool = g.CATALOGUE + g.OUT_OF_CATALOGUE
+    names = list(rng.choice(pool, size=n_effects, replace=False)) if n_effects else []
+    return fs, n, names
+
+
+def yaml_effect(name, p, sensor):
+    su = "rad/s" if sensor == "gyro" else "m/s^2"
+    if name == "white":
+        return f"{{type: white, density: {p['density']!r} {su}/sqrt(Hz)}}"
+    if name == "gauss_markov":
+        return f"{{type: gauss_markov, sigma: {p['sigma']!r} {su}, tau: {p['tau']!r} s}}"
+    if name == "random_walk":
+        return f"{{type: random_walk, K: {p['K']!r} {su}/sqrt(s)}}"
+    if name == "bias_instability":
+        lo, hi = p["tau_range"]
+        return f"{{type: bias_instability, B: {p['B']!r} {su}, tau_range: [{lo!r} s, {hi!r} s]}}"
+    if name == "ar":
+        a = ", ".join(repr(float(v)) for v in p["a"])
+        return f"{{type: ar, a: [{a}], sigma: {p['sigma']!r} {su}, rate: {p['rate']!r} Hz}}"
+    if name == "quantization":
+        return f"{{type: quantization, lsb: {p['lsb']!r} {su}}}"
+    raise ValueError(name)
+
+
+def axis_key(ch):
+    return ("gyro" if ch[0] == "g" else "accel"), ch[1]
+
+
+def make(rng, idx, work, max_samples):
+    fs, n, names = draw_record(rng, max_samples)
+    t = np.arange(1, n + 1) / fs
+    T = n / fs
+    temp = 25.0 + 15.0 * (1.0 - np.exp(-t / (T / 4.0))) + 0.05 * rng.standard_normal(n)
+    hidden_ch = str(rng.choice(g.CHANNELS))
+    mean = {"gx": g.EARTH_RATE * math.cos(g.LATITUDE), "gy": 0.0,
+            "gz": -g.EARTH_RATE * math.sin(g.LATITUDE), "ax": 0.0, "ay": 0.0, "az": -g.GRAVITY}
+    cols, model, truth = {}, {"gyro": {}, "accel": {}}, []
+    for ch in g.CHANNELS:
+        sensor, ax = axis_key(ch)
+        scale = GYRO_SCALE if sensor == "gyro" else ACCEL_SCALE
+        kind = str(rng.choice(BASES))
+        base, effects = g.make_base(rng, n, fs, scale, kind)
+        q = None
+        if rng.random() < 0.25:  # a quantized base: LSB a fraction of the one-sample sd
+            q = float(np.std(np.diff(base)) * 10 ** rng.uniform(-1.5, -0.7))
+            effects.append(("quantization", {"lsb": q}))
+        x = base.copy()
+        if ch == hidden_ch:
+            for name in names:
+                if name == "quantization" and q is None:
+                    # size = LSB / (one-sample sd of the base): a lattice a diagnosis must see
+                    k = float(rng.choice(SIZES)) / 2.0
+                    q = k * float(np.std(np.diff(base))) / math.sqrt(2.0)
+                    truth.append({"effect": name, "size": k, "lsb": q})
+                    continue
+                if name == "quantization":  # already quantized: draw another
+                    name = "ramp"
+                e, info = g.unit_effect(rng, name, n, fs, t, temp)
+                k = float(rng.choice(SIZES))
+                x = x + e * g.scale_to(e, base, fs, k)
+                truth.append({"effect": name, "size": k, **info})
+        x = x + mean[ch]
+        cols[ch] = g.quantize(x, q) if q is not None else x
+        model[sensor][ax] = [yaml_effect(nm, p, sensor) for nm, p in effects]
+    rec = os.path.join(work, f"r{idx:04d}.csv")
+    header = "t,gx,gy,gz,ax,ay,az" + (",temp" if "temperature" in names else "")
+    data = [t] + [cols[c] for c in g.CHANNELS] + ([temp] if "temperature" in names else [])
+    np.savetxt(rec, np.column_stack(data), delimiter=",", header=header, comments="", fmt="%.12g")
+    mod = os.path.join(work, f"r{idx:04d}.yaml")
+    with open(mod, "w") as f:
+        for sensor in ("gyro", "accel"):
+            f.write(f"{sensor}:\n")
+            for ax in ("x", "y", "z"):
+                f.write(f"  {ax}:\n" + "".join(f"    - {e}\n" for e in model[sensor][ax]))
+    return {"record": rec, "model": mod, "rate_hz": fs, "samples": n, "channel": hidden_ch,
+            "hidden": truth}
+
+
+def diagnose(sinsim, row, threads):
+    out = row["record"][:-4] + ".json"
+    cmd = [sinsim, "diagnose", row["record"], "--model", row["model"], "--json", out,
+           "--threads", str(threads), "-o", row["record"][:-4] + ".improved.yaml"]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        return {"error": p.stderr.strip()[-400:]}
+    d = json.load(open(out))
+    res = {}
+    for a in d["axes"]:
+        rep = sorted([f for f in a["findings"] if f.get("reported")], key=lambda f: -f["score"])
+        res[a["channel"]] = {"findings": [f["effect"] for f in rep], "misfit": a["misfit"],
+                             "fits": a["fits"]}
+    return res
+
+
+def score(rows):
+    top1 = defaultdict(lambda: [0, 0])      # size -> [correct, total] (single catalogue effect)
+    both = [0, 0]
+    clean = [0, 0]                         # [false alarms, clean channels]
+    ooc = [0, 0]
+    confusion = defaultdict(Counter)
+    for r in rows:
+        res = r.get("result", {})
+        if "error" in res:
+            continue
+        for ch, c in res.items():
+            named = c["findings"][0] if c["findings"] else ("unexplained" if not c["fits"] else "none")
+            if ch != r["channel"] or not r["hidden"]:
+                clean[1] += 1
+                clean[0] += bool(c["findings"])
+                confusion["(clean)"][named] += 1
+                continue
+            hid = [h["effect"] for h in r["hidden"]]
+            if len(hid) == 1:
+                h = r["hidden"][0]
+                confusion[h["effect"]][named] += 1
+                if h["effect"] in g.OUT_OF_CATALOGUE:
+                    ooc[1] += 1
+                    ooc[0] += named in g.EQUIVALENT[h["effect"]]
+                else:
+                    key = "lsb" if h["effect"] == "quantization" else h["size"]
+                    top1[key][1] += 1
+                    top1[key][0] += named == h["effect"]
+            else:
+                cat = [h for h in hid if h in g.CATALOGUE]
+                if len(cat) == 2:
+                    both[1] += 1
+                    both[0] += set(cat) <= set(c["findings"])
+    return top1, both, clean, ooc, confusion
+
+
+def pct(a, b):
+    return f"{100.0 * a / b:5.1f} % ({a}/{b})" if b else "   -   (0/0)"
+
+
+def report(rows):
+    top1, both, clean, ooc, confusion = score(rows)
+    errors = sum("error" in r.get("result", {}) for r in rows)
+    print(f"records: {len(rows)}  (diagnose failed on {errors})")
+    for k in sorted(x for x in top1 if x != "lsb"):
+        print(f"top-1 correct, one effect at {k:4.1f}x base ADEV: {pct(*top1[k])}")
+    print(f"top-1 correct, quantization (LSB 0.75-5 sd):    {pct(*top1['lsb'])}")
+    print(f"both effects found on two-effect channels:      {pct(*both)}")
+    print(f"false alarms on clean channels:                 {pct(*clean)}")
+    print(f"out-of-catalogue named as equivalent/unexplained: {pct(*ooc)}")
+    print("confusion (hidden -> first reported, 'none' = fits, 'unexplained' = misfit, no finding):")
+    for h in sorted(confusion):
+        print(f"  {h:18s} " + ", ".join(f"{k} {v}" for k, v in confusion[h].most_common()))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("--records", type=int, default=60)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--sinsim", default="build/sinsim")
+    ap.add_argument("--work", default="out/challenge")
+    ap.add_argument("--max-samples", type=int, default=400000,
+                    help="cap on samples per record (the full benchmark: 3e7)")
+    ap.add_argument("--threads", type=int, default=2)
+    a = ap.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    rows = []
+    for i in range(a.records):
+        rng = np.random.default_rng([a.seed, i])
+        row = make(rng, i, a.work, a.max_samples)
+        row["result"] = diagnose(a.sinsim, row, a.threads)
+        rows.append(row)
+        print(f"\r{i + 1}/{a.records} records", end="", file=sys.stderr, flush=True)
+        for suffix in (".csv",):
+            os.remove(row["record"][:-4] + suffix)
+    print(file=sys.stderr)
+    with open(os.path.join(a.work, "results.json"), "w") as f:
+        json.dump(rows, f, indent=1, default=float)
+    report(rows)
+
+
+if __name__ == "__main__":
+    main()
