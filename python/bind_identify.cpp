@@ -88,20 +88,18 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
   return {id->modelSpec(), "fit"};
 }
 
-py::dict findingDict(const em::diagnose::Finding& f) {
+py::dict findingDict(const em::diagnose::Finding& f, const std::string& channel) {
   py::dict d;
   d["effect"] = f.effect;
   d["evidence"] = f.evidence;
   d["size"] = f.size;
-  d["yaml"] = f.yaml;
+  d["yaml"] = em::diagnose::effectText(f.spec, channel);
   d["params"] = f.params;
   d["score"] = f.score;
   d["reported"] = f.reported;
   return d;
 }
 
-// The diagnosis API takes the model as file text (diagnose::ModelText) today: a Model object is
-// handed over as the one writer's text until it takes an ErrorModelSpec.
 py::dict diagnose(const py::object& record, const py::object& model,
                   const std::vector<std::string>& channels, std::size_t realisations,
                   std::uint64_t seed, unsigned threads, double threshold,
@@ -109,13 +107,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
                   const std::optional<std::string>& accelUnit, std::optional<double> rate) {
   namespace dg = em::diagnose;
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
-  dg::ModelText text;
-  if (py::isinstance<py::str>(model)) {
-    text = dg::ModelText::load(model.cast<std::string>());
-  } else {
-    const Model m = toModel(model);
-    text = {em::errorModelYaml(m.spec), m.label};
-  }
+  const Model m = toModel(model);  // a path is read as `--model` reads it (loadErrorModel)
   dg::DiagnoseOptions o;
   o.channels = channels;
   o.realisations = realisations;
@@ -125,12 +117,12 @@ py::dict diagnose(const py::object& record, const py::object& model,
   std::optional<dg::Diagnosis> d;
   {
     py::gil_scoped_release release;
-    d = withContext(rec.source, [&] { return dg::diagnose(rec, text, o); });
+    d = withContext(rec.source, [&] { return dg::diagnose(rec, m.spec, o); });
   }
   py::dict out;
   for (const auto& a : d->axes) {
     py::list findings, fails;
-    for (const auto& f : a.findings) findings.append(findingDict(f));
+    for (const auto& f : a.findings) findings.append(findingDict(f, a.channel));
     for (const auto& f : a.fails)
       fails.append(py::dict(py::arg("statistic") = f.statistic, py::arg("from") = f.from,
                             py::arg("to") = f.to, py::arg("direction") = f.direction,
