@@ -135,7 +135,17 @@ ConfigFile ConfigFile::fromString(const std::string& text, const std::string& na
   return ConfigFile(root, name);
 }
 
-ConfigNode ConfigFile::root() { return ConfigNode(this, root_, "", lineOf(root_, 1)); }
+ConfigFile ConfigFile::fromNode(YAML::Node root, const std::string& name) {
+  std::vector<Diagnostic> problems = checkTree(root, name);
+  if (!problems.empty()) throw ConfigError(problems);
+  ConfigFile file(std::move(root), name);
+  file.hasLines_ = false;
+  return file;
+}
+
+ConfigNode ConfigFile::root() {
+  return ConfigNode(this, root_, "", hasLines_ ? lineOf(root_, 1) : 0);
+}
 
 void ConfigFile::addError(int line, const std::string& key, const std::string& message) {
   diagnostics_.push_back({name_, line, key, message});

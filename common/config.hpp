@@ -104,6 +104,9 @@ class ConfigFile {
   /// for a YAML syntax error, a NUL byte, a second document, duplicate keys (naming both lines),
   /// non-scalar keys, and more than limits::kMaxYamlNodeVisits nodes counted through aliases.
   static ConfigFile fromString(const std::string& text, const std::string& name);
+  /// A tree built in code rather than read from text (the Python module's dicts): the same
+  /// checks as fromString on the tree; diagnostics carry `name` and key paths, no line numbers.
+  static ConfigFile fromNode(YAML::Node root, const std::string& name);
 
   ConfigNode root();
   const std::string& name() const { return name_; }
@@ -118,6 +121,7 @@ class ConfigFile {
   ConfigFile(YAML::Node root, std::string name) : root_(std::move(root)), name_(std::move(name)) {}
   YAML::Node root_;
   std::string name_;
+  bool hasLines_ = true;  // false for a tree built in code (fromNode)
   std::vector<Diagnostic> diagnostics_;
 };
 

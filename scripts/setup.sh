@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config libeigen3-dev libgeographiclib-dev libyaml-cpp-dev
           catch2 libcli11-dev librandom123-dev libfftw3-dev nlohmann-json3-dev zlib1g-dev
-          libbenchmark-dev libopenmpi-dev openmpi-bin)
+          libbenchmark-dev libopenmpi-dev openmpi-bin
+          pybind11-dev python3-dev python3-numpy)  # the Python module (docs/python.md)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

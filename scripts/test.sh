@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Builds (via setup.sh) and runs every test with ctest. Test-only dependencies (headless Chromium
-# and python3 for the report-rendering tests) are installed here when missing, so that those
-# tests run rather than silently drop out.
+# and python3 for the report-rendering tests, pytest and matplotlib for the Python module's tests
+# and example) are installed here when missing, so that those tests run rather than silently drop
+# out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-test_packages=(chromium python3)
+test_packages=(chromium python3 python3-pytest python3-matplotlib)  # + the Python module's tests
 missing=()
 for p in "${test_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

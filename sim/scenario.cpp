@@ -193,6 +193,10 @@ Scenario loadScenario(const std::string& path) {
   return parse(file, dir.empty() ? "." : dir.string());
 }
 
+Scenario parseScenario(ConfigFile& file, const std::string& baseDir) {
+  return parse(file, baseDir);
+}
+
 Scenario parseScenario(const std::string& text, const std::string& name,
                        const std::string& baseDir) {
   ConfigFile file = ConfigFile::fromString(text, name);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/config.hpp"
 #include "errormodels/imu_model.hpp"
 #include "nav/strapdown.hpp"
 #include "sim/aided/aiding_config.hpp"
@@ -49,6 +50,10 @@ Scenario loadScenario(const std::string& path);
 /// baseDir. Same error behaviour as loadScenario.
 Scenario parseScenario(const std::string& text, const std::string& name,
                        const std::string& baseDir = ".");
+
+/// Reads a scenario from an already parsed file or tree (ConfigFile::fromNode: the Python
+/// module's dicts); relative model paths resolve against baseDir. Same error behaviour.
+Scenario parseScenario(ConfigFile& file, const std::string& baseDir = ".");
 
 /// The segment type names a scenario may use, for help texts and messages.
 std::vector<std::string> segmentTypes();

@@ -58,3 +58,21 @@ TEST_CASE("choices list the allowed values") {
   CHECK_THAT(f.diagnostics()[0].message, Contains("free, held, damped"));
   CHECK(f.diagnostics()[0].line == 1);
 }
+
+TEST_CASE("a tree built in code (fromNode) is read like a file, problems by key path, no line") {
+  YAML::Node root(YAML::NodeType::Map);
+  root["start"]["latitude"] = "45 deg";
+  root["start"]["hieght"] = "10 m";
+  root["segments"].push_back(YAML::Node(YAML::NodeType::Map));
+  root["segments"][0]["duration"] = "3 kg";
+  ConfigFile f = ConfigFile::fromNode(root, "<scenario dict>");
+  ConfigNode start = f.root()["start"];
+  start.allowKeys({"latitude", "height"});
+  CHECK(start.quantity("latitude", Dimension::angle()) == Approx(0.7853981633974483));
+  f.root()["segments"].items()[0].quantity("duration", Dimension::time());
+  REQUIRE(f.diagnostics().size() == 2);
+  for (const Diagnostic& d : f.diagnostics()) CHECK(d.line == 0);  // a dict has no lines
+  CHECK(f.diagnostics()[0].key == "start.hieght");
+  CHECK(f.diagnostics()[1].key == "segments[0].duration");
+  CHECK_THROWS_WITH(f.throwIfErrors(), Contains("<scenario dict>: segments[0].duration: "));
+}

@@ -1,0 +1,177 @@
+// The identify path from Python: load_record, analyze, fit and diagnose, each calling the library
+// functions the CLI commands call (cli/cmd_analyze.cpp, cmd_fit.cpp, cmd_diagnose.cpp).
+#include <pybind11/stl.h>
+
+#include "common/error.hpp"
+#include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/identify.hpp"
+#include "errormodels/model_io.hpp"
+#include "python/bindings.hpp"
+#include "sim/analysis.hpp"
+
+namespace sinsim::python {
+namespace {
+
+namespace em = errormodels;
+
+// The loader's options as `--gyro-unit`, `--accel-unit`, `--rate`, `--allow-irregular-time`.
+em::RecordOptions recordOptions(const std::optional<std::string>& gyroUnit,
+                                const std::optional<std::string>& accelUnit,
+                                std::optional<double> rate, bool allowIrregular) {
+  em::RecordOptions o;
+  o.gyro_unit = gyroUnit;
+  o.accel_unit = accelUnit;
+  if (rate && !(std::isfinite(*rate) && *rate > 0))
+    throw InputError("rate: expected a positive sample rate in Hz");
+  o.rate_hz = rate;
+  o.allow_irregular_time = allowIrregular;
+  return o;
+}
+
+py::dict channelDict(const sim::ChannelStats& c) {
+  py::dict d;
+  d["unit"] = c.unit_si;
+  d["mean"] = c.mean;
+  d["sd"] = c.sd;
+  d["acf"] = py::dict(py::arg("lag") = array(c.acf.lag), py::arg("r") = array(c.acf.r));
+  d["psd"] = py::dict(py::arg("f") = array(c.psd.f), py::arg("psd") = array(c.psd.psd));
+  d["allan"] = py::dict(py::arg("tau") = array(c.allan.tau), py::arg("adev") = array(c.allan.dev),
+                        py::arg("lo") = array(c.allan.lo), py::arg("hi") = array(c.allan.hi));
+  return d;
+}
+
+py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
+                 const std::string& tau, double confidence, bool denoise, const std::string& json,
+                 const std::string& html, const std::optional<std::string>& gyroUnit,
+                 const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+  if (tau != "octave" && tau != "decade")
+    throw InputError("tau: expected octave or decade, got \"" + tau + "\"");
+  sim::AnalysisOptions opt;
+  opt.max_lag_s = maxLag;
+  opt.segment = segment;
+  opt.tauPerDecade = tau == "decade";
+  opt.confidence = confidence;
+  opt.denoise = denoise;
+  const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
+  std::vector<sim::ChannelStats> stats;
+  {
+    py::gil_scoped_release release;
+    stats = sim::analyzeRecord(rec, opt);
+    if (!json.empty() || !html.empty()) sim::writeAnalysis(rec, stats, opt, json, html);
+  }
+  py::dict d;
+  for (const auto& c : stats) d[c.name.c_str()] = channelDict(c);
+  return d;
+}
+
+Model fit(const py::object& record, const std::string& kind, const std::vector<std::string>& axes,
+          std::optional<std::size_t> order, const std::string& criterion, std::size_t maxOrder,
+          bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
+          const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+  em::IdentifyOptions opt;
+  opt.kind = em::identifyKindByName(kind);
+  if (order && *order < 1) throw InputError("order: expected a positive integer or None (auto)");
+  opt.order = order;
+  opt.maxOrder = std::max(maxOrder, order.value_or(0));
+  opt.criterion = em::orderCriterionByName(criterion);
+  opt.denoise = denoise ? em::DenoiseChoice::Db5 : em::DenoiseChoice::None;
+  opt.axes = axes;
+  opt.skipStart = quantityArg(skip, Dimension::time(), "skip");
+  const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
+  std::optional<em::Identification> id;
+  {
+    py::gil_scoped_release release;
+    id = em::identify(rec, opt);
+  }
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const auto& w : id->warnings) warn("fit: " + w);
+  return {id->modelSpec(), "fit"};
+}
+
+py::dict findingDict(const em::diagnose::Finding& f, const std::string& channel) {
+  py::dict d;
+  d["effect"] = f.effect;
+  d["evidence"] = f.evidence;
+  d["size"] = f.size;
+  d["yaml"] = em::diagnose::effectText(f.spec, channel);
+  d["params"] = f.params;
+  d["score"] = f.score;
+  d["reported"] = f.reported;
+  return d;
+}
+
+py::dict diagnose(const py::object& record, const py::object& model,
+                  const std::vector<std::string>& channels, std::size_t realisations,
+                  std::uint64_t seed, unsigned threads, double threshold,
+                  const std::optional<std::string>& gyroUnit,
+                  const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+  namespace dg = em::diagnose;
+  const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
+  const Model m = toModel(model);  // a path is read as `--model` reads it (loadErrorModel)
+  dg::DiagnoseOptions o;
+  o.channels = channels;
+  o.realisations = realisations;
+  o.seed = seed;
+  o.threads = threads;
+  o.threshold = threshold;
+  std::optional<dg::Diagnosis> d;
+  {
+    py::gil_scoped_release release;
+    d = withContext(rec.source, [&] { return dg::diagnose(rec, m.spec, o); });
+  }
+  py::dict out;
+  for (const auto& a : d->axes) {
+    py::list findings, fails;
+    for (const auto& f : a.findings) findings.append(findingDict(f, a.channel));
+    for (const auto& f : a.fails)
+      fails.append(py::dict(py::arg("statistic") = f.statistic, py::arg("from") = f.from,
+                            py::arg("to") = f.to, py::arg("direction") = f.direction,
+                            py::arg("worst_ratio") = f.worstRatio));
+    py::dict ax;
+    ax["fits"] = a.fits(d->threshold);
+    ax["misfit"] = a.misfit;
+    ax["chi2"] = a.chi2;
+    ax["fraction_outside"] = a.fractionOutside;
+    ax["findings"] = findings;
+    ax["fails"] = fails;
+    ax["adev"] = py::dict(py::arg("tau") = array(a.adev.x), py::arg("meas") = array(a.adev.meas),
+                          py::arg("model") = array(a.adev.model), py::arg("lo") = array(a.adev.lo),
+                          py::arg("hi") = array(a.adev.hi));
+    out[a.channel.c_str()] = ax;
+  }
+  return out;
+}
+
+}  // namespace
+
+void bindIdentify(py::module_& mod) {
+  mod.def(
+      "load_record",
+      [](const std::string& path, const std::optional<std::string>& gyroUnit,
+         const std::optional<std::string>& accelUnit, std::optional<double> rate,
+         bool allowIrregular) {
+        return recordDict(em::loadRecord(path, recordOptions(gyroUnit, accelUnit, rate, allowIrregular)));
+      },
+      py::arg("path"), py::arg("gyro_unit") = py::none(), py::arg("accel_unit") = py::none(),
+      py::arg("rate") = py::none(), py::arg("allow_irregular_time") = false,
+      "reads a record (CSV, .gz) into a dict of SI arrays: rate, t, gx..az, temp");
+  mod.def("analyze", &analyze, py::arg("record"), py::arg("max_lag") = 0.0, py::arg("segment") = 0,
+          py::arg("tau") = "octave", py::arg("confidence") = 0.683, py::arg("denoise") = false,
+          py::arg("json") = "", py::arg("html") = "", py::arg("gyro_unit") = py::none(),
+          py::arg("accel_unit") = py::none(), py::arg("rate") = py::none(),
+          "sinsim analyze: per channel mean, sd, ACF, Welch PSD, Allan deviation with bounds (SI)");
+  mod.def("fit", &fit, py::arg("record"), py::arg("kind") = "auto",
+          py::arg("axes") = std::vector<std::string>{}, py::arg("order") = py::none(),
+          py::arg("criterion") = "mdl", py::arg("max_order") = 20, py::arg("denoise") = false,
+          py::arg("skip") = 0.0, py::arg("gyro_unit") = py::none(),
+          py::arg("accel_unit") = py::none(), py::arg("rate") = py::none(),
+          "sinsim fit: identifies an error model from a static record; returns a Model");
+  mod.def("diagnose", &diagnose, py::arg("record"), py::arg("model"),
+          py::arg("channels") = std::vector<std::string>{}, py::arg("realisations") = 32,
+          py::arg("seed") = 20240505, py::arg("threads") = 0, py::arg("threshold") = 8.0,
+          py::arg("gyro_unit") = py::none(), py::arg("accel_unit") = py::none(),
+          py::arg("rate") = py::none(),
+          "sinsim diagnose: compares a model with a record; findings per channel");
+}
+
+}  // namespace sinsim::python

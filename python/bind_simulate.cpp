@@ -1,0 +1,288 @@
+// The simulate path from Python: Scenario, run, mc and synth, each calling the library functions
+// the CLI commands call (cli/cmd_run.cpp, cmd_mc.cpp, cmd_synth.cpp) and returning NumPy arrays.
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/error.hpp"
+#include "errormodels/model_io.hpp"
+#include "python/bindings.hpp"
+#include "sim/mc_models.hpp"
+#include "sim/mc_output.hpp"
+#include "sim/montecarlo.hpp"
+#include "sim/run.hpp"
+#include "sim/synth.hpp"
+
+namespace sinsim::python {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// The scenario with `model` as its error model, refused like `sinsim run --model` refuses it
+// (sim/run.cpp, sim/mc_models.cpp: the check sits inline there; no typed entry point in sim/).
+sim::Scenario withModel(sim::Scenario sc, const Model& m) {
+  sc.errors = imuModel(m);
+  if (!sc.errors.empty() && sc.errors.needsTemperature() && !sc.temperature.present)
+    throw InputError("the error model " + m.label +
+                     " has temperature-dependent effects but scenario " + sc.name +
+                     " has no temperature profile");
+  return sc;
+}
+
+// A (rows, 3) array of the vectors get(row).
+template <class Get>
+py::array_t<double> rows3(std::size_t n, Get get) {
+  py::array_t<double> a({static_cast<py::ssize_t>(n), py::ssize_t(3)});
+  auto w = a.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const nav::Vec3 v = get(i);
+    for (int j = 0; j < 3; ++j) w(py::ssize_t(i), j) = v[j];
+  }
+  return a;
+}
+
+py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& rows) {
+  py::dict d;
+  std::vector<double> t, hor, ver;
+  for (const auto& e : rows) t.push_back(e.t), hor.push_back(e.horizontal()), ver.push_back(e.vertical());
+  d["t"] = array(t);
+  d["pos_error_ned"] = rows3(rows.size(), [&](std::size_t i) { return rows[i].pos_n; });
+  d["vel_error_ned"] = rows3(rows.size(), [&](std::size_t i) { return rows[i].vel_n; });
+  d["att_error_rpy"] = rows3(rows.size(), [&](std::size_t i) { return rows[i].euler; });
+  d["horizontal"] = array(hor);
+  d["vertical"] = array(ver);
+  py::dict sum;
+  sum["scenario"] = s.scenario;
+  sum["model"] = s.model;
+  sum["seed"] = s.seed;
+  sum["duration"] = s.duration;
+  sum["imu_samples"] = s.imuSamples;
+  sum["distance"] = s.distance;
+  sum["final_horizontal"] = s.final.horizontal();
+  sum["final_vertical"] = s.final.vertical();
+  sum["max_horizontal"] = s.maxHorizontal;
+  sum["max_vertical"] = s.maxVertical;
+  sum["rms_horizontal"] = s.rmsHorizontal;
+  sum["rms_vertical"] = s.rmsVertical;
+  sum["wall_time"] = s.wallTime;
+  sum["line"] = sim::summaryLine(s);
+  d["summary"] = sum;
+  d["output"] = s.outDir;
+  return d;
+}
+
+py::dict run(const py::object& scenario, const py::object& model, std::optional<std::uint64_t> seed,
+             const py::object& biasWindow, const std::string& output, bool imu) {
+  sim::Scenario sc = toScenario(scenario);
+  sim::RunOptions opt;
+  if (!model.is_none()) {
+    if (py::isinstance<py::str>(model)) opt.model = model.cast<std::string>();  // as --model
+    else sc = withModel(sc, toModel(model));
+  }
+  opt.seed = seed;
+  opt.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
+  opt.outDir = output;
+  opt.writeImu = imu;
+  std::vector<sim::NavError> rows;
+  opt.onRow = [&rows](const sim::NavError& e) { rows.push_back(e); };
+  sim::RunSummary s;
+  {
+    py::gil_scoped_release release;
+    s = sim::run(sc, opt);
+  }
+  return runToDict(s, rows);
+}
+
+// The batch's models: the scenario's errors (none given), files and "none" as `sinsim mc --model`
+// reads them (sim::loadMcModels), Model objects and dicts with their labels.
+std::vector<sim::McModel> mcModels(const sim::Scenario& sc, const std::string& identity,
+                                   const py::object& models) {
+  if (models.is_none()) return sim::loadMcModels({}, sc, identity);
+  std::vector<sim::McModel> out;
+  for (const auto& item : models) {
+    if (py::isinstance<py::str>(item)) {
+      out.push_back(sim::loadMcModels({item.cast<std::string>()}, sc, identity).at(0));
+    } else {
+      const Model m = toModel(item);
+      sim::McModel mc = sim::loadMcModels({}, withModel(sc, m), identity).at(0);
+      mc.label = m.label;
+      mc.identity = "python:" + errormodels::errorModelYaml(m.spec);  // resume fingerprint only
+      out.push_back(std::move(mc));
+    }
+    for (std::size_t i = 0; i + 1 < out.size(); ++i)
+      if (out[i].label == out.back().label)
+        throw InputError("two models of the batch are labelled \"" + out.back().label +
+                         "\": give them different Model.label values");
+  }
+  if (out.empty()) throw InputError("models: give at least one model (or None: the scenario's)");
+  return out;
+}
+
+// Per model: runs × epochs × fields errors, and the final value of every metric per run.
+py::dict mcToDict(const sim::Reference& ref, const sim::McResult& r, std::size_t models,
+                  std::uint64_t runs) {
+  const std::size_t epochs = ref.epochs();
+  std::vector<double> t(epochs);
+  for (std::size_t e = 0; e < epochs; ++e) t[e] = ref.epochTime(e);
+  py::dict errors, final;
+  for (std::size_t m = 0; m < r.labels.size(); ++m) {
+    py::array_t<float> a({py::ssize_t(runs), py::ssize_t(epochs), py::ssize_t(sim::kErrorFields)});
+    std::copy(r.errors[m].begin(), r.errors[m].end(), a.mutable_data());
+    errors[r.labels[m].c_str()] = a;
+    py::dict metrics;
+    for (int k = 0; k < sim::kMetrics; ++k) {
+      std::vector<double> v(runs);
+      for (std::uint64_t run = 0; run < runs; ++run)
+        v[run] = sim::metricValue(&r.errors[m][((run + 1) * epochs - 1) * sim::kErrorFields], k);
+      metrics[sim::metricName(k)] = array(v);
+    }
+    final[r.labels[m].c_str()] = metrics;
+  }
+  py::dict head;
+  for (const auto& h : sim::mcHeadlines(ref, r, models))
+    head[h.label.c_str()] = py::dict(py::arg("t") = h.t, py::arg("cep") = h.cep,
+                                     py::arg("r95") = h.r95);
+  py::dict d;
+  d["labels"] = r.labels;
+  d["t"] = array(t);
+  d["fields"] = std::vector<std::string>{"north_m", "east_m", "down_m", "vn_mps", "ve_mps",
+                                         "vd_mps", "roll_rad", "pitch_rad", "yaw_rad"};
+  d["errors"] = errors;
+  d["final"] = final;
+  d["headline"] = head;
+  d["files"] = r.files;
+  d["wall_time"] = r.wallTime;
+  return d;
+}
+
+// A folder for a batch the caller does not keep (runMonteCarlo writes its checkpoints there).
+struct ScratchDir {
+  std::string path;
+  ScratchDir() {
+    std::string tmpl = (fs::temp_directory_path() / "sinsim-mc-XXXXXX").string();
+    if (!::mkdtemp(tmpl.data())) throw Error("cannot create a temporary folder in " + tmpl);
+    path = tmpl;
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t runs,
+            std::optional<std::uint64_t> seed, unsigned threads, const py::object& times,
+            const py::object& biasWindow, bool budget, const std::string& output) {
+  const sim::Scenario sc = toScenario(scenario);
+  const std::string identity = py::isinstance<py::str>(scenario)
+                                   ? slurp(scenario.cast<std::string>())
+                                   : "python:" + sc.name;
+  const std::vector<sim::McModel> list = mcModels(sc, identity, models);
+  sim::McOptions opt;
+  opt.runs = runs;
+  opt.seed = seed ? *seed : sc.seed.value_or(0);
+  opt.threads = threads;
+  if (!times.is_none())
+    for (const auto& t : times) opt.times.push_back(quantityArg(t, Dimension::time(), "times"));
+  opt.budget = budget;
+  opt.navigate.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
+  opt.scenarioIdentity = identity;
+  std::optional<ScratchDir> scratch;
+  if (output.empty()) scratch.emplace();
+  opt.outDir = output.empty() ? scratch->path : output;
+  // Ctrl-C in Python stops the batch: the progress callback (calling thread) checks signals.
+  std::atomic<bool> interrupted{false};
+  opt.interrupt = &interrupted;
+  opt.onProgress = [&interrupted](const sim::McProgress&) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) interrupted.store(true);
+  };
+  const sim::Reference ref = [&] {
+    py::gil_scoped_release release;
+    return sim::buildReference(sc);
+  }();
+  sim::McResult r;
+  {
+    py::gil_scoped_release release;
+    r = sim::runMonteCarlo(ref, list, opt);
+  }
+  if (interrupted.load()) throw py::error_already_set();  // the KeyboardInterrupt
+  if (!r.complete) throw Error("mc: the batch did not complete");
+  py::dict d = mcToDict(ref, r, list.size(), runs);
+  d["output"] = output;
+  return d;
+}
+
+py::dict synth(const py::object& model, double rate, const py::object& duration,
+               const std::string& path, std::uint64_t seed, std::uint64_t run,
+               const std::string& temperature, const py::object& latitude, const py::object& height,
+               const py::object& attitude) {
+  const errormodels::ImuErrorModel m = imuModel(toModel(model));
+  sim::StaticRecordSpec spec;
+  spec.rate = rate;
+  spec.duration = quantityArg(duration, Dimension::time(), "duration");
+  spec.key = {seed, run};
+  spec.lat = quantityArg(latitude, Dimension::angle(), "latitude");
+  spec.h = quantityArg(height, Dimension::length(), "height");
+  int i = 0;
+  for (const auto& a : attitude) {
+    if (i == 3) throw InputError("attitude: expected (roll, pitch, yaw)");
+    spec.rpy[i++] = quantityArg(a, Dimension::angle(), "attitude");
+  }
+  if (i != 3) throw InputError("attitude: expected (roll, pitch, yaw)");
+  const sim::RecordTemperature temp(temperature, spec.duration);
+  {
+    py::gil_scoped_release release;
+    sim::writeStaticRecord(m, spec, temp, path);
+  }
+  // sim/ writes the record only to a file (no in-memory entry point): read back at the edge.
+  return recordDict(errormodels::loadRecord(path));
+}
+
+}  // namespace
+
+void bindSimulate(py::module_& mod) {
+  py::class_<sim::Scenario>(mod, "Scenario", "A scenario (docs/simulate.md), read and validated.")
+      .def(py::init([](const py::object& src) { return toScenario(src); }), py::arg("source"))
+      .def_readonly("name", &sim::Scenario::name)
+      .def_readonly("description", &sim::Scenario::description)
+      .def_readonly("file", &sim::Scenario::file)
+      .def_readonly("imu_rate", &sim::Scenario::imuRate, "[Hz]")
+      .def_readonly("output_rate", &sim::Scenario::outputRate, "[Hz]")
+      .def_readonly("seed", &sim::Scenario::seed)
+      .def_property_readonly("duration", &sim::Scenario::duration, "[s]")
+      .def_property_readonly("segments", [](const sim::Scenario& s) { return s.segments.size(); })
+      .def_property_readonly("error_effects",
+                             [](const sim::Scenario& s) { return s.errors.effectNames(); })
+      .def("__repr__", [](const sim::Scenario& s) {
+        const std::string seconds = py::str(py::float_(s.duration()));
+        return "<sinsim.Scenario " + s.name + ": " + seconds + " s>";
+      });
+  mod.def("load_scenario", [](const py::object& src) { return toScenario(src); },
+          py::arg("source"), "Scenario(source): a scenario file path or a dict of its layout");
+  mod.def("run", &run, py::arg("scenario"), py::arg("model") = py::none(),
+          py::arg("seed") = py::none(), py::arg("bias_window") = 0.0, py::arg("output") = "",
+          py::arg("imu") = false,
+          "sinsim run: one realisation; errors at every output epoch as arrays (SI).");
+  mod.def("mc", &mc, py::arg("scenario"), py::arg("models") = py::none(), py::arg("runs") = 100,
+          py::arg("seed") = py::none(), py::arg("threads") = 0, py::arg("times") = py::none(),
+          py::arg("bias_window") = 0.0, py::arg("budget") = false, py::arg("output") = "",
+          "sinsim mc: N realisations per model; per-run errors and final metrics as arrays.");
+  mod.def("synth", &synth, py::arg("model"), py::arg("rate"), py::arg("duration"), py::arg("path"),
+          py::arg("seed") = 0, py::arg("run") = 0, py::arg("temperature") = "25 degC",
+          py::arg("latitude") = "45 deg", py::arg("height") = "0 m",
+          py::arg("attitude") = py::make_tuple(0.0, 0.0, 0.0),
+          "sinsim synth: writes a static record with the model's errors to path; returns it.");
+}
+
+}  // namespace sinsim::python

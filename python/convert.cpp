@@ -1,0 +1,182 @@
+#include "python/convert.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "common/config.hpp"
+#include "common/error.hpp"
+#include "errormodels/model_io.hpp"
+
+namespace sinsim::python {
+
+namespace fs = std::filesystem;
+
+YAML::Node yamlTree(const py::handle& v, const std::string& path) {
+  if (v.is_none()) return YAML::Node(YAML::NodeType::Null);
+  if (py::isinstance<py::bool_>(v)) return YAML::Node(v.cast<bool>() ? "true" : "false");
+  if (py::isinstance<py::str>(v)) return YAML::Node(v.cast<std::string>());
+  if (py::isinstance<py::int_>(v)) return YAML::Node(py::str(v).cast<std::string>());
+  if (py::isinstance<py::float_>(v)) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v.cast<double>());
+    return YAML::Node(std::string(buf));
+  }
+  // NumPy scalars (np.int64, np.float32, 0-d arrays) as the Python scalar they hold.
+  if (py::hasattr(v, "dtype") && py::hasattr(v, "item") &&
+      !(py::isinstance<py::array>(v) && py::reinterpret_borrow<py::array>(v).ndim() > 0))
+    return yamlTree(v.attr("item")(), path);
+  if (py::isinstance<py::dict>(v)) {
+    YAML::Node n(YAML::NodeType::Map);
+    for (const auto& kv : py::reinterpret_borrow<py::dict>(v)) {
+      if (!py::isinstance<py::str>(kv.first))
+        throw InputError(joinKey(path, py::repr(kv.first).cast<std::string>()) +
+                         ": a key must be a string");
+      const std::string key = kv.first.cast<std::string>();
+      n[key] = yamlTree(kv.second, joinKey(path, key));
+    }
+    return n;
+  }
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::isinstance<py::array>(v)) {
+    YAML::Node n(YAML::NodeType::Sequence);
+    std::size_t i = 0;
+    for (const auto& item : v) n.push_back(yamlTree(item, path + "[" + std::to_string(i++) + "]"));
+    return n;
+  }
+  throw InputError((path.empty() ? std::string("value") : path) + ": cannot use a Python " +
+                   py::str(v.get_type().attr("__name__")).cast<std::string>() +
+                   " (expected str, number, bool, None, dict or list)");
+}
+
+sim::Scenario toScenario(const py::handle& v) {
+  if (py::isinstance<sim::Scenario>(v)) return v.cast<sim::Scenario>();
+  if (py::isinstance<py::dict>(v)) {
+    ConfigFile file = ConfigFile::fromNode(yamlTree(v), "<scenario dict>");
+    return sim::parseScenario(file, ".");
+  }
+  if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"))
+    return sim::loadScenario(py::str(v).cast<std::string>());
+  throw InputError("a scenario is a file path, a dict or a sinsim.Scenario");
+}
+
+Model toModel(const py::handle& v) {
+  if (py::isinstance<Model>(v)) return v.cast<Model>();
+  if (py::isinstance<py::dict>(v)) {
+    ConfigFile file = ConfigFile::fromNode(yamlTree(v), "<model dict>");
+    errormodels::ErrorModelSpec spec = errormodels::readErrorModel(file.root());
+    file.throwIfErrors();
+    spec.source = "<model dict>";
+    return {spec, "dict"};
+  }
+  if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__")) {
+    const std::string path = py::str(v).cast<std::string>();
+    if (path == "none") return {errormodels::ErrorModelSpec{}, "none"};
+    return {errormodels::loadErrorModel(path), fs::path(path).stem().string()};
+  }
+  throw InputError("a model is a sinsim.Model, a file path, \"none\" or a dict");
+}
+
+namespace {
+
+std::vector<double> column(const py::dict& d, const char* key) {
+  if (!d.contains(key)) return {};
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d[key]);
+  if (!a || a.ndim() != 1) throw InputError(std::string("record dict: \"") + key +
+                                            "\": expected a 1-D array of numbers");
+  return std::vector<double>(a.data(), a.data() + a.size());
+}
+
+}  // namespace
+
+errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptions& options) {
+  if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"))
+    return errormodels::loadRecord(py::str(v).cast<std::string>(), options);
+  if (!py::isinstance<py::dict>(v))
+    throw InputError("a record is a file path or a dict of arrays (gx..az, rate or t)");
+  const py::dict d = py::reinterpret_borrow<py::dict>(v);
+  static const char* known[] = {"source", "rate", "t", "gx", "gy", "gz", "ax", "ay", "az", "temp"};
+  for (const auto& kv : d) {
+    const std::string k = py::str(kv.first).cast<std::string>();
+    bool ok = false;
+    for (const char* n : known) ok = ok || k == n;
+    if (!ok)
+      throw InputError("record dict: unknown key \"" + k +
+                       "\" (known: source, rate, t, gx, gy, gz, ax, ay, az, temp)");
+  }
+  errormodels::Record r;
+  r.source = d.contains("source") ? py::str(d["source"]).cast<std::string>() : "<record dict>";
+  r.t = column(d, "t");
+  const char* g[] = {"gx", "gy", "gz"};
+  const char* a[] = {"ax", "ay", "az"};
+  for (int i = 0; i < 3; ++i) {
+    r.gyro[i] = column(d, g[i]);
+    r.accel[i] = column(d, a[i]);
+  }
+  r.temperature = column(d, "temp");
+  std::size_t n = 0;
+  auto agree = [&](const std::vector<double>& c, const std::string& name) {
+    if (c.empty()) return;
+    if (n == 0) n = c.size();
+    if (c.size() != n)
+      throw InputError("record dict: \"" + name + "\" has " + std::to_string(c.size()) +
+                       " samples, another column " + std::to_string(n));
+    for (double x : c)
+      if (!std::isfinite(x)) throw InputError("record dict: \"" + name + "\" holds NaN or inf");
+  };
+  agree(r.t, "t");
+  for (int i = 0; i < 3; ++i) agree(r.gyro[i], g[i]), agree(r.accel[i], a[i]);
+  agree(r.temperature, "temp");
+  if (n == 0) throw InputError("record dict: no samples (give gx..az arrays)");
+  r.rows = n;
+  if (d.contains("rate")) {
+    r.rate_hz = d["rate"].cast<double>();
+  } else if (options.rate_hz) {
+    r.rate_hz = *options.rate_hz;
+  }
+  if (!(std::isfinite(r.rate_hz) && r.rate_hz > 0))
+    throw InputError("record dict: give \"rate\": the sample rate [Hz] (> 0)");
+  return r;
+}
+
+py::array_t<double> array(const std::vector<double>& v) {
+  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+py::dict recordDict(const errormodels::Record& r) {
+  py::dict d;
+  d["source"] = r.source;
+  d["rate"] = r.rate_hz;
+  if (!r.t.empty()) d["t"] = array(r.t);
+  const char* g[] = {"gx", "gy", "gz"};
+  const char* a[] = {"ax", "ay", "az"};
+  for (int i = 0; i < 3; ++i) {
+    if (r.hasGyro(i)) d[g[i]] = array(r.gyro[i]);
+    if (r.hasAccel(i)) d[a[i]] = array(r.accel[i]);
+  }
+  if (!r.temperature.empty()) d["temp"] = array(r.temperature);
+  return d;
+}
+
+}  // namespace sinsim::python
+
+namespace sinsim::python {
+
+double quantityArg(const py::handle& v, Dimension dim, const std::string& what) {
+  if (py::isinstance<py::str>(v)) {
+    try {
+      return parseQuantityAs(v.cast<std::string>(), dim);
+    } catch (const InputError& e) {
+      throw InputError(what + ": " + e.what());
+    }
+  }
+  try {
+    return v.cast<double>();
+  } catch (const py::cast_error&) {
+    throw InputError(what + ": expected a number (SI) or a string with a unit, e.g. \"" +
+                     exampleUnit(dim) + "\"");
+  }
+}
+
+}  // namespace sinsim::python

@@ -1,0 +1,64 @@
+// The Python module `sinsim` (docs/python.md). Library exceptions become Python exceptions with
+// the same messages (file, line, key path):
+//   sinsim.Error (RuntimeError)  <- sinsim::Error
+//   sinsim.InputError (Error, ValueError)  <- sinsim::InputError (bad input of any kind)
+//   sinsim.ConfigError (InputError)  <- sinsim::ConfigError; .diagnostics: [(file, line, key, message)]
+//   sinsim.NumericalError (Error)  <- sinsim::NumericalError
+#include <pybind11/pybind11.h>
+
+#include "common/error.hpp"
+#include "python/bindings.hpp"
+
+namespace sinsim::python {
+
+void bindExceptions(py::module_& m) {
+  const py::module_ builtins = py::module_::import("builtins");
+  const py::object type = builtins.attr("type");
+  auto make = [&](const char* name, py::tuple bases, const char* doc) {
+    py::dict ns;
+    ns["__module__"] = "sinsim";
+    ns["__doc__"] = doc;
+    py::object cls = type(name, bases, ns);
+    m.attr(name) = cls;
+    return cls.release();  // kept for the translator for the life of the process
+  };
+  static const py::handle error = make("Error", py::make_tuple(builtins.attr("RuntimeError")),
+                                       "Any error sinsim raises on purpose.");
+  static const py::handle input =
+      make("InputError", py::make_tuple(error, builtins.attr("ValueError")),
+           "Bad input: a scenario, model, record or argument that cannot be used as given.");
+  static const py::handle config =
+      make("ConfigError", py::make_tuple(input),
+           "Every problem of one input (file or dict), each with file, line and key path; "
+           ".diagnostics lists them as (file, line, key, message).");
+  static const py::handle numerical = make("NumericalError", py::make_tuple(error),
+                                           "A numerical condition that valid input should not reach.");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const ConfigError& e) {
+      py::list diags;
+      for (const Diagnostic& d : e.diagnostics())
+        diags.append(py::make_tuple(d.file, d.line, d.key, d.message));
+      py::object ex = py::reinterpret_borrow<py::object>(config)(e.what());
+      ex.attr("diagnostics") = diags;
+      PyErr_SetObject(config.ptr(), ex.ptr());
+    } catch (const InputError& e) {
+      PyErr_SetString(input.ptr(), e.what());
+    } catch (const NumericalError& e) {
+      PyErr_SetString(numerical.ptr(), e.what());
+    } catch (const Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    }
+  });
+}
+
+}  // namespace sinsim::python
+
+PYBIND11_MODULE(sinsim, m) {
+  m.doc() = "sinsim: strapdown INS simulator and inertial error-model lab (docs/python.md)";
+  sinsim::python::bindExceptions(m);
+  sinsim::python::bindModel(m);
+  sinsim::python::bindSimulate(m);
+  sinsim::python::bindIdentify(m);
+}

@@ -1,0 +1,113 @@
+"""sinsim.synth / load_record / analyze / fit / diagnose and the Model object, against truth from
+outside: a synthesized record of known white noise (its density and Allan deviation in closed
+form) and the one model reader's round trip."""
+import math
+
+import numpy as np
+import pytest
+
+import sinsim
+from conftest import static_scenario
+
+DENSITY = 0.5 * math.pi / 180 / 60  # 0.5 deg/sqrt(h) in rad/s/sqrt(Hz) = rad/sqrt(s)
+RATE = 100.0  # [Hz]
+SECONDS = 2000.0
+N = int(RATE * SECONDS)
+TRUE_MODEL = {"gyro": {"x": [{"type": "white", "density": "0.5 deg/sqrt(h)"}]}}
+
+
+@pytest.fixture(scope="module")
+def record(tmp_path_factory):
+    path = tmp_path_factory.mktemp("rec") / "white.csv"
+    return sinsim.synth(TRUE_MODEL, rate=RATE, duration="2000 s", path=str(path), seed=5), path
+
+
+def test_synth_returns_the_record_it_wrote(record):
+    rec, path = record
+    assert rec["gx"].shape == (N,) and rec["rate"] == pytest.approx(RATE)
+    again = sinsim.load_record(str(path))
+    assert np.array_equal(again["gx"], rec["gx"])
+    # white noise of density N at rate f has a per-sample sd N sqrt(f); the sample sd of
+    # 2e5 samples is within 5 x its relative sd 1/sqrt(2n) of it
+    sd = np.std(rec["gx"])
+    assert sd == pytest.approx(DENSITY * math.sqrt(RATE), rel=5 / math.sqrt(2 * N))
+
+
+def white_density(model, sensor="gyro", axis="x"):
+    for e in model.effects():
+        if e["sensor"] == sensor and e["list"] in (axis, "all") and e["type"] == "white":
+            return e["params"]["density"]
+    raise AssertionError(f"no white effect in {model.effects()}")
+
+
+def test_fit_recovers_the_white_density(record):
+    rec, _ = record
+    model = sinsim.fit(rec, axes=["gx"], kind="allan")
+    # The Allan fit of 2e5 white samples: its tau0 point alone has a relative sd of about
+    # 1/sqrt(2n) in variance; 5 x sqrt(2/n) on the density is a loose 5-sigma-class bound.
+    assert white_density(model) == pytest.approx(DENSITY, rel=5 * math.sqrt(2 / N))
+
+
+def test_fit_from_a_dict_of_arrays_equals_fit_from_the_file(record):
+    rec, path = record
+    from_file = sinsim.fit(str(path), axes=["gx"], kind="ar")
+    arrays = {"rate": rec["rate"], "gx": np.asarray(rec["gx"])}  # the rate the loader read
+    from_dict = sinsim.fit(arrays, axes=["gx"], kind="ar")
+    assert from_file.effects() == from_dict.effects()
+
+
+def test_analyze_allan_of_white_noise(record):
+    rec, _ = record
+    a = sinsim.analyze(rec)
+    gx = a["gx"]["allan"]
+    # white rate noise: ADEV(tau) = N / sqrt(tau) (IEEE Std 952-1997, C.1). Up to tau = 10 s the
+    # estimate has >= 2e4/10 degrees of freedom, a relative sd < 3 %: 15 % is 5 sigma.
+    short = gx["tau"] <= 10
+    assert np.count_nonzero(short) >= 8
+    assert np.allclose(gx["adev"][short], DENSITY / np.sqrt(gx["tau"][short]), rtol=0.15)
+    assert a["gx"]["sd"] == pytest.approx(DENSITY * math.sqrt(RATE), rel=5 / math.sqrt(2 * N))
+
+
+def test_model_write_read_round_trip_and_edits(record, tmp_path):
+    rec, _ = record
+    fitted = sinsim.fit(rec, axes=["gx"], kind="allan")
+    p1, p2 = tmp_path / "m1.yaml", tmp_path / "m2.yaml"
+    fitted.write(str(p1))
+    m1 = sinsim.Model(str(p1))
+    m1.write(str(p2))
+    assert sinsim.Model(str(p2)) == m1  # read(write(read(text))) == read(text)
+    edited = m1.with_param("gyro", "x", 0, "density", "1 deg/sqrt(h)")
+    assert edited.get("gyro", "x", 0, "density") == pytest.approx(2 * DENSITY, rel=1e-12)
+    assert m1.get("gyro", "x", 0, "density") != edited.get("gyro", "x", 0, "density")
+    with pytest.raises(sinsim.InputError, match="speed"):
+        m1.with_param("gyro", "x", 0, "speed", 1.0)
+    with pytest.raises(sinsim.InputError, match="density"):
+        m1.with_param("gyro", "x", 0, "density", "3 m")  # wrong dimension
+    plus = m1.with_effect("accel", "y", {"type": "white", "density": "0.05 m/s/sqrt(h)"})
+    assert "accel.y[0].white" in plus.effect_names()
+    with pytest.raises(sinsim.ConfigError, match="densty"):
+        m1.with_effect("accel", "y", {"type": "white", "densty": "0.05 m/s/sqrt(h)"})
+
+
+def test_fitted_model_drives_a_run(record):
+    rec, _ = record
+    fitted = sinsim.fit(rec, axes=["gx"], kind="allan")
+    r = sinsim.run(static_scenario(10), model=fitted, seed=2)
+    assert r["summary"]["final_horizontal"] > 0
+    none = sinsim.run(static_scenario(10), model="none", seed=2)
+    assert r["summary"]["final_horizontal"] > 100 * none["summary"]["final_horizontal"]
+
+
+def test_record_dict_errors_name_the_key():
+    with pytest.raises(sinsim.InputError, match="gyro_x"):
+        sinsim.fit({"rate": 100.0, "gyro_x": np.zeros(10)})
+    with pytest.raises(sinsim.InputError, match="rate"):
+        sinsim.analyze({"gx": np.random.default_rng(1).normal(size=1000)})
+
+
+def test_diagnose_finds_nothing_missing_in_the_true_model(record):
+    rec, _ = record
+    d = sinsim.diagnose(rec, sinsim.Model(TRUE_MODEL), channels=["gx"], realisations=8, seed=3)
+    # The record was drawn from this very model: no effect can be missing at the 8-sigma
+    # reporting threshold (docs/diagnose.md).
+    assert [f["effect"] for f in d["gx"]["findings"] if f["reported"]] == []
