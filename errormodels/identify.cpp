@@ -376,6 +376,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       case IdentifyKind::Auto:
         detail::chooseAuto(ax, x, pts, dt, os, opt, ax.arDenoised);
         for (const auto& d : ax.decision) ax.written.notes.push_back("auto: " + d);
+        if (ax.latent)
+          for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
         break;
     }
 

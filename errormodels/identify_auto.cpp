@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "common/number_text.hpp"
 #include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/fit/latent_fit.hpp"
 
 namespace sinsim::errormodels::detail {
 namespace {
@@ -32,7 +33,9 @@ double predictionGain(const fit::ArFit& f) {
 ///     white), so the long-tau terms B, K, R are refitted on tau >= 60 T_c (T_c of the AR model;
 ///     there the AR's Allan variance is within ~3 % of its white asymptote, IEEE 952 C GM form)
 ///     with N free and Q off, and only detected B, K, R are written.
-///     Absent: write the detected terms of step 1.
+///     Absent: write the composite latent fit (fit/latent_fit.hpp: white, quantization, GM, random
+///     walk, flicker chosen by the penalised GLS criterion) over the whole tau range, so that no
+///     term that dominates a tau range of the record is dropped.
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
                 double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt,
                 const std::optional<fit::OrderSelection>& arDen) {
@@ -80,8 +83,18 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
                          (shortCorr ? " >= " : " < ") + significant(opt.autoMinPredictionGain, 3) + " -> " +
                          (shortCorr ? "short correlation: AR" : "no short correlation: Allan terms"));
   if (!shortCorr) {
-    out.kind = IdentifyKind::Allan;
-    out.written.allan = out.allanFit;
+    // The composite latent fit over the whole tau range (no start scan): every term that
+    // dominates some tau range of the record stays in the model (issue 11: the Allan-term
+    // description alone could keep a flicker floor and drop the white noise above it).
+    fit::LatentFitOptions lo;
+    lo.sampleInterval = dt;
+    out.latent = fit::fitLatentModel(x, lo);
+    out.kind = IdentifyKind::Latent;
+    out.written.latent = out.latent;
+    out.decision.push_back("no short correlation: composite latent fit over the whole tau range: " +
+                           out.latent->terms.name() + " (chi2 " + significant(out.latent->chi2, 3) +
+                           " / " + std::to_string(out.latent->dof) + " dof, p " +
+                           significant(out.latent->pValue, 2) + ")");
     return;
   }
   out.kind = IdentifyKind::Ar;
