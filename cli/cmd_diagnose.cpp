@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/stats/record.hpp"
@@ -59,7 +60,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   if (adds.empty() && a.edited.empty()) {
     const auto d = dg::diagnose(record, model, o);
     std::cout << dg::summaryTable(d);
-    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(d));
+    if (!a.json.empty()) sinsim::writeFileAtomic(a.json, dg::toJson(d));
     if (!a.html.empty()) writeDiagnoseReport(a.html, d);
   } else {
     const auto imp = adds.empty() ? dg::compareModels(record, model, dg::ModelText::load(a.edited), o)
@@ -67,10 +68,10 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
     std::cout << dg::summaryTable(imp);
     if (!adds.empty()) {
       const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
-      dg::writeFileAtomic(out, imp.model.text);
+      sinsim::writeFileAtomic(out, imp.model.text);
       std::cout << "wrote the improved model " << out << "\n";
     }
-    if (!a.json.empty()) dg::writeFileAtomic(a.json, dg::toJson(imp));
+    if (!a.json.empty()) sinsim::writeFileAtomic(a.json, dg::toJson(imp));
     if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

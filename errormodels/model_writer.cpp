@@ -11,9 +11,9 @@
 // and s, Hz, deg, degC (absolute, for a lone temperature), plain numbers, deg/s/g.
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "errormodels/effect.hpp"
 #include "errormodels/model_io.hpp"
 
@@ -143,22 +143,8 @@ std::string errorModelYaml(const ErrorModelSpec& spec) {
 }
 
 void writeErrorModel(const std::string& path, const ErrorModelSpec& spec) {
-  const std::string text = errorModelYaml(spec);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw Error("cannot write model file " + tmp);
-    f << text;
-    f.flush();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw Error("cannot write model file " + tmp);
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw Error("cannot move model file into place: " + path);
-  }
+  // Temporary beside the target, then rename; a missing folder is named in the error.
+  writeFileAtomic(path, errorModelYaml(spec));
 }
 
 }  // namespace sinsim::errormodels

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/atomic_file.hpp"
 #include "sim/report/report.hpp"
 
 namespace sinsim {
@@ -161,7 +162,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
 
 void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp) {
   const std::string html = diagnoseReportHtml(d, imp);
-  dg::writeFileAtomic(path, html);
+  sinsim::writeFileAtomic(path, html);
 }
 
 }  // namespace sinsim
