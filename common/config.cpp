@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <unordered_map>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
@@ -113,23 +116,67 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
   return out;
 }
 
+/// Where each document starts, and its first node (nothing is built).
+struct DocumentStarts : YAML::EventHandler {
+  std::vector<YAML::Mark> starts, firstNodes;
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t) override { node(m); }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { node(m); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(m);
+  }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(m);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(m);
+  }
+  void OnMapEnd() override {}
+  void node(const YAML::Mark& m) {
+    if (firstNodes.size() < starts.size()) firstNodes.push_back(m);
+  }
+};
+
+/// Refuses a second document, parsing at most two. yaml-cpp 0.7's LoadAll loops for ever,
+/// allocating, on a stray ',' in block context (", a" yields empty documents without consuming
+/// the token: yaml-cpp issue 1040, fixed upstream by PR 1319; found by fuzz_config). A second
+/// document that starts where the first did is that stuck parser, reported as a syntax error.
+void checkSingleDocument(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentStarts events;
+  for (int k = 0; k < 2 && parser.HandleNextDocument(events); ++k) {
+  }
+  if (events.starts.size() < 2) return;
+  const YAML::Mark& second = events.starts[1];
+  if (second.pos == events.starts[0].pos)
+    throw ConfigError({{name, second.line + 1, "",
+                        "YAML syntax error: unexpected character at column " +
+                            std::to_string(second.column + 1) + " (a stray ',' ?)"}});
+  const YAML::Mark at = events.firstNodes.size() > 1 ? events.firstNodes[1] : second;
+  throw ConfigError({{name, at.line + 1, "",
+                      "a second YAML document (after ---): one file holds one document"}});
+}
+
 }  // namespace
 
 ConfigFile ConfigFile::fromString(const std::string& text, const std::string& name) {
   if (const int line = nulLine(text))
     throw ConfigError({{name, line, "",
                         "a NUL byte (\\x00) in the text: not a YAML file (binary or UTF-16?)"}});
-  std::vector<YAML::Node> docs;
+  YAML::Node root;
   try {
-    docs = YAML::LoadAll(text);
+    checkSingleDocument(text, name);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw ConfigError({{name, e.mark.line >= 0 ? e.mark.line + 1 : 0, "",
                         "YAML syntax error: " + e.msg}});
   }
-  if (docs.size() > 1)
-    throw ConfigError({{name, lineOf(docs[1], 0), "",
-                        "a second YAML document (after ---): one file holds one document"}});
-  YAML::Node root = docs.empty() ? YAML::Node() : docs[0];
   std::vector<Diagnostic> problems = checkTree(root, name);
   if (!problems.empty()) throw ConfigError(problems);
   return ConfigFile(root, name);

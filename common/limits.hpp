@@ -70,6 +70,13 @@ inline bool tooManySamples(double duration, double rate) {
   return !(std::isfinite(n) && n <= kMaxSamples);
 }
 
+// ---- Monte Carlo -----------------------------------------------------------------------------
+/// Largest number of runs per model of `sinsim mc` (4e9 used to end in std::bad_alloc).
+constexpr double kMaxMcRuns = 1e7;
+/// [bytes] Largest size of a Monte Carlo batch's errors held for the statistics: models (with
+/// budget variants) × runs × output epochs × error fields × 4 bytes.
+constexpr double kMaxMcResultBytes = 4.0 * (1u << 30);
+
 /// "1e+05" style number with enough digits to tell it from its neighbours (up to 12).
 std::string fmt(double x, int digits = 6);
 

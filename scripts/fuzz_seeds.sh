@@ -2,7 +2,7 @@
 # Builds the seed corpora of the fuzz targets (tests/fuzz) from the repository's own inputs:
 #   scenario: scenarios/*.yaml (the presets' `errors:` paths stay relative) and tests/sim/fixtures
 #   model:    the sensor presets and grades in scenarios/, plus tests/fuzz/seeds/model
-#   config:   every YAML above
+#   config:   every YAML above, plus tests/fuzz/seeds/config (regressions)
 #   record:   tests/fuzz/seeds/record and the first 200 lines of the ADIS16405 record when
 #             ../shared/data is there (option byte 0x01 prepended: rate given, 100 Hz)
 # Usage: scripts/fuzz_seeds.sh OUTDIR   (creates OUTDIR/{config,model,scenario,record})
@@ -18,7 +18,7 @@ for f in scenarios/*.yaml tests/sim/fixtures/*.yaml; do
 done
 cp tests/fuzz/seeds/model/* "$out/model/"
 cp tests/fuzz/seeds/scenario/* "$out/scenario/"
-cp tests/fuzz/seeds/model/* tests/fuzz/seeds/scenario/* "$out/config/"
+cp tests/fuzz/seeds/model/* tests/fuzz/seeds/scenario/* tests/fuzz/seeds/config/* "$out/config/"
 # The first byte of a record input selects the options (tests/fuzz/fuzz_record.cpp).
 for f in tests/fuzz/seeds/record/*; do
   { printf '\x04'; cat "$f"; } > "$out/record/$(basename "$f")"

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "sim/mc_checkpoint.hpp"
 #include "sim/mc_output.hpp"
 
@@ -39,6 +40,9 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
 
   // ---- validate ----------------------------------------------------------------------------------
   if (opt.runs == 0) throw InputError("--runs must be at least 1");
+  if (double(opt.runs) > limits::kMaxMcRuns)
+    throw InputError("--runs " + std::to_string(opt.runs) + " is above the limit of " +
+                     limits::fmt(limits::kMaxMcRuns) + " runs per model (docs/limits.md)");
   if (opt.outDir.empty()) throw InputError("an output folder is required (-o DIR)");
   if (primaryModels.empty()) throw InputError("no error model given");
   if (ref.epochs() < 2) throw InputError("the scenario has fewer than two output epochs");
@@ -86,6 +90,17 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     }
   }
 
+  // Every run's errors are held for the statistics: refuse before anything is allocated.
+  const double resultBytes = double(models.size()) * double(opt.runs) * double(ref.epochs()) *
+                             double(kErrorFields) * sizeof(float);
+  if (resultBytes > limits::kMaxMcResultBytes)
+    throw InputError("--runs " + std::to_string(opt.runs) + " with " +
+                     std::to_string(models.size()) + " model(s) and " +
+                     std::to_string(ref.epochs()) + " output epochs needs " +
+                     limits::fmt(resultBytes / double(1u << 30), 3) +
+                     " GiB of run errors, above the limit of " +
+                     limits::fmt(limits::kMaxMcResultBytes / double(1u << 30), 3) +
+                     " GiB (docs/limits.md): fewer runs or a shorter run");
   const std::uint64_t base = referenceFingerprint(ref, opt);
   std::vector<std::uint64_t> fps;
   std::vector<std::string> labels;

@@ -10,11 +10,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (model.empty()) return;
     auto c = model.instantiate(100.0, {1, 0});
     for (int k = 1; k <= 8; ++k) {
-      sinsim::nav::ImuSample s;
+      sinsim::ImuSample s;
       s.t = 0.01 * k;
       s.dt = 0.01;
-      s.dtheta_b = sinsim::nav::Vec3(1e-4, -2e-4, 3e-4);
-      s.dv_b = sinsim::nav::Vec3(0.0, 0.0, -0.098);
+      s.dtheta_b = sinsim::Vec3(1e-4, -2e-4, 3e-4);
+      s.dv_b = sinsim::Vec3(0.0, 0.0, -0.098);
       c->corrupt(s, 298.15);
     }
   });

@@ -78,3 +78,50 @@ TEST_CASE("sinsim analyze and synth: rates and lengths beyond an IMU are refused
   CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(10));  // it ran for minutes
   CHECK_FALSE(fs::exists(csv));
 }
+
+TEST_CASE("sinsim mc: a run count beyond memory is a limit error, not bad_alloc") {
+  const fs::path d = tempDir("mc");
+  writeText(d / "s.yaml", "start: {latitude: 45 deg, longitude: 7 deg}\nimu_rate: 10 Hz\n"
+                          "segments: [{type: static, duration: 10 s}]\n");
+  writeText(d / "m.yaml", "gyro:\n  all: [{type: white, density: 0.1 deg/sqrt(h)}]\n");
+  const fs::path out = d / "out";
+  CHECK(runSinsim("mc " + (d / "s.yaml").string() + " --model " + (d / "m.yaml").string() +
+                      " --runs 4000000000 --no-progress -o " + out.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("--runs 4000000000 is above the limit of"));
+  CHECK_THAT(slurp(d / "err"), !Contains("internal error"));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("sinsim fit: a constant channel names file and channel; a missing folder is named") {
+  const fs::path d = tempDir("fit");
+  std::string csv = "gx\n";
+  for (int k = 0; k < 400; ++k) csv += "0.25\n";  // zero variance: nothing to fit
+  writeText(d / "const.csv", csv);
+  const fs::path model = d / "m.yaml";
+  CHECK(runSinsim("fit " + (d / "const.csv").string() + " --rate 100 -o " + model.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains((d / "const.csv").string() + ": channel gx"));
+  CHECK_FALSE(fs::exists(model));
+
+  std::string noisy = "gx\n";
+  for (int k = 0; k < 4000; ++k) noisy += std::to_string((k * 7919 % 1000) / 1000.0) + "\n";
+  writeText(d / "noisy.csv", noisy);
+  const fs::path missing = d / "no" / "such" / "m.yaml";
+  CHECK(runSinsim("fit " + (d / "noisy.csv").string() + " --rate 100 --kind ar -o " +
+                      missing.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("cannot write " + missing.string() + ": folder " +
+                                        (d / "no" / "such").string() + " does not exist"));
+}
+
+TEST_CASE("sinsim diagnose: a failure deep in the statistics names the record") {
+  const fs::path d = tempDir("diagnose");
+  writeText(d / "short.csv", "gx\n0.1\n0.3\n");
+  writeText(d / "m.yaml", "gyro:\n  x: [{type: white, density: 0.1 deg/sqrt(h)}]\n");
+  CHECK(runSinsim("diagnose " + (d / "short.csv").string() + " --rate 100 --model " +
+                      (d / "m.yaml").string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains((d / "short.csv").string() + ": "));
+  CHECK_THAT(slurp(d / "err"), !Contains("internal error"));
+}

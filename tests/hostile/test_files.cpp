@@ -99,3 +99,11 @@ TEST_CASE("an AR pole just inside the margin prints with enough digits") {
              }),
              Contains("largest pole magnitude 0.9999999999 "));
 }
+
+TEST_CASE("a stray ',' in block context is a syntax error, not an endless loop") {
+  // yaml-cpp 0.7's LoadAll loops for ever, allocating, on ", a" (found by fuzz_config).
+  CHECK_THAT(messageOf([] { ConfigFile::fromString(", a\n", "comma.yaml"); }),
+             Contains("comma.yaml:1: YAML syntax error"));
+  CHECK_THAT(messageOf([] { ConfigFile::fromString("# note\n, as stated\nx: 1\n", "c2.yaml"); }),
+             Contains("c2.yaml:2: YAML syntax error"));
+}
