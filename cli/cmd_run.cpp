@@ -51,7 +51,7 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("scenario", args->scenario,
                   "Scenario YAML file (default: scenarios/car.yaml)");
   cmd->add_option("-o,--output", args->outDir,
-                  "Output folder for truth.csv, nav.csv, errors.csv, summary.json "
+                  "Output folder for truth.csv, nav.csv, errors.csv, summary.json (filter.csv when aided, imu.csv with --imu) "
                   "(default: out/<scenario name>)");
   cmd->add_option("--seed", args->seed, "Seed of the sensor error realisation (overrides the "
                                         "scenario's seed:)");
@@ -74,8 +74,10 @@ void addRunCommand(CLI::App& app, Action& action) {
       if (!args->model.empty()) opt.model = args->model;
       opt.writeImu = args->imu;
       const sim::RunSummary s = sim::run(sc, opt);
-      std::cout << "sinsim run: " << file << " -> " << s.outDir
-                << " (truth.csv, nav.csv, errors.csv, summary.json) in " << s.wallTime << " s\n"
+      std::string files;
+      for (const std::string& f : s.files) files += (files.empty() ? "" : ", ") + f;
+      std::cout << "sinsim run: " << file << " -> " << s.outDir << " (" << files << ") in "
+                << s.wallTime << " s\n"
                 << sim::summaryLine(s) << "\n";
       return 0;
     };

@@ -240,7 +240,7 @@ py::dict synth(const py::object& model, double rate, const py::object& duration,
     spec.rpy[i++] = quantityArg(a, Dimension::angle(), "attitude");
   }
   if (i != 3) throw InputError("attitude: expected (roll, pitch, yaw)");
-  const sim::RecordTemperature temp(temperature, spec.duration);
+  const sim::TemperatureProfile temp = sim::temperatureFromText(temperature, spec.duration);
   {
     py::gil_scoped_release release;
     sim::writeStaticRecord(m, spec, temp, path);

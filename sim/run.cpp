@@ -151,6 +151,12 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   }
 
   RunSummary s;
+  if (fTruth) {
+    s.files = {"truth.csv", "nav.csv", "errors.csv"};
+    if (fFilter) s.files.push_back("filter.csv");
+    if (fImu) s.files.push_back("imu.csv");
+    s.files.push_back("summary.json");
+  }
   s.scenario = sc.name;
   s.model = model.source();
   s.seed = seed;

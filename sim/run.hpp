@@ -68,6 +68,7 @@ struct RunSummary {
   std::vector<aided::OutageResult> outages;  // aided runs: per GNSS outage window
   double wallTime = 0.0;    // [s]
   std::string outDir;       // "" when nothing was written
+  std::vector<std::string> files;  // the files written into outDir, in order
 };
 
 /// Runs the scenario. Throws InputError (ConfigError for a bad model file) before anything is
