@@ -53,19 +53,6 @@ std::vector<std::string> splitList(const std::string& s) {
   return r;
 }
 
-// "60", "60 s", "10 min": a plain number is seconds.
-double parseTime(const std::string& text, const std::string& what) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end && end != text.c_str() && std::string(end).find_first_not_of(" \t") == std::string::npos)
-    return v;
-  try {
-    return parseQuantityAs(text, Dimension::time());
-  } catch (const InputError& e) {
-    throw InputError(what + ": " + e.what());
-  }
-}
-
 double parseAngle(const std::string& text, const std::string& what) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
@@ -145,7 +132,7 @@ sim::MeasuredOptions measuredOptions(const Args& a) {
                            parseAngle(parts[2], "--attitude"));
   }
   o.heading = parseAngle(a.heading, "--heading");
-  if (!a.biasWindow.empty()) o.biasWindow = parseTime(a.biasWindow, "--bias-window");
+  if (!a.biasWindow.empty()) o.biasWindow = parseDuration(a.biasWindow, "--bias-window");
   o.strapdown.vertical = sim::verticalChannel(a.vertical, "--vertical");
   o.outputRate = a.outputRate;
   return o;
@@ -231,9 +218,9 @@ int runMc(const Args& a) {
       opt.threads = std::max(1u, std::thread::hardware_concurrency() / ranksHere);
     }
     if (!a.times.empty())
-      for (const auto& t : splitList(a.times)) opt.times.push_back(parseTime(t, "--times"));
+      for (const auto& t : splitList(a.times)) opt.times.push_back(parseDuration(t, "--times"));
     opt.budget = a.budget;
-    opt.navigate.biasWindow = a.biasWindow.empty() ? 0.0 : parseTime(a.biasWindow, "--bias-window");
+    opt.navigate.biasWindow = a.biasWindow.empty() ? 0.0 : parseDuration(a.biasWindow, "--bias-window");
     opt.resume = a.resume;
     opt.outDir = a.outDir;
     opt.interrupt = &gInterrupted;
