@@ -65,7 +65,7 @@ int runSynth(const SynthOptions& o) {
 void addSynthCommand(CLI::App& app, Action& action) {
   auto o = std::make_shared<SynthOptions>();
   CLI::App* c = app.add_subcommand(
-      "synth", "write a static IMU record (CSV t,gx,gy,gz,ax,ay,az,temp; s, rad/s, m/s^2, degC) "
+      "synth", "write a static IMU record (CSV t [s], gx gy gz [rad/s], ax ay az [m/s^2], temp [degC]) "
                "with Earth rate, gravity and the errors of MODEL");
   c->add_option("model", o->model, "error model file (YAML)")->required();
   c->add_option("--rate", o->rate, "IMU output rate [Hz]")->required();

@@ -50,7 +50,8 @@ long long writeStaticRecord(const errormodels::ImuErrorModel& model, const Stati
   const std::filesystem::path target(path);
   OutputFiles out(target.has_parent_path() ? target.parent_path().string() : ".");
   std::FILE* f = out.open(target.filename().string());
-  std::fputs("t,gx,gy,gz,ax,ay,az,temp\n", f);
+  // Units in the header: any reader (ours included) converts from them.
+  std::fputs("t [s],gx [rad/s],gy [rad/s],gz [rad/s],ax [m/s^2],ay [m/s^2],az [m/s^2],temp [degC]\n", f);
   std::vector<char> buf(1 << 16);
   std::size_t used = 0;
   auto flush = [&] {
