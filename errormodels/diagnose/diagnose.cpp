@@ -131,7 +131,12 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.threshold = o.threshold;
   run.d.bandLevel = o.bandLevel;
   for (std::size_t ci = 0; ci < channels.size(); ++ci) {
-    run.work.push_back(diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o));
+    try {
+      run.work.push_back(diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o));
+    } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
+      throw InputError(record.source + ": channel " + kChannels[std::size_t(channels[ci])] + ": " +
+                       e.what());
+    }
     run.d.axes.push_back(run.work.back().d);
   }
   return run;

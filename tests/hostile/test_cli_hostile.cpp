@@ -125,3 +125,19 @@ TEST_CASE("sinsim diagnose: a failure deep in the statistics names the record") 
   CHECK_THAT(slurp(d / "err"), Contains((d / "short.csv").string() + ": "));
   CHECK_THAT(slurp(d / "err"), !Contains("internal error"));
 }
+
+TEST_CASE("sinsim diagnose: a channel the statistics cannot use is named with its record") {
+  // gx varies, gy is one value: the failure deep inside (burg on a constant series) must say
+  // which record and which channel, not only what failed.
+  const fs::path d = tempDir("diagnose-channel");
+  std::string text = "gx,gy\n";
+  for (int k = 0; k < 2000; ++k)
+    text += std::to_string(((k * 7919) % 1000) / 1000.0 - 0.5) + ",0.25\n";
+  writeText(d / "flat.csv", text);
+  writeText(d / "m.yaml", "gyro:\n  all: [{type: white, density: 10 deg/sqrt(h)}]\n");
+  CHECK(runSinsim("diagnose " + (d / "flat.csv").string() + " --rate 100 --threads 1 --model " +
+                      (d / "m.yaml").string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains((d / "flat.csv").string() + ": channel gy: "));
+  CHECK_THAT(slurp(d / "err"), !Contains("internal error"));
+}
