@@ -26,8 +26,6 @@ struct AnalyzeArgs {
 
 int runAnalyze(const AnalyzeArgs& a) {
   const errormodels::RecordOptions ro = recordOptions(a.record);
-  if (a.json_out.empty() && a.html_out.empty())
-    throw InputError("analyze: give --json OUT and/or --html OUT");
   if (a.denoise != "none" && a.denoise != "db5")
     throw InputError("--denoise: expected db5 or none, got \"" + a.denoise + "\"");
   if (a.tau != "octave" && a.tau != "decade")
@@ -42,9 +40,11 @@ int runAnalyze(const AnalyzeArgs& a) {
   const std::vector<sim::ChannelStats> stats = sim::analyzeRecord(rec, opt);
   sim::writeAnalysis(rec, stats, opt, a.json_out, a.html_out);
   std::cout << "analyze: " << rec.size() << " samples at " << rec.rate_hz << " Hz, "
-            << stats.size() << " channel(s) ->"
-            << (a.json_out.empty() ? "" : " " + a.json_out)
-            << (a.html_out.empty() ? "" : " " + a.html_out) << "\n";
+            << stats.size() << " channel(s)";
+  if (!a.json_out.empty() || !a.html_out.empty())
+    std::cout << " ->" << (a.json_out.empty() ? "" : " " + a.json_out)
+              << (a.html_out.empty() ? "" : " " + a.html_out);
+  std::cout << "\n" << sim::analysisSummary(stats);
   return 0;
 }
 

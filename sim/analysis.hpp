@@ -39,6 +39,11 @@ struct ChannelStats {
 std::vector<ChannelStats> analyzeRecord(const errormodels::Record& record,
                                         const AnalysisOptions& options);
 
+/// A terminal table: per channel mean and sd, the white-noise density read at the shortest tau
+/// and the Allan minimum as a bias-instability B, in datasheet units (deg/h, deg/sqrt(h), ug,
+/// m/s/sqrt(h)).
+std::string analysisSummary(const std::vector<ChannelStats>& stats);
+
 /// Writes the analysis: JSON (SI, every number) to jsonPath and/or the HTML report to htmlPath
 /// (empty: not written), each whole or not at all.
 void writeAnalysis(const errormodels::Record& record, const std::vector<ChannelStats>& stats,
