@@ -1,4 +1,5 @@
 #include "common/units.hpp"
+#include "common/text.hpp"
 
 #include "common/limits.hpp"
 
@@ -210,11 +211,6 @@ class UnitParser {
   double loneOffset_ = 0.0;
 };
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
 
 }  // namespace
 
@@ -275,21 +271,21 @@ std::string knownUnits() {
 }
 
 Quantity parseUnit(std::string_view unit) {
-  UnitParser p(trim(unit));
+  UnitParser p(trimmed(unit));
   Quantity q = p.expression();
   if (!p.done()) throw InputError("cannot read unit \"" + limits::echo(unit) + "\"");
   return q;
 }
 
 Quantity parseQuantity(std::string_view text) {
-  std::string_view t = trim(text);
+  std::string_view t = trimmed(text);
   if (t.empty()) throw InputError("empty value");
   std::string buf(t);
   char* end = nullptr;
   double value = std::strtod(buf.c_str(), &end);
   if (end == buf.c_str()) throw InputError("expected a number, got \"" + limits::echo(buf) + "\"");
   if (!std::isfinite(value)) throw InputError("value is not finite: \"" + limits::echo(buf) + "\"");
-  std::string_view rest = trim(std::string_view(end));
+  std::string_view rest = trimmed(std::string_view(end));
   if (rest.empty()) return {value, Dimension::none()};
   UnitParser p(rest);
   Quantity unit = p.expression();
@@ -307,7 +303,7 @@ double parseQuantityAs(std::string_view text, Dimension expected) {
   if (q.dim != expected) {
     std::string what = q.dim == Dimension::none() ? "no unit" : "a unit of " + q.dim.siUnit();
     throw InputError("expected a value in " + exampleUnit(expected) + " (SI " + expected.siUnit() +
-                     "), got \"" + limits::echo(trim(text)) + "\" with " + what);
+                     "), got \"" + limits::echo(trimmed(text)) + "\" with " + what);
   }
   return q.si;
 }
@@ -318,8 +314,8 @@ double parseDuration(std::string_view text, const std::string& option) {
     if (q.dim == Dimension::none()) q.dim = Dimension::time();  // a plain number is seconds
     if (q.dim != Dimension::time())
       throw InputError("expected a time such as \"90 s\", \"10 min\" or \"2 h\", got \"" +
-                       limits::echo(trim(text)) + "\"");
-    if (!(q.si >= 0.0)) throw InputError("expected a non-negative time, got \"" + limits::echo(trim(text)) + "\"");
+                       limits::echo(trimmed(text)) + "\"");
+    if (!(q.si >= 0.0)) throw InputError("expected a non-negative time, got \"" + limits::echo(trimmed(text)) + "\"");
     return q.si;
   } catch (const InputError& e) {
     throw InputError(option + ": " + e.what());

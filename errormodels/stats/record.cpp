@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
 #include "common/units.hpp"
@@ -28,17 +29,6 @@ struct Column {
   double offset = 0.0;
 };
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 [[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& what) {
   detail::recordError(source, line, what);
@@ -163,12 +153,12 @@ std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
       const std::size_t close = field.find(close_char, open);
       if (close == std::string_view::npos)
         fail(source, line, "header: column \"" + col.header + "\": unclosed unit bracket");
-      name = trim(field.substr(0, open));
-      unit = trim(field.substr(open + 1, close - open - 1));
+      name = trimmed(field.substr(0, open));
+      unit = trimmed(field.substr(open + 1, close - open - 1));
     }
-    std::string key = lower(name);
+    std::string key = lowered(name);
     if (const ColumnMap* m = mappedAs(options.columns, key, cols.size() + 1)) {
-      if (!m->unit.empty() && !unit.empty() && lower(m->unit) != lower(unit))
+      if (!m->unit.empty() && !unit.empty() && lowered(m->unit) != lowered(unit))
         fail(source, line, "column \"" + col.header + "\": unit [" + std::string(unit) +
                                "] in the file and [" + m->unit + "] in the column mapping");
       if (!m->unit.empty()) unit = m->unit;
@@ -212,7 +202,7 @@ std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
       std::string_view f = fields[i];
       const std::size_t open = f.find_first_of("[(");
       found = m.byNumber() ? m.column == std::to_string(i + 1)
-                           : lower(trim(f.substr(0, open))) == m.column;
+                           : lowered(trimmed(f.substr(0, open))) == m.column;
     }
     if (!found)
       fail(source, line, "column mapping " + m.quantity + "=" + m.column + ": the file has no " +
@@ -273,7 +263,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
     if (eol == nullptr) eol = end;
     ++line;
-    std::string_view l = trim(std::string_view(p, static_cast<std::size_t>(eol - p)));
+    std::string_view l = trimmed(std::string_view(p, static_cast<std::size_t>(eol - p)));
     const char* const lineStart = p;
     p = eol < end ? eol + 1 : end;
     if (l.empty() || l.front() == '#') continue;
@@ -316,7 +306,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     const char* q = p;
     const char* next = eol < end ? eol + 1 : end;
     // Blank lines are allowed only at the end of the file.
-    if (trim(std::string_view(p, static_cast<std::size_t>(eol - p))).empty()) {
+    if (trimmed(std::string_view(p, static_cast<std::size_t>(eol - p))).empty()) {
       const char* r = next;
       while (r < end && (*r == '\n' || *r == '\r' || *r == ' ' || *r == '\t')) ++r;
       if (r == end) break;

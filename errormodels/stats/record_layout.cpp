@@ -4,22 +4,11 @@
 #include <cctype>
 
 #include "common/error.hpp"
+#include "common/text.hpp"
 #include "common/limits.hpp"
 
 namespace sinsim::errormodels {
 namespace {
-
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
-std::string lowered(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 bool knownQuantity(const std::string& q) {
   static const char* const names[] = {"t", "gx", "gy", "gz", "ax", "ay", "az", "temp"};
