@@ -161,6 +161,9 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::N
   p.C_nb = sum_.C_nb / stepTime_;
   filter_.setVerticalGains(sd.dampingGainK1(), sd.dampingGainK2());
   filter_.propagate(p, stepTime_);
+  // The sampled (ar) blocks' predicted effect over the step (zero without them, or without fixes).
+  const Vec9 drift = filter_.takeNavCorrection();
+  if (!drift.isZero()) sd.correct(drift.segment<3>(0), drift.segment<3>(3), drift.segment<3>(6));
   sum_ = nav::InsErrorPoint();
   sum_.f_n.setZero();
   sum_.C_nb.setZero();

@@ -1,6 +1,11 @@
 #include "sim/aided/error_state_filter.hpp"
 
+#include <cmath>
+#include <string>
+
+#include "common/error.hpp"
 #include "nav/attitude.hpp"
+#include "sim/aided/step_aggregation.hpp"
 
 namespace sinsim::sim::aided {
 
@@ -27,6 +32,7 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
       P_.block(offset, offset, b.size, b.size) = b.P0;
       x_.segment(offset, b.size) = b.x0;
       offset += b.size;
+      aggregations_.emplace_back();
     }
   }
 }
@@ -34,7 +40,7 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
 nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
   nav::Vec3 e = nav::Vec3::Zero();
   for (const Placed& p : placed_)
-    if (p.axis >= firstAxis && p.axis < firstAxis + 3)
+    if (!p.block->discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
       e[p.axis - firstAxis] += p.block->c.dot(x_.segment(p.offset, p.block->size));
   return e;
 }
@@ -59,28 +65,75 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
   for (const Placed& pl : placed_) {
     const StateBlock& b = *pl.block;
     const auto g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
+    if (b.discrete) continue;  // sampled processes: aggregated over the step (propagate)
     F.block(0, pl.offset, 9, b.size) = g * b.c;  // the sensor error c x drives the INS errors
-    if (!b.discrete) {  // discrete blocks are held over the step (their A^m is spliced in later)
-      F.block(pl.offset, pl.offset, b.size, b.size) = b.F;
-      Qc.block(pl.offset, pl.offset, b.size, b.size) = b.Qc;
-    }
+    F.block(pl.offset, pl.offset, b.size, b.size) = b.F;
+    Qc.block(pl.offset, pl.offset, b.size, b.size) = b.Qc;
   }
+}
+
+const StepAggregation& ErrorStateFilter::aggregation(std::size_t placedIndex, double T) {
+  const StateBlock& b = *placed_[placedIndex].block;
+  const int m = samplesPerStep(b, T);
+  std::vector<StepAggregation>& cache = aggregations_[placedIndex];
+  for (const StepAggregation& g : cache)
+    if (g.samples == m) return g;
+  cache.push_back(aggregateBlock(b, T));
+  return cache.back();
+}
+
+// A discrete block's exact Φ and Qd over T (step_aggregation.hpp): the INS errors see it through
+// T Σ_k (F T)^k g μ_k, g its input column; F is the INS error block of the continuous model.
+void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::MatrixXd& F,
+                                      const Eigen::Matrix<double, 9, 1>& g, double T,
+                                      DiscreteSystem& d, Eigen::Matrix<double, 9, 1>& navMean) {
+  const Placed& pl = placed_[placedIndex];
+  const StepAggregation& agg = aggregation(placedIndex, T);
+  const int K = agg.order, o = pl.offset, p = pl.block->size;
+  const Eigen::Matrix<double, 9, 9> FT = F.topLeftCorner<9, 9>() * T;
+  Eigen::Matrix<double, 9, Eigen::Dynamic> U(9, K + 1);  // u_k = (F T)^k g
+  U.col(0) = g;
+  for (int k = 1; k <= K; ++k) U.col(k) = FT * U.col(k - 1);
+  // |μ_k| <= max|y| / (k+1)!: the last term must be below rounding of the largest.
+  double largest = 0.0, inv = 1.0;
+  for (int k = 0; k <= K; ++k) {
+    inv /= (k + 1);
+    largest = std::max(largest, U.col(k).lpNorm<Eigen::Infinity>() * inv);
+  }
+  if (!(U.col(K).lpNorm<Eigen::Infinity>() * inv <= 0x1p-53 * largest))
+    throw InputError("filter: the step of " + std::to_string(T) +
+                     " s is too long for the series of a sampled sensor process (ar); use a "
+                     "higher GNSS rate");
+  const Eigen::MatrixXd PhiNa = T * U * agg.PhiMu;  // 9 × p
+  navMean += PhiNa * x_.segment(o, p);
+  d.Phi.block(0, o, 9, p) = PhiNa;
+  d.Phi.block(o, o, p, p) = agg.Phi;
+  const Eigen::MatrixXd QNa = T * U * agg.QdMuA;
+  d.Qd.block(0, o, 9, p) = QNa;
+  d.Qd.block(o, 0, p, 9) = QNa.transpose();
+  d.Qd.block(o, o, p, p) = agg.Qd;
+  d.Qd.topLeftCorner<9, 9>() += (T * T) * U * agg.QdMuMu * U.transpose();
 }
 
 void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
   Eigen::MatrixXd F, Qc;
   continuousModel(p, F, Qc);
   DiscreteSystem d = discretize(F, Qc, T);
-  for (const Placed& pl : placed_) {
+  Eigen::Matrix<double, 9, 1> navMean = Eigen::Matrix<double, 9, 1>::Zero();
+  const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
+  const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
+  for (std::size_t i = 0; i < placed_.size(); ++i) {
+    const Placed& pl = placed_[i];
     if (!pl.block->discrete) continue;
-    const DiscreteSystem s = discretizeBlock(*pl.block, T);
-    d.Phi.block(pl.offset, pl.offset, pl.block->size, pl.block->size) = s.Phi;
-    d.Qd.block(pl.offset, pl.offset, pl.block->size, pl.block->size) = s.Qd;
+    const Eigen::Matrix<double, 9, 1> g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
+    spliceDiscrete(i, F, g, T, d, navMean);
   }
   kalmanPredict(x_, P_, d.Phi, d.Qd);
-  // Closed loop: the caller removes the sensor-error estimate from the IMU, so the drift Φ_ns x_s
-  // the open-loop prediction adds to the navigation errors never happens; their mean stays zero.
-  x_.head<9>().setZero();
+  // Closed loop: the caller removes the continuous blocks' estimate from the IMU, so the drift
+  // Φ_ns x_s the open-loop prediction adds to the navigation errors never happens. A sampled
+  // block's estimate decays within its correlation time, far inside the step, and is not
+  // compensated: its predicted effect stays in the navigation states for the caller to feed back.
+  x_.head<9>() = navMean;
 }
 
 Innovation ErrorStateFilter::updatePosition(const nav::Vec3& dz, const nav::Vec3& leverArm_n,

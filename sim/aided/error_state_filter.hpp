@@ -4,10 +4,11 @@
 // update the caller takes the navigation correction (and the states are zeroed) and compensates
 // the IMU with the sensor-error estimate.
 //
-// Propagation is exact for the model held constant over the step: Φ and Qd of the continuous part
-// (INS errors, white noise, bias / random-walk / Gauss-Markov states) from their series summed to
-// rounding (discretize.hpp; Van Loan's matrix exponential where the series is not safe), the AR
-// blocks' own A^m and Σ A^j Q A^jᵀ spliced in (sensor_states.hpp).
+// Propagation is exact for the error dynamics held constant over the step: Φ and Qd of the
+// continuous part (INS errors, white noise, bias / random-walk / Gauss-Markov states) from their
+// series summed to rounding (discretize.hpp; Van Loan's matrix exponential where the series is not
+// safe); the sampled (AR) blocks, whose samples are much shorter than the step, by their exact
+// aggregation over the step's samples (step_aggregation.hpp) spliced in.
 #pragma once
 
 #include <vector>
@@ -18,6 +19,7 @@
 #include "nav/ins_error_model.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
+#include "sim/aided/step_aggregation.hpp"
 
 namespace sinsim::sim::aided {
 
@@ -48,7 +50,10 @@ class ErrorStateFilter {
   int size() const { return static_cast<int>(x_.size()); }
   const Eigen::VectorXd& x() const { return x_; }
   const Eigen::MatrixXd& P() const { return P_; }
-  /// Current estimates of the gyro [rad/s] and accelerometer [m/s^2] errors, per body axis.
+  /// Current estimates of the gyro [rad/s] and accelerometer [m/s^2] errors, per body axis, that
+  /// the caller compensates the IMU with: the continuous blocks' (bias, random walk, GM). A
+  /// sampled (ar) block is not compensated; its predicted effect on the INS errors over each step
+  /// is left in x's navigation part by propagate.
   nav::Vec3 gyroError() const { return sensorError(0); }
   nav::Vec3 accelError() const { return sensorError(3); }
 
@@ -58,7 +63,9 @@ class ErrorStateFilter {
     options_.k2 = k2;
   }
   /// Propagates x and P over T [s] with the error dynamics linearised at p. Closed loop: the
-  /// navigation part of x stays zero (the caller compensates the IMU with gyroError/accelError).
+  /// navigation part of x is the predicted effect of the sampled blocks' estimates only (zero
+  /// without them); the caller compensates the IMU with gyroError/accelError for the rest and
+  /// feeds the navigation part back with takeNavCorrection.
   void propagate(const nav::InsErrorPoint& p, double T);
   /// Continuous system (F, Qc) at p, for tests and for callers that discretise themselves.
   void continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F, Eigen::MatrixXd& Qc) const;
@@ -76,12 +83,17 @@ class ErrorStateFilter {
 
  private:
   nav::Vec3 sensorError(int firstAxis) const;
+  const StepAggregation& aggregation(std::size_t placedIndex, double T);
+  void spliceDiscrete(std::size_t placedIndex, const Eigen::MatrixXd& F,
+                      const Eigen::Matrix<double, 9, 1>& g, double T, DiscreteSystem& d,
+                      Eigen::Matrix<double, 9, 1>& navMean);
 
   const nav::Earth* earth_;
   FilterSensorModel model_;
   FilterOptions options_;
   struct Placed { int axis; int offset; const StateBlock* block; };  // axis 0-2 gyro, 3-5 accel
   std::vector<Placed> placed_;
+  std::vector<std::vector<StepAggregation>> aggregations_;  // per placed block, per step length
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
 };

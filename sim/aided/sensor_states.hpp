@@ -4,13 +4,14 @@
 //   bias (constant)      1 state   ẋ = 0                          P0 = sigma²
 //   random_walk K        1 state   ẋ = K w                        Qc = K²
 //   gauss_markov σ, τ    1 state   ẋ = −x/τ + sqrt(2σ²/τ) w       Qc = 2σ²/τ, P0 = σ²
+//     with a rate f      1 state   the held discrete GM, an AR(1) at f (below)
 //   ar a1..ap, σ_e, f    p states  companion form at its own rate f (below), held between samples
 //   white (density N)    no state: enters the INS errors directly with spectral density N²
 // The AR(p) companion state is x[n] = (y[n], y[n−1], …, y[n−p+1]):
 //   x[n+1] = A x[n] + e[n],  A = [[−a1 … −ap], [I_{p−1} 0]],  E[e eᵀ] = σ_e² e1 e1ᵀ,
 // so over m samples Φ = A^m and Qd = Σ_{j<m} A^j Q A^jᵀ (exact); P0 is the stationary Toeplitz
-// autocovariance r(|i−j|) (errormodels/ar_model.hpp). Between its samples the filter holds y
-// (zero-order hold); the averaging of several AR samples inside one filter step is not modelled.
+// autocovariance r(|i−j|) (errormodels/ar_model.hpp). Over a filter step of many samples the
+// INS errors see the step's samples through their time-weighted sums (step_aggregation.hpp).
 #pragma once
 
 #include <string>
@@ -43,6 +44,10 @@ StateBlock biasState(double sigma);
 StateBlock randomWalkState(double K, double sigma0 = 0.0);
 /// First-order Gauss-Markov, stationary sigma [signal] > 0, correlation time tau [s] > 0.
 StateBlock gaussMarkovState(double sigma, double tau);
+/// A Gauss-Markov sampled at `rate` [Hz] and held (the model's `rate:`): exactly the AR(1)
+/// x[n+1] = φ x[n] + σ sqrt(1 − φ²) e[n], φ = exp(−1/(rate τ)), as the truth generates it; a
+/// discrete block named "gauss_markov".
+StateBlock sampledGaussMarkovState(double sigma, double tau, double rate);
 /// AR(p) in the arburg convention (errormodels/ar_model.hpp): coefficients a1..ap (stable),
 /// driving-noise standard deviation sigmaE [signal], rate [Hz].
 StateBlock arState(const std::vector<double>& a, double sigmaE, double rate);
