@@ -34,7 +34,10 @@ void addEffect(const EffectSpec& e, SensorAxisModel& axis, std::vector<Diagnosti
     } else if (e.type == "random_walk") {
       axis.blocks.push_back(randomWalkState(valueOr(e, "K", NAN)));
     } else if (e.type == "gauss_markov") {
-      axis.blocks.push_back(gaussMarkovState(valueOr(e, "sigma", NAN), valueOr(e, "tau", NAN)));
+      const double sigma = valueOr(e, "sigma", NAN), tau = valueOr(e, "tau", NAN);
+      const double rate = valueOr(e, "rate", 0.0);
+      axis.blocks.push_back(rate > 0.0 ? sampledGaussMarkovState(sigma, tau, rate)
+                                       : gaussMarkovState(sigma, tau));
     } else if (e.type == "ar") {
       axis.blocks.push_back(arState(errormodels::valuesOf(e, "a"),
                                     errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));

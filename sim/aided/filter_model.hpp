@@ -6,8 +6,8 @@
 //   bias           → 1 constant state, prior mean `value`, prior sigma `sigma`
 //   random_walk    → 1 random-walk state with K, starting at 0 (exact without a rate; with a
 //                    `rate` the held discrete walk is modelled by the continuous walk of the same K)
-//   gauss_markov   → 1 state σ, τ (with a `rate`: the held discrete GM, φ = exp(−h/τ), by the
-//                    continuous GM of the same σ, τ)
+//   gauss_markov   → 1 state σ, τ (with a `rate`: the held discrete GM, φ = exp(−h/τ), exactly,
+//                    as an AR(1) at that rate)
 //   ar             → p companion states at the model's own rate
 // Disabled effects (`enabled: no`) are skipped. Every other effect (triad scale factor,
 // misalignment, g-sensitivity; bias_instability, ramp, sinusoid, temperature, warmup, outliers,

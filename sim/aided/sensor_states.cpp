@@ -74,6 +74,17 @@ StateBlock arState(const std::vector<double>& a, double sigmaE, double rate) {
   return b;
 }
 
+StateBlock sampledGaussMarkovState(double sigma, double tau, double rate) {
+  requirePositive(sigma, "Gauss-Markov sigma");
+  requirePositive(tau, "Gauss-Markov tau");
+  requirePositive(rate, "Gauss-Markov rate");
+  const double phi = std::exp(-1.0 / (rate * tau));
+  StateBlock b = arState({-phi}, sigma * std::sqrt(-std::expm1(-2.0 / (rate * tau))), rate);
+  b.name = "gauss_markov";
+  b.P0(0, 0) = sigma * sigma;  // the stationary variance, exactly (not through Yule-Walker)
+  return b;
+}
+
 int samplesPerStep(const StateBlock& b, double T) {
   const double m = T / b.period;
   const double mr = std::round(m);

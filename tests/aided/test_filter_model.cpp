@@ -28,7 +28,8 @@ gnss: {rate: 1 Hz, position_sigma: 1 m}
 )";
 
 // Every supported effect: white (density and sigma at a rate), bias (value + sigma), random walk,
-// Gauss-Markov, AR(1) by output sigma; `all` and an axis's own list; a disabled unsupported effect.
+// Gauss-Markov (continuous, and sampled at a rate: an AR(1)), AR(1) by output sigma; `all` and
+// an axis's own list; a disabled unsupported effect.
 const char* kModel = R"(gyro:
   all:
     - {type: white, density: 0.15 deg/sqrt(h)}
@@ -36,6 +37,8 @@ const char* kModel = R"(gyro:
   x:
     - {type: white, sigma: 0.01 deg/s, rate: 100 Hz}
     - {type: ar, a: [-0.9], output_sigma: 0.02 deg/s, rate: 10 Hz}
+  y:
+    - {type: gauss_markov, sigma: 0.6 deg/s, tau: 20 ms, rate: 1 kHz}
     - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s], enabled: no}
 accel:
   all:
@@ -60,6 +63,11 @@ FilterSensorModel byHand() {
   m.gyro[0].whiteDensity = std::sqrt(Nall * Nall + Nx * Nx);
   // AR(1) y = 0.9 y + e: var y = σe² / (1 − 0.81), so σe = output sigma · sqrt(0.19).
   m.gyro[0].blocks.push_back(arState({-0.9}, 0.02 * deg * std::sqrt(0.19), 10.0));
+  // The held GM at 1 kHz: AR(1) y = φ y + e, φ = exp(−1 ms / 20 ms), σe = σ sqrt(1 − φ²).
+  const double phi = std::exp(-0.05);
+  StateBlock gm = arState({-phi}, 0.6 * deg * std::sqrt(1.0 - phi * phi), 1000.0);
+  gm.name = "gauss_markov";
+  m.gyro[1].blocks.push_back(gm);
   return m;
 }
 
@@ -116,7 +124,8 @@ TEST_CASE("filter model file: equal to the same model inline and to the states b
   CHECK(fromFile.aiding.filter.sensors == inl.aiding.filter.sensors);  // bit for bit
 
   const FilterSensorModel& m = fromFile.aiding.filter.sensors;
-  CHECK(m.stateCount() == 3 * 1 + 1 + 3 * 2);  // GM per gyro axis, AR(1) on x, bias + RW per accel
+  // GM per gyro axis, AR(1) on x, the sampled GM on y, bias + RW per accel
+  CHECK(m.stateCount() == 3 * 1 + 1 + 1 + 3 * 2);
   requireClose(m, byHand());
 }
 
