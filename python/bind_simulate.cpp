@@ -138,13 +138,15 @@ py::dict mcToDict(const sim::Reference& ref, const sim::McResult& r, std::size_t
   py::dict errors, final;
   for (std::size_t m = 0; m < r.labels.size(); ++m) {
     py::array_t<float> a({py::ssize_t(runs), py::ssize_t(epochs), py::ssize_t(sim::kErrorFields)});
-    std::copy(r.errors[m].begin(), r.errors[m].end(), a.mutable_data());
+    const std::size_t perRun = ref.runFloats(), n = epochs * sim::kErrorFields;
+    for (std::uint64_t run = 0; run < runs; ++run)  // the errors of each run (not an aided view)
+      std::copy_n(r.errors[m].begin() + long(run * perRun), n, a.mutable_data() + run * n);
     errors[r.labels[m].c_str()] = a;
     py::dict metrics;
     for (int k = 0; k < sim::kMetrics; ++k) {
       std::vector<double> v(runs);
       for (std::uint64_t run = 0; run < runs; ++run)
-        v[run] = sim::metricValue(&r.errors[m][((run + 1) * epochs - 1) * sim::kErrorFields], k);
+        v[run] = sim::metricValue(&r.errors[m][run * perRun + (epochs - 1) * sim::kErrorFields], k);
       metrics[sim::metricName(k)] = array(v);
     }
     final[r.labels[m].c_str()] = metrics;

@@ -144,10 +144,11 @@ std::uint64_t modelFingerprint(std::uint64_t base, const McModel& m) {
   return f.h;
 }
 
-CheckpointStore::CheckpointStore(std::string outDir, std::size_t epochs,
+CheckpointStore::CheckpointStore(std::string outDir, std::size_t epochs, std::size_t runFloats,
                                  const std::vector<std::string>& labels,
                                  std::vector<std::uint64_t> fingerprints)
-    : outDir_(std::move(outDir)), epochs_(epochs), fps_(std::move(fingerprints)) {
+    : outDir_(std::move(outDir)), epochs_(epochs), runFloats_(runFloats),
+      fps_(std::move(fingerprints)) {
   for (std::size_t m = 0; m < labels.size(); ++m) {
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fps_[m]));
@@ -202,7 +203,7 @@ void CheckpointStore::prepare(bool resume) {
 CheckpointStore::State CheckpointStore::read(const ChunkKey& k, float* out) const {
   std::FILE* f = std::fopen(path(k).c_str(), "rb");
   if (!f) return errno == ENOENT ? State::missing : State::damaged;
-  const std::size_t n = std::size_t(k.count) * epochs_ * kErrorFields;
+  const std::size_t n = std::size_t(k.count) * runFloats_;
   std::vector<float> scratch;
   if (!out) {
     scratch.resize(n);
@@ -232,7 +233,7 @@ void CheckpointStore::write(const ChunkKey& k, const float* data) const {
   h.count = k.count;
   h.epochs = epochs_;
   h.fields = kErrorFields;
-  const std::size_t n = std::size_t(k.count) * epochs_ * kErrorFields;
+  const std::size_t n = std::size_t(k.count) * runFloats_;
   const std::uint32_t crc = crcOf(crcOf(0, &h, sizeof h), data, n * sizeof(float));
   const std::string final = path(k);
   const std::string tmp = final + ".tmp." + std::to_string(::getpid()) + "." +

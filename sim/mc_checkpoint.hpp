@@ -41,7 +41,9 @@ class CheckpointStore {
   };
 
   /// fingerprints[m] identifies model m (labels[m] names its folder). Touches no file.
-  CheckpointStore(std::string outDir, std::size_t epochs, const std::vector<std::string>& labels,
+  /// runFloats: floats per run (Reference::runFloats).
+  CheckpointStore(std::string outDir, std::size_t epochs, std::size_t runFloats,
+                  const std::vector<std::string>& labels,
                   std::vector<std::uint64_t> fingerprints);
   ~CheckpointStore();
 
@@ -50,7 +52,7 @@ class CheckpointStore {
   /// checkpoints, and removes the temporaries of a killed run. Throws InputError.
   void prepare(bool resume);
 
-  /// Reads the chunk into out (count × epochs × kErrorFields floats); out == nullptr: only
+  /// Reads the chunk into out (count × runFloats floats); out == nullptr: only
   /// verifies it. out is unspecified unless the result is valid.
   State read(const ChunkKey& key, float* out) const;
   /// Writes the chunk atomically; throws Error with the reason (disk full, file size limit).
@@ -60,6 +62,7 @@ class CheckpointStore {
  private:
   std::string outDir_;
   std::size_t epochs_;
+  std::size_t runFloats_;
   std::vector<std::string> dirs_;  // per model: "<label>-<8 hex digits of its fingerprint>"
   std::vector<std::string> stems_; // per model: "<label>-"
   std::vector<std::uint64_t> fps_;

@@ -55,7 +55,7 @@ std::vector<McModel> loadMcModels(const std::vector<std::string>& files, const S
 
 std::vector<McHeadline> mcHeadlines(const Reference& ref, const McResult& r, std::size_t models) {
   McBatch batch(ref);
-  batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / (ref.epochs() * kErrorFields);
+  batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / ref.runFloats();
   for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});
   batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models));
   const std::size_t eLast = ref.epochs() - 1;

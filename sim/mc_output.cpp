@@ -7,10 +7,21 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "sim/mc_aided_output.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
 
 namespace sinsim::sim {
+
+std::string csvText(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string r = "\"";
+  for (char c : s) {
+    if (c == '"') r += '"';
+    r += c;
+  }
+  return r + "\"";
+}
 
 const char* metricName(int metric) {
   static const char* names[kMetrics] = {"horizontal_m", "vertical_m",     "velocity_mps",
@@ -35,7 +46,7 @@ double metricValue(const float* row, int metric) {
 
 std::vector<double> metricAcrossRuns(const McBatch& batch, std::size_t entry, std::size_t epoch,
                                      int metric) {
-  const std::size_t perRun = batch.ref.epochs() * kErrorFields;
+  const std::size_t perRun = batch.ref.runFloats();
   std::vector<double> v(batch.runs);
   const float* base = batch.errors[entry].data() + epoch * kErrorFields;
   for (std::uint64_t k = 0; k < batch.runs; ++k) v[k] = metricValue(base + k * perRun, metric);
@@ -68,7 +79,7 @@ McStats computeMcStats(const McBatch& batch) {
       }
       for (int f = 0; f < kErrorFields; ++f) {
         const float* base = batch.errors[m].data() + e * kErrorFields + f;
-        for (std::uint64_t k = 0; k < batch.runs; ++k) v[k] = base[k * perRun];
+        for (std::uint64_t k = 0; k < batch.runs; ++k) v[k] = base[k * batch.ref.runFloats()];
         const mcstats::Moments mo = mcstats::moments(v);
         s.fieldMean[m][e * kErrorFields + f] = mo.mean;
         s.fieldSd[m][e * kErrorFields + f] = mo.sd;
@@ -82,17 +93,6 @@ namespace {
 
 const char* kFieldNames[kErrorFields] = {"north_m", "east_m",   "down_m",    "vn_mps",  "ve_mps",
                                          "vd_mps",  "roll_rad", "pitch_rad", "yaw_rad"};
-
-// CSV field: labels may hold commas (budget variants "x without gyro.x[0].ar").
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string r = "\"";
-  for (char c : s) {
-    if (c == '"') r += '"';
-    r += c;
-  }
-  return r + "\"";
-}
 
 nlohmann::json metricJson(const MetricStats& m) {
   nlohmann::json j{{"mean", m.mean}, {"sd", m.sd}, {"rms", m.rms}};
@@ -319,6 +319,8 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     mj["models"] = per;
     j["measured"] = mj;
   }
+
+  if (!ref.aiding.inert()) j["aided"] = writeMcAidedOutputs(batch, out, files);
 
   std::vector<std::string> names = files;
   names.push_back("summary.json");

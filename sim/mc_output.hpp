@@ -27,9 +27,12 @@ struct McBatch {
   std::vector<std::size_t> timeEpochs;     // report epochs
   std::vector<Entry> entries;              // models, then budget variants
   std::vector<std::vector<std::string>> effectNames;  // per entry
-  std::vector<std::vector<float>> errors;  // per entry: runs × epochs × kErrorFields
+  std::vector<std::vector<float>> errors;  // per entry: runs × ref.runFloats()
   const McMeasured* measured = nullptr;
 };
+
+/// A CSV field: labels may hold commas (budget variants "x without gyro.x[0].ar"), quoted then.
+std::string csvText(const std::string& s);
 
 /// Percentiles reported everywhere [%].
 inline const std::vector<double>& mcPercentiles() {

@@ -91,8 +91,8 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   }
 
   // Every run's errors are held for the statistics: refuse before anything is allocated.
-  const double resultBytes = double(models.size()) * double(opt.runs) * double(ref.epochs()) *
-                             double(kErrorFields) * sizeof(float);
+  const double resultBytes =
+      double(models.size()) * double(opt.runs) * double(ref.runFloats()) * sizeof(float);
   if (resultBytes > limits::kMaxMcResultBytes)
     throw InputError("--runs " + std::to_string(opt.runs) + " with " +
                      std::to_string(models.size()) + " model(s) and " +
@@ -108,7 +108,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     fps.push_back(modelFingerprint(base, m));
     labels.push_back(m.label);
   }
-  CheckpointStore store(opt.outDir, ref.epochs(), labels, fps);
+  CheckpointStore store(opt.outDir, ref.epochs(), ref.runFloats(), labels, fps);
 
   std::vector<ChunkKey> all;
   for (std::uint64_t first = 0; first < opt.runs; first += kChunkRuns)
@@ -150,7 +150,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   std::mutex mu;
   std::condition_variable cv;
   std::exception_ptr failure;
-  const std::size_t perRun = ref.epochs() * kErrorFields;
+  const std::size_t perRun = ref.runFloats();
 
   // Runs are handed out one at a time, so the threads stay busy to the last run whatever the
   // chunk size; a chunk's buffer lives while any of its runs is in flight, and the thread that

@@ -101,8 +101,9 @@ struct McResult {
   double wallTime = 0.0;           // [s]
   double cpuTime = 0.0;            // [s] of this process
   unsigned threads = 0;
-  /// Per model (incl. budget variants, in order), runs × epochs × kErrorFields errors, for callers
-  /// that want the raw values (tests); filled on rank 0 when complete.
+  /// Per model (incl. budget variants, in order), runs × ref.runFloats() values (errors, then an
+  /// aided run's filter view), for callers that want the raw values (tests); filled on rank 0
+  /// when complete.
   std::vector<std::string> labels;
   std::vector<std::vector<float>> errors;
 };

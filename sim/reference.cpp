@@ -1,5 +1,6 @@
 #include "sim/reference.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/error.hpp"
@@ -14,6 +15,13 @@ namespace sinsim::sim {
 std::size_t Reference::bytes() const {
   return samples.size() * sizeof(nav::ImuSample) + hRef.size() * sizeof(double) +
          (truth.size() + truthAll.size()) * sizeof(nav::NavState);
+}
+
+std::size_t Reference::runFloats() const {
+  std::size_t n = epochs() * kErrorFields;
+  if (!aiding.inert())
+    n += epochs() * kAidedEpochFields + aiding.gnss.outages.size() * kOutageFields;
+  return n;
 }
 
 Reference buildReference(const Scenario& sc) {
@@ -80,7 +88,17 @@ bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corrup
   ReferenceSource source(ref, corruptor);
   if (ref.aiding.inert()) return navigateErrors(source, ref, options, out, cancel);
   ScenarioAiding aiding(sharedEarth(), ref.aiding, ref.strapdown, key);
-  return navigateErrors(source, ref, options, out, cancel, &aiding);
+  float* view = out + ref.epochs() * kErrorFields;
+  std::fill(view, out + ref.runFloats(), NAN);
+  aiding.recordEpochs(view, std::size_t(ref.decimation));
+  if (!navigateErrors(source, ref, options, out, cancel, &aiding)) return false;
+  float* outages = view + ref.epochs() * kAidedEpochFields;
+  for (const aided::OutageResult& o : aiding.aided().outages()) {
+    outages[kOutageMaxHorizontal] = float(o.maxHorizontal);
+    outages[kOutageSigmaHorizontal] = float(o.sigmaHorizontal);
+    outages += kOutageFields;
+  }
+  return true;
 }
 
 }  // namespace sinsim::sim

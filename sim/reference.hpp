@@ -26,6 +26,22 @@ enum ErrorField : int {
   kErrorFields
 };
 
+/// An aided run's filter view, stored after its errors (runFloats): per output epoch
+/// kAidedEpochFields floats, then per outage window kOutageFields floats. NaN where the epoch had
+/// no filter step (alignment, or an output epoch between GNSS ticks) or no update.
+enum AidedEpochField : int {
+  kNees = 0,   // (nav − truth)ᵀ P⁻¹ (nav − truth) over the 9 navigation states
+  kNis,        // of the epoch's GNSS update
+  kNisDof,     // its degrees of freedom (3: position, 6: position and velocity)
+  kEpochClass, // 0 none, 1 aiding (a fix used), 2 outage
+  kAidedEpochFields
+};
+enum OutageField : int {
+  kOutageMaxHorizontal = 0,  // the largest horizontal error inside the window [m]
+  kOutageSigmaHorizontal,    // the filter's horizontal 1-sigma at that moment [m]
+  kOutageFields
+};
+
 struct Reference {
   std::string name;                  // scenario name
   double imuRate = 0.0;              // [Hz]
@@ -44,6 +60,9 @@ struct Reference {
   std::vector<nav::NavState> truthAll;
 
   std::size_t epochs() const { return truth.size(); }
+  /// Floats one realisation stores: epochs() × kErrorFields errors, and when aided its filter view
+  /// (epochs() × kAidedEpochFields, then outages × kOutageFields).
+  std::size_t runFloats() const;
   double epochTime(std::size_t e) const { return truth[e].t; }  // [s]
   /// Bytes held (the samples dominate: 72 per IMU sample, 88 more when aided).
   std::size_t bytes() const;
@@ -73,9 +92,10 @@ bool navigateErrors(ImuSource& source, const Reference& ref, const NavigateOptio
 /// Navigates one realisation along the reference: `corruptor` (nullptr: the perfect IMU) turns
 /// each ideal sample into a measured one, the strapdown integrates it from the true initial
 /// state, and the error at every output epoch is written to out[e · kErrorFields + field]
-/// (epochs() × kErrorFields floats). An aided reference (ref.aiding not inert) navigates with its
+/// (ref.runFloats() floats in all). An aided reference (ref.aiding not inert) navigates with its
 /// initial errors, alignment and GNSS/INS filter, whose random streams are keyed by `key` (the
-/// corruptor's key: run k of a batch is {seed, k}). Returns false, leaving out partly written,
+/// corruptor's key: run k of a batch is {seed, k}), and writes the filter's view after the
+/// errors (AidedEpochField, OutageField). Returns false, leaving out partly written,
 /// when `cancel` becomes true (checked every 65536 samples).
 bool navigateRealisation(const Reference& ref, errormodels::ImuCorruptor* corruptor,
                          const NavigateOptions& options, float* out,

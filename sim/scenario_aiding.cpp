@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "sim/aided/aided_output.hpp"
+#include "sim/reference.hpp"
 
 namespace sinsim::sim {
 
@@ -16,6 +17,14 @@ void ScenarioAiding::epoch(const ImuEpoch& e, nav::Strapdown& strapdown) {
                      "from it); this IMU source has it only at output epochs");
   const aided::FilterEpoch fe = aided_.afterInterval(e.measured, e.truth, strapdown);
   if (filterCsv_ && fe.filtered) aided::writeFilterRow(filterCsv_, fe);
+  const auto k = std::size_t(e.index);
+  if (view_ && fe.filtered && k % decimation_ == 0) {
+    float* row = view_ + (k / decimation_) * kAidedEpochFields;
+    row[kNees] = float(fe.nees);
+    row[kNis] = float(fe.nis);
+    row[kNisDof] = float(fe.nisDof);
+    row[kEpochClass] = fe.aiding ? 1.0f : fe.outage ? 2.0f : 0.0f;
+  }
 }
 
 }  // namespace sinsim::sim

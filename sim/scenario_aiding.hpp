@@ -27,11 +27,20 @@ class ScenarioAiding final : public NavAiding {
 
   /// filter.csv rows go here from now on (nullptr: none).
   void writeFilterRows(std::FILE* f) { filterCsv_ = f; }
+  /// From now on, at every output epoch e (IMU epochs e · decimation) the filter's NEES, NIS, its
+  /// degrees of freedom and the epoch class go to view[e · kAidedEpochFields + field]
+  /// (sim/reference.hpp); epochs without a filter step are left as they are.
+  void recordEpochs(float* view, std::size_t decimation) {
+    view_ = view;
+    decimation_ = decimation;
+  }
   const aided::AidedNavigation& aided() const { return aided_; }
 
  private:
   aided::AidedNavigation aided_;
   std::FILE* filterCsv_ = nullptr;
+  float* view_ = nullptr;
+  std::size_t decimation_ = 1;
 };
 
 }  // namespace sinsim::sim

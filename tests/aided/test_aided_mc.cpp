@@ -5,8 +5,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "errormodels/imu_model.hpp"
 #include "sim/montecarlo.hpp"
@@ -62,8 +66,12 @@ TEST_CASE("mc with the filter: run k is `run` k, and 1 and 2 threads give the sa
   REQUIRE(two.complete);
   CHECK(two.threads == 2);
   REQUIRE(one.errors.size() == 1);
-  CHECK(one.errors[0] == two.errors[0]);
-  for (const char* f : {"stats.csv", "summary.json", "report.html"}) {
+  // Bit for bit (the filter's view holds NaN where an epoch had no update: compare the bytes).
+  REQUIRE(one.errors[0].size() == two.errors[0].size());
+  CHECK(std::memcmp(one.errors[0].data(), two.errors[0].data(),
+                    one.errors[0].size() * sizeof(float)) == 0);
+  for (const char* f :
+       {"stats.csv", "summary.json", "report.html", "outages.csv", "filter_consistency.csv"}) {
     INFO(f);
     const std::string a = test::slurp(tmp / "t1" / f), b = test::slurp(tmp / "t2" / f);
     CHECK(!a.empty());
@@ -71,14 +79,21 @@ TEST_CASE("mc with the filter: run k is `run` k, and 1 and 2 threads give the sa
   }
 
   // Run 5 of the batch against `run` with run index 5 and the batch's seed.
-  const std::size_t perRun = ref.epochs() * sim::kErrorFields;
+  const std::size_t perRun = ref.runFloats();
   sim::RunOptions o;
   o.seed = 99;
   o.runIndex = 5;
   std::vector<sim::NavError> rows;
   o.onRow = [&](const sim::NavError& e) { rows.push_back(e); };
-  sim::run(sc, o);
+  const sim::RunSummary rs = sim::run(sc, o);
   REQUIRE(rows.size() == ref.epochs());
+  // The outage's maximum and the filter's sigma then, as `run` reports them (float-rounded).
+  REQUIRE(rs.outages.size() == 1);
+  const float* outage = one.errors[0].data() + 5 * perRun +
+                        ref.epochs() * (sim::kErrorFields + sim::kAidedEpochFields);
+  CHECK(outage[sim::kOutageMaxHorizontal] == float(rs.outages[0].maxHorizontal));
+  CHECK(outage[sim::kOutageSigmaHorizontal] == float(rs.outages[0].sigmaHorizontal));
+  CHECK(rs.outages[0].maxHorizontal > 0.0);
   int differ = 0;
   double aidedMax = 0.0;
   for (std::size_t e = 0; e < rows.size(); ++e) {
@@ -93,4 +108,49 @@ TEST_CASE("mc with the filter: run k is `run` k, and 1 and 2 threads give the sa
   // few GNSS sigmas (1 m per axis; 6 m is > 4 sigma of the 2-D error), far below the 2 m start
   // plus 0.1 m/s velocity error growing free for 50 s.
   CHECK(aidedMax < 6.0);
+}
+
+TEST_CASE("mc with filter model = truth model (white + GM + random walk): NEES and NIS per epoch "
+          "class inside their 99 % bands") {
+  // The scenario above with a random walk added to truth and filter alike, 200 runs. mc writes,
+  // per epoch, the run-averaged NEES (9 states) and NIS (3 position residuals) and their two-sided
+  // 99 % chi-square bands (sim/mc_aided_output.hpp), and per epoch class the share of epochs
+  // inside. When the filter is consistent, each epoch's average falls outside with probability
+  // 0.01, so the expected outside share is 0.01 however correlated the epochs are; by Markov's
+  // inequality an outside share of 0.2 or more has probability <= 5 %.
+  std::string text = kAided;
+  const std::string gm = "{type: gauss_markov, sigma: 30 deg/h, tau: 100 s}";
+  const std::string gmA = "{type: gauss_markov, sigma: 3 mg, tau: 100 s}";
+  for (std::size_t at = 0; (at = text.find(gm, at)) != std::string::npos; at += gm.size())
+    text.insert(at + gm.size(), ", {type: random_walk, K: 3 deg/h/sqrt(h)}");
+  for (std::size_t at = 0; (at = text.find(gmA, at)) != std::string::npos; at += gmA.size())
+    text.insert(at + gmA.size(), ", {type: random_walk, K: 0.05 m/s/h/sqrt(h)}");
+  REQUIRE(text.find("random_walk") != std::string::npos);
+  const auto tmp = test::freshTempDir("sinsim-aided-mc-nees");
+  const sim::Scenario sc = sim::parseScenario(text, "aided-mc.yaml");
+  const sim::Reference ref = sim::buildReference(sc);
+  sim::McOptions opt;
+  opt.runs = 200;
+  opt.seed = 5;
+  opt.threads = 2;
+  opt.outDir = (tmp / "mc").string();
+  opt.scenarioIdentity = text;
+  const sim::McResult r = sim::runMonteCarlo(ref, {{"errors", sc.errors, "errors"}}, opt);
+  REQUIRE(r.complete);
+  const auto j = nlohmann::json::parse(test::slurp(tmp / "mc" / "summary.json"));
+  const auto& m = j.at("aided").at("models").at(0);
+  INFO(m.dump(1));
+  std::printf("mc, filter = truth: epochs inside the 99 %% band: NEES aiding %s/%s, outage %s/%s, "
+              "NIS aiding %s/%s\n",
+              m["nees"]["aiding"]["inside_99"].dump().c_str(), m["nees"]["aiding"]["epochs"].dump().c_str(),
+              m["nees"]["outage"]["inside_99"].dump().c_str(), m["nees"]["outage"]["epochs"].dump().c_str(),
+              m["nis"]["aiding"]["inside_99"].dump().c_str(), m["nis"]["aiding"]["epochs"].dump().c_str());
+  CHECK(m.at("nees").at("aiding").at("epochs").get<int>() >= 30);
+  CHECK(m.at("nees").at("outage").at("epochs").get<int>() == 20);
+  CHECK(m.at("nees").at("aiding").at("fraction_inside_99").get<double>() >= 0.8);
+  CHECK(m.at("nees").at("outage").at("fraction_inside_99").get<double>() >= 0.8);
+  CHECK(m.at("nis").at("aiding").at("fraction_inside_99").get<double>() >= 0.8);
+  // Per outage: every run has its maximum and the filter's sigma.
+  CHECK(m.at("outages").at(0).at("runs").get<int>() == 200);
+  CHECK(m.at("outages").at(0).at("max_horizontal_m").at("p50").get<double>() > 0.0);
 }
