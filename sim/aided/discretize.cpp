@@ -48,6 +48,9 @@ bool seriesStep(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T, D
   Eigen::MatrixXd tmp(n, n);
   constexpr int kMaxTerms = 40;
   constexpr double kTol = 0x1p-53;  // a term below half an ulp of the sum's largest entry
+  // Upper bounds of the sums' largest entries (triangle inequality): while a term is above
+  // kTol times the bound, the sum's own norm need not be formed (the stop comes at the same k).
+  double boundPhi = 1.0, boundQ = Qd.lpNorm<Eigen::Infinity>();
   for (int k = 1; k <= kMaxTerms; ++k) {
     productT(Pt, tmp);
     Pt = tmp * (1.0 / double(k));
@@ -56,8 +59,12 @@ bool seriesStep(const Eigen::MatrixXd& F, const Eigen::MatrixXd& Qc, double T, D
     PhiT += Pt;
     Qd += M;
     // lpNorm<Infinity> is the largest |entry| (the same for a matrix and its transpose).
-    if (Pt.lpNorm<Eigen::Infinity>() <= kTol * PhiT.lpNorm<Eigen::Infinity>() &&
-        M.lpNorm<Eigen::Infinity>() <= kTol * Qd.lpNorm<Eigen::Infinity>()) {
+    const double termPhi = Pt.lpNorm<Eigen::Infinity>(), termQ = M.lpNorm<Eigen::Infinity>();
+    boundPhi += termPhi;
+    boundQ += termQ;
+    if (termPhi > kTol * boundPhi || termQ > kTol * boundQ) continue;
+    if (termPhi <= kTol * PhiT.lpNorm<Eigen::Infinity>() &&
+        termQ <= kTol * Qd.lpNorm<Eigen::Infinity>()) {
       d.Phi = PhiT.transpose();
       d.Qd = std::move(Qd);
       return true;

@@ -35,6 +35,12 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
       aggregations_.emplace_back();
     }
   }
+  refreshSensorEstimates();
+}
+
+void ErrorStateFilter::refreshSensorEstimates() {
+  gyroEstimate_ = sensorError(0);
+  accelEstimate_ = sensorError(3);
 }
 
 nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
@@ -134,6 +140,7 @@ void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
   // block's estimate decays within its correlation time, far inside the step, and is not
   // compensated: its predicted effect stays in the navigation states for the caller to feed back.
   x_.head<9>() = navMean;
+  refreshSensorEstimates();
 }
 
 Innovation ErrorStateFilter::updatePosition(const nav::Vec3& dz, const nav::Vec3& leverArm_n,
@@ -143,14 +150,18 @@ Innovation ErrorStateFilter::updatePosition(const nav::Vec3& dz, const nav::Vec3
   // Ĉ_nb l = (I − [ψ×]) C_nb l = C_nb l + (C_nb l) × ψ
   H.block<3, 3>(0, nav::kAtt) = nav::skew(leverArm_n);
   const Eigen::MatrixXd R = sigma.array().square().matrix().asDiagonal();
-  return kalmanUpdate(x_, P_, dz, H, R);
+  Innovation in = kalmanUpdate(x_, P_, dz, H, R);
+  refreshSensorEstimates();
+  return in;
 }
 
 Innovation ErrorStateFilter::updateVelocity(const nav::Vec3& dz, const nav::Vec3& sigma) {
   Eigen::MatrixXd H = Eigen::MatrixXd::Zero(3, size());
   H.block<3, 3>(0, nav::kVel).setIdentity();
   const Eigen::MatrixXd R = sigma.array().square().matrix().asDiagonal();
-  return kalmanUpdate(x_, P_, dz, H, R);
+  Innovation in = kalmanUpdate(x_, P_, dz, H, R);
+  refreshSensorEstimates();
+  return in;
 }
 
 Eigen::Matrix<double, 9, 1> ErrorStateFilter::takeNavCorrection() {

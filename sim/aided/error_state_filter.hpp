@@ -54,8 +54,8 @@ class ErrorStateFilter {
   /// the caller compensates the IMU with: the continuous blocks' (bias, random walk, GM). A
   /// sampled (ar) block is not compensated; its predicted effect on the INS errors over each step
   /// is left in x's navigation part by propagate.
-  nav::Vec3 gyroError() const { return sensorError(0); }
-  nav::Vec3 accelError() const { return sensorError(3); }
+  const nav::Vec3& gyroError() const { return gyroEstimate_; }
+  const nav::Vec3& accelError() const { return accelEstimate_; }
 
   /// The damped vertical channel's gains as the strapdown runs them [1/s], [1/s^2].
   void setVerticalGains(double k1, double k2) {
@@ -83,6 +83,7 @@ class ErrorStateFilter {
 
  private:
   nav::Vec3 sensorError(int firstAxis) const;
+  void refreshSensorEstimates();  // after every change of x's sensor part
   const StepAggregation& aggregation(std::size_t placedIndex, double T);
   void spliceDiscrete(std::size_t placedIndex, const Eigen::MatrixXd& F,
                       const Eigen::Matrix<double, 9, 1>& g, double T, DiscreteSystem& d,
@@ -96,6 +97,7 @@ class ErrorStateFilter {
   std::vector<std::vector<StepAggregation>> aggregations_;  // per placed block, per step length
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
+  nav::Vec3 gyroEstimate_ = nav::Vec3::Zero(), accelEstimate_ = nav::Vec3::Zero();
 };
 
 }  // namespace sinsim::sim::aided
