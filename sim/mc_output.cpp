@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "sim/mc_per_run.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
 
@@ -83,17 +84,6 @@ namespace {
 const char* kFieldNames[kErrorFields] = {"north_m", "east_m",   "down_m",    "vn_mps",  "ve_mps",
                                          "vd_mps",  "roll_rad", "pitch_rad", "yaw_rad"};
 
-// CSV field: labels may hold commas (budget variants "x without gyro.x[0].ar").
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string r = "\"";
-  for (char c : s) {
-    if (c == '"') r += '"';
-    r += c;
-  }
-  return r + "\"";
-}
-
 nlohmann::json metricJson(const MetricStats& m) {
   nlohmann::json j{{"mean", m.mean}, {"sd", m.sd}, {"rms", m.rms}};
   const auto& pct = mcPercentiles();
@@ -123,7 +113,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
       std::fprintf(f, ",%s_mean,%s_sd", kFieldNames[fl], kFieldNames[fl]);
     std::fputs("\n", f);
     for (std::size_t m = 0; m < batch.entries.size(); ++m) {
-      const std::string label = csvText(batch.entries[m].label);
+      const std::string label = csvField(batch.entries[m].label);
       for (std::size_t e = 0; e < st.epochs; ++e) {
         std::fprintf(f, "%s,%.6f", label.c_str(), ref.epochTime(e));
         for (int q = 0; q < kMetrics; ++q) {
@@ -139,6 +129,8 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     }
     files.push_back("stats.csv");
   }
+  writePerRunCsv(batch, out.open("per_run.csv"));
+  files.push_back("per_run.csv");
 
   // ---- summary.json ------------------------------------------------------------------------------
   nlohmann::json j;
@@ -271,7 +263,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     for (std::size_t m = 0; m < batch.entries.size(); ++m)
       if (batch.entries[m].parent < 0) prim.push_back(m);
     for (std::size_t m : prim) {
-      const std::string l = csvText(batch.entries[m].label);
+      const std::string l = csvField(batch.entries[m].label);
       std::fprintf(f, ",%s horizontal percentile,%s horizontal p50_m,%s horizontal p95_m",
                    l.c_str(), l.c_str(), l.c_str());
     }
