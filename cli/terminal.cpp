@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -41,6 +42,8 @@ extern "C" void onSigint(int) {
 
 std::atomic<bool> gLineEnabled{true};
 std::atomic<bool> gStop{false};
+std::mutex gWakeMutex;
+std::condition_variable gWake;
 std::mutex gLineMutex;
 bool gLineShown = false;  // guarded by gLineMutex
 
@@ -80,7 +83,10 @@ std::string lineText(const std::string& command, const progress::Snapshot& p, do
 void drawLines(const std::string& command) {
   const auto start = Clock::now();
   while (!gStop.load()) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    {
+      std::unique_lock<std::mutex> lock(gWakeMutex);  // the end of the work wakes it at once
+      gWake.wait_for(lock, std::chrono::milliseconds(250), [] { return gStop.load(); });
+    }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     if (gStop.load() || elapsed < 1.0 || !gLineEnabled.load()) continue;
     const std::string text = lineText(command, progress::current(), elapsed);
@@ -101,7 +107,11 @@ LongWork::LongWork(std::string command) : command_(std::move(command)) {
 }
 
 LongWork::~LongWork() {
-  gStop.store(true);
+  {
+    std::lock_guard<std::mutex> lock(gWakeMutex);
+    gStop.store(true);
+  }
+  gWake.notify_all();
   if (line_.joinable()) line_.join();
   eraseLine();
   std::signal(SIGINT, SIG_DFL);

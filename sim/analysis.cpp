@@ -18,9 +18,10 @@ namespace {
 using errormodels::AllanCurve;
 using json = nlohmann::json;
 
+// 4 significant digits, no exponent from 1e4 up ("10000 s", not "1e+04 s").
 std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
+  char buf[48];
+  std::snprintf(buf, sizeof buf, std::fabs(v) >= 1e4 && std::fabs(v) < 1e15 ? "%.0f" : "%.4g", v);
   return buf;
 }
 
@@ -138,15 +139,19 @@ void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const Analy
   const NoiseTerms nt = readNoiseTerms(c.allan);
   std::string readout;
   if (c.allan.size() > 1) {
+    // Each guide over the τ where its term can dominate (white below the minimum, the floor
+    // around it, the random walk above it), leaving the plot's corners to the legend.
     const double t0 = c.allan.tau.front(), t1 = c.allan.tau.back();
+    const double tB = nt.tauB, tN = tB > t0 ? tB : std::min(t1, 10 * t0);
+    const double tK = tB < t1 ? tB : std::max(t0, t1 / 10);
     adev.add(report::Series{"N = " + formatNumber(nt.N * u.density) + " " + u.densityUnit + " (−½)",
-                            {t0, t1}, {k * nt.N / std::sqrt(t0), k * nt.N / std::sqrt(t1)},
+                            {t0, tN}, {k * nt.N / std::sqrt(t0), k * nt.N / std::sqrt(tN)},
                             report::paletteColor(3), true, 1.2});
     adev.add(report::Series{"B = " + formatNumber(nt.B * k) + " " + unit + " (floor 0.664 B)",
-                            {t0, t1}, {0.664 * nt.B * k, 0.664 * nt.B * k}, report::paletteColor(4),
-                            true, 1.2});
+                            {std::max(t0, tB / 10), std::min(t1, tB * 10)},
+                            {0.664 * nt.B * k, 0.664 * nt.B * k}, report::paletteColor(4), true, 1.2});
     adev.add(report::Series{"K ≤ " + formatNumber(nt.K * u.walk) + " " + u.walkUnit + " (+½)",
-                            {t0, t1}, {k * nt.K * std::sqrt(t0 / 3), k * nt.K * std::sqrt(t1 / 3)},
+                            {tK, t1}, {k * nt.K * std::sqrt(tK / 3), k * nt.K * std::sqrt(t1 / 3)},
                             report::paletteColor(2), true, 1.2});
     // The range of the measured curve and its bounds: guides extend past it, not the axis.
     double lo = INFINITY, hi = 0;

@@ -46,8 +46,10 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
       B = line;
     }
     char mean[64], sd[64];
-    std::snprintf(mean, sizeof mean, "%.6g %s", c.mean * u.level, u.levelUnit.c_str());
-    std::snprintf(sd, sizeof sd, "%.4g %s", c.sd * u.level, u.levelUnit.c_str());
+    // No exponent: a 1 g accelerometer mean reads -1016130 ug, not -1.01613e+06 ug.
+    const double m = c.mean * u.level, d = c.sd * u.level;
+    std::snprintf(mean, sizeof mean, std::fabs(m) >= 1e5 ? "%.0f %s" : "%.6g %s", m, u.levelUnit.c_str());
+    std::snprintf(sd, sizeof sd, std::fabs(d) >= 1e4 ? "%.0f %s" : "%.4g %s", d, u.levelUnit.c_str());
     std::snprintf(line, sizeof line, "%-8s %-15s %-15s %-22s %s\n", c.name.c_str(), mean, sd,
                   N.c_str(), B.c_str());
     out += line;

@@ -95,6 +95,24 @@ std::string verdict(const dg::AxisDiagnosis& a, double threshold) {
   return s.empty() ? "misfit, no catalogue effect explains it" : s;
 }
 
+/// A shell command broken before its options into lines of at most ~90 characters (" \\").
+std::string wrapCommand(const std::string& cmd) {
+  std::string out, line;
+  std::size_t at = 0;
+  while (at < cmd.size()) {
+    std::size_t next = cmd.find(" --", at + 1);
+    if (next == std::string::npos) next = cmd.size();
+    const std::string piece = cmd.substr(at, next - at);
+    if (!line.empty() && line.size() + piece.size() > 90) {
+      out += line + " \\\n   ";
+      line.clear();
+    }
+    line += piece;
+    at = next;
+  }
+  return out + line;
+}
+
 /// "What still fails" after --add, and the command to run next.
 void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* imp,
                const DiagnoseCommand& cmd) {
@@ -111,10 +129,10 @@ void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* im
     const std::string& m = cmd.improvedModel.empty() ? cmd.model : cmd.improvedModel;
     if (still.empty())
       page.paragraph("Navigate with the improved model:")
-          .preformatted("sinsim run scenarios/car.yaml --model " + m + " --html run.html");
+          .preformatted(wrapCommand("sinsim run scenarios/car.yaml --model " + m + " --html run.html"));
     else
       page.paragraph("Diagnose the improved model again (and add what it finds):")
-          .preformatted(cmd.base + " --model " + m + " --html diagnose2.html");
+          .preformatted(wrapCommand(cmd.base + " --model " + m + " --html diagnose2.html"));
     return;
   }
   bool anyFail = false, anyFound = false;
@@ -124,15 +142,15 @@ void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* im
   }
   if (!anyFail)
     page.paragraph("The model fits every channel. Navigate with it:")
-        .preformatted("sinsim run scenarios/car.yaml --model " + cmd.model + " --html run.html");
+        .preformatted(wrapCommand("sinsim run scenarios/car.yaml --model " + cmd.model + " --html run.html"));
   else if (anyFound)
     page.paragraph("Add what was found, refit it to the record and see the misfit before → after:")
-        .preformatted(cmd.base + " --model " + cmd.model + " --add found -o improved.yaml --html improve.html");
+        .preformatted(wrapCommand(cmd.base + " --model " + cmd.model + " --add found -o improved.yaml --html improve.html"));
   else
     page.paragraph("No catalogue effect explains the misfit. Fit the record's Allan variance "
                    "jointly (white, quantization, GM, random walk, flicker, drift):")
-        .preformatted("sinsim fit" + cmd.base.substr(std::string("sinsim diagnose").size()) +
-                      " --kind latent -o latent.yaml");
+        .preformatted(wrapCommand("sinsim fit" + cmd.base.substr(std::string("sinsim diagnose").size()) +
+                      " --kind latent -o latent.yaml"));
 }
 
 }  // namespace
