@@ -53,6 +53,19 @@ if not pick:
 open(sys.argv[2], "w", encoding="utf-8").write(pick[0] + "\n")
 PY
 
+# The mc report's first screen: the answer in words, the drift envelopes on log axes.
+shot "$work/ar-vs-gm/report.html" "$work/mc-report.png" 1200 1500
+crop "$work/mc-report.png" 0 0 1200 1000 "$dest/mc-report.png"
+
+# run --html on the car drive with a navigation-grade IMU: summary, track map, errors against time.
+build/sinsim run scenarios/car.yaml --model scenarios/grade-navigation.yaml -o "$work/car-nav" \
+    --html "$work/car-nav/report.html"
+shot "$work/car-nav/report.html" "$work/run-report.png" 1200 2000
+crop "$work/run-report.png" 0 0 1200 1500 "$dest/run-report.png"
+
 # The diagnose walkthrough (fit AR(5), diagnose, add what was found) and its two pictures.
 scripts/diagnose_walkthrough.sh build "$work/walkthrough" "$dest/diagnose"
+# The improved diagnosis page's top: before → after, what still fails, the command to run next.
+shot "$work/walkthrough/improve.html" "$work/diagnose-next.png" 1200 1400
+crop "$work/diagnose-next.png" 0 0 1200 1100 "$dest/diagnose/what-next.png"
 echo "figures in $dest"
