@@ -41,8 +41,9 @@ shot "$work/run1-analyze.html" "$work/run1-analyze.png" 1200 2400
 crop "$work/run1-analyze.png" 0 0 1200 820 "$dest/analyze-adis16405-gx.png"
 
 # AR(5) vs GM on car.yaml, 500 paired runs: the "models together" plot of the mc report.
+# --resume: a figures run stopped with Ctrl-C continues from the runs it saved.
 build/sinsim mc scenarios/car.yaml --runs 500 --model scenarios/adis16355-ar5.yaml \
-    --model scenarios/adis16355-gm.yaml --times "5 min,10 min,20 min,2078 s" -o "$work/ar-vs-gm"
+    --model scenarios/adis16355-gm.yaml --times "5 min,10 min,20 min,2078 s" -o "$work/ar-vs-gm" --resume
 /usr/bin/python3 - "$work/ar-vs-gm/report.html" "$dest/mc-ar-vs-gm.svg" <<'PY'
 import re, sys
 html = open(sys.argv[1], encoding="utf-8").read()
