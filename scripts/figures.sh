@@ -66,7 +66,7 @@ crop "$work/run-report.png" 0 0 1200 1500 "$dest/run-report.png"
 
 # The diagnose walkthrough (fit AR(5), diagnose, add what was found) and its two pictures.
 scripts/diagnose_walkthrough.sh build "$work/walkthrough" "$dest/diagnose"
-# The improved diagnosis page's top: before → after, what still fails, the command to run next.
-shot "$work/walkthrough/improve.html" "$work/diagnose-next.png" 1200 1400
-crop "$work/diagnose-next.png" 0 0 1200 1100 "$dest/diagnose/what-next.png"
+# The improved diagnosis page: before → after, what still fails, the command to run next.
+shot "$work/walkthrough/improve.html" "$work/diagnose-next.png" 1200 2000
+crop "$work/diagnose-next.png" 0 420 1200 1480 "$dest/diagnose/what-next.png"
 echo "figures in $dest"
