@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "cli/terminal.hpp"
 #include "common/error.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/analysis.hpp"
@@ -22,6 +23,7 @@ struct AnalyzeArgs {
   std::string tau = "octave";
   double confidence = 0.683;
   std::string denoise = "none";
+  bool fullJson = false;
 };
 
 int runAnalyze(const AnalyzeArgs& a) {
@@ -36,9 +38,11 @@ int runAnalyze(const AnalyzeArgs& a) {
   opt.tauPerDecade = a.tau == "decade";
   opt.confidence = a.confidence;
   opt.denoise = a.denoise == "db5";
+  opt.fullJson = a.fullJson;
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
   const std::vector<sim::ChannelStats> stats = sim::analyzeRecord(rec, opt);
   sim::writeAnalysis(rec, stats, opt, a.json_out, a.html_out);
+  endProgressLine();
   std::cout << "analyze: " << rec.size() << " samples at " << rec.rate_hz << " Hz, "
             << stats.size() << " channel(s)";
   if (!a.json_out.empty() || !a.html_out.empty())
@@ -66,6 +70,8 @@ void addAnalyzeCommand(CLI::App& app, Action& action) {
   cmd->add_option("--tau", args->tau, "Allan tau grid: octave | decade (10 per decade)");
   cmd->add_option("--confidence", args->confidence, "two-sided level of the Allan bounds (default 0.683)");
   cmd->add_option("--denoise", args->denoise, "db5 | none: denoise before ACF and PSD (Allan uses raw data)");
+  cmd->add_flag("--json-full", args->fullJson,
+                "every ACF lag and PSD bin in the JSON (default: all below index 64, then ~32 per decade)");
   cmd->callback([args, &action] { action = [args] { return runAnalyze(*args); }; });
 }
 

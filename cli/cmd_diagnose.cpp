@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "cli/terminal.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
@@ -58,22 +59,29 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   for (const auto& s : a.add) adds.push_back(dg::AddRequest::parse(s));
   if (!adds.empty() && !a.edited.empty()) throw InputError("give either --add or --edited, not both");
 
+  DiagnoseCommand command;  // for the page's "what next"
+  command.base = "sinsim diagnose " + a.data + recordOptionsText(a.record);
+  command.model = a.model;
   if (adds.empty() && a.edited.empty()) {
     const auto d = dg::diagnose(record, model, o);
+    endProgressLine();
     std::cout << dg::summaryTable(d);
     if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(d));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, d);
+    if (!a.html.empty()) writeDiagnoseReport(a.html, d, nullptr, &command);
   } else {
     const auto imp = adds.empty() ? dg::compareModels(record, model, errormodels::loadErrorModel(a.edited), o)
                                   : dg::improve(record, model, adds, o);
+    endProgressLine();
     std::cout << dg::summaryTable(imp);
+    if (!a.edited.empty()) command.improvedModel = a.edited;
     if (!adds.empty()) {
       const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
       errormodels::writeErrorModel(out, imp.model);
+      command.improvedModel = out;
       std::cout << "wrote the improved model " << out << "\n";
     }
     if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(imp));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp);
+    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fprintf(stderr, "diagnose: %.2f s wall\n", s);

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "cli/terminal.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/identify.hpp"
@@ -116,6 +117,7 @@ int runFit(const FitArgs& a) {
                  rec.irregular_count, a.data.c_str());
 
   const errormodels::Identification id = errormodels::identify(rec, opt);
+  endProgressLine();
   for (const auto& w : id.warnings) std::fprintf(stderr, "fit: warning: %s\n", w.c_str());
   id.writeModel(a.output);  // temporary + rename: never half-written
   if (!a.quiet) printSummary(id);

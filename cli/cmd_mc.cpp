@@ -2,12 +2,8 @@
 //           [--times LIST] [--budget] [--measured DATA.csv ...]
 // Monte Carlo batches (sim/montecarlo.hpp). With the MPI build (-DSINSIM_MPI=ON) the same command
 // under mpirun splits the runs across ranks.
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -21,8 +17,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
+#include "cli/terminal.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/number_text.hpp"
+#include "common/progress.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/mc_batch.hpp"
@@ -30,13 +29,6 @@
 
 namespace sinsim::cli {
 namespace {
-
-std::atomic<bool> gInterrupted{false};
-
-extern "C" void onSigint(int) {
-  gInterrupted.store(true);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C kills at once (chunks on disk stay valid)
-}
 
 std::vector<std::string> splitList(const std::string& s) {
   std::vector<std::string> r;
@@ -153,10 +145,11 @@ void printBatch(const sim::McCommandResult& batch, int size) {
   }
   const double steps = double(r.runsComputedAll) * double(batch.samples);
   if (!r.complete) {
-    std::cerr << "sinsim mc: stopped (" << (gInterrupted.load() ? "interrupted" : "run limit")
-              << ") after " << r.runsComputed << " runs this session; "
-              << r.runsResumed + r.runsComputed << " of " << r.runsTotal
-              << " runs may be saved in " << opt.outDir
+    // Runs are saved in whole chunks: runs of a chunk cut short are not counted.
+    std::cerr << (progress::interruptFlag().load() ? interruptedMessage("mc")
+                                                   : std::string("sinsim mc: stopped (run limit); "))
+              << r.runsComputed << " runs computed this session, " << r.runsSaved << " of "
+              << r.runsTotal << " runs saved in " << opt.outDir
               << "/runs. Continue with the same command and --resume.\n";
     return;
   }
@@ -172,9 +165,11 @@ void printBatch(const sim::McCommandResult& batch, int size) {
             << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
             << "; " << fmt(steps / std::max(r.wallTime, 1e-9) / 1e6, "%.2f")
             << " M IMU steps/s\n";
-  for (const sim::McHeadline& h : batch.headlines)
-    std::cout << "  " << h.label << ": horizontal error at " << h.t << " s: CEP "
-              << fmt(h.cep, "%.4g") << " m, R95 " << fmt(h.r95, "%.4g") << " m\n";
+  for (const sim::McHeadline& h : batch.headlines.models)
+    std::cout << "  " << h.label << ": horizontal error at " << durationText(h.t) << ": CEP "
+              << lengthText(h.cep) << ", R95 " << lengthText(h.r95) << "\n";
+  for (const sim::McPairedHeadline& p : batch.headlines.pairs)
+    std::cout << "  " << p.sentence() << " Wilcoxon p = " << pValueText(p.pWilcoxon) << ".\n";
 }
 
 int runMc(const Args& a) {
@@ -223,28 +218,14 @@ int runMc(const Args& a) {
     opt.navigate.biasWindow = a.biasWindow.empty() ? 0.0 : parseDuration(a.biasWindow, "--bias-window");
     opt.resume = a.resume;
     opt.outDir = a.outDir;
-    opt.interrupt = &gInterrupted;
     opt.stopAfterRuns = a.stopAfter;
     opt.partition = partition;
 
-    const bool tty = rank == 0 && !a.noProgress && ::isatty(2);
-    if (tty) {
-      opt.onProgress = [](const sim::McProgress& p) {
-        const double rate = p.elapsed > 0 ? double(p.runsDone) / p.elapsed : 0.0;
-        const double left = rate > 0 ? double(p.runsTotal - p.runsDone) / rate : 0.0;
-        const int width = 30;
-        const int fill = p.runsTotal ? int(width * double(p.runsDone) / double(p.runsTotal)) : width;
-        std::fprintf(stderr, "\r[%-*s] %llu/%llu runs  %.1f runs/s  %.0f s left   ", width,
-                     std::string(std::size_t(fill), '=').c_str(),
-                     static_cast<unsigned long long>(p.runsDone),
-                     static_cast<unsigned long long>(p.runsTotal), rate, left);
-        std::fflush(stderr);
-      };
-    }
-    std::signal(SIGINT, onSigint);
+    if (rank != 0 || a.noProgress) endProgressLine();
+    opt.interrupt = &progress::interruptFlag();
+    opt.onProgress = [](const sim::McProgress& p) { progress::update("runs", p.runsDone, p.runsTotal); };
     const sim::McCommandResult batch = sim::runMcBatch(req);
-    std::signal(SIGINT, SIG_DFL);
-    if (tty) std::fputs("\n", stderr);
+    endProgressLine();
     printBatch(batch, size);
     return batch.result.complete ? 0 : 130;
   } catch (...) {

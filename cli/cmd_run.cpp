@@ -1,9 +1,10 @@
-// sinsim run [SCENARIO] [-o DIR] [--seed N] [--model FILE|none] [--bias-window T]
+// sinsim run [SCENARIO] [-o DIR] [--seed N] [--model FILE|none] [--bias-window T] [--html FILE]
 #include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/terminal.hpp"
 #include "common/error.hpp"
 #include "sim/run.hpp"
 #include "sim/scenario.hpp"
@@ -44,6 +45,7 @@ void addRunCommand(CLI::App& app, Action& action) {
     std::string model;
     double biasWindow = 0.0;
     bool imu = false;
+    std::string html;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -63,6 +65,8 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_flag("--imu", args->imu,
                 "Also write imu.csv: ideal and measured IMU as rates and increments (one row per "
                 "IMU interval)");
+  cmd->add_option("--html", args->html,
+                  "Also write a report: track of truth and navigation, errors against time");
   cmd->callback([&action, args]() {
     action = [args]() {
       const std::string file = args->scenario.empty() ? defaultScenario() : args->scenario;
@@ -73,12 +77,15 @@ void addRunCommand(CLI::App& app, Action& action) {
       opt.biasWindow = args->biasWindow;
       if (!args->model.empty()) opt.model = args->model;
       opt.writeImu = args->imu;
+      opt.htmlPath = args->html;
       const sim::RunSummary s = sim::run(sc, opt);
+      endProgressLine();
       std::string files;
       for (const std::string& f : s.files) files += (files.empty() ? "" : ", ") + f;
       std::cout << "sinsim run: " << file << " -> " << s.outDir << " (" << files << ") in "
                 << s.wallTime << " s\n"
                 << sim::summaryLine(s) << "\n";
+      if (!s.report.empty()) std::cout << "report: " << s.report << "\n";
       return 0;
     };
   });

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/terminal.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
@@ -54,6 +55,7 @@ int runSynth(const SynthOptions& o) {
   spec.rpy = parseAttitude(o.attitude);
   const sim::TemperatureProfile temperature = sim::temperatureFromText(o.temperature, spec.duration);
   const long long n = sim::writeStaticRecord(model, spec, temperature, o.output);
+  endProgressLine();
   std::printf("wrote %s: %lld samples at %g Hz, model %s (%zu effects), seed %llu run %llu\n",
               o.output.c_str(), n, o.rate, model.source().c_str(), model.effectNames().size(),
               (unsigned long long)o.seed, (unsigned long long)o.run);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "common/error.hpp"
@@ -55,6 +56,31 @@ inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
   if (!r.skip.empty()) ro.skip_s = parseDuration(r.skip, "--skip");
   if (!r.duration.empty()) ro.duration_s = parseDuration(r.duration, "--duration");
   return ro;
+}
+
+/// The options as a user would type them again (for the "next command" a report suggests):
+/// only those given, values quoted when they hold a blank.
+inline std::string recordOptionsText(const RecordArgs& r) {
+  auto quoted = [](const std::string& v) {
+    return v.find_first_of(" \t") == std::string::npos ? v : "\"" + v + "\"";
+  };
+  std::string s;
+  auto add = [&](const char* name, const std::string& v) {
+    if (!v.empty()) s += std::string(" ") + name + " " + quoted(v);
+  };
+  if (r.rate > 0.0) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", r.rate);
+    add("--rate", buf);
+  }
+  add("--gyro-unit", r.gyroUnit);
+  add("--accel-unit", r.accelUnit);
+  if (r.allowIrregular) s += " --allow-irregular-time";
+  if (r.delimiter != "auto") add("--delimiter", r.delimiter);
+  add("--columns", r.columns);
+  add("--skip", r.skip);
+  add("--duration", r.duration);
+  return s;
 }
 
 }  // namespace sinsim::cli

@@ -7,15 +7,16 @@
 #include <fstream>
 #include <sstream>
 
-#include "common/error.hpp"
 #include "common/constants.hpp"
+#include "common/error.hpp"
 #include "common/number_text.hpp"
+#include "common/progress.hpp"
 #include "errormodels/channels.hpp"
+#include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/gm_process.hpp"
 #include "errormodels/identify_auto.hpp"
 #include "errormodels/identify_terms.hpp"
 #include "errormodels/model_io.hpp"
-#include "errormodels/fit/ar_fit.hpp"
-#include "errormodels/gm_process.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -256,6 +257,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
 
   for (const int ci : chans) withContext(record.source + ": channel " + kRecordChannels[ci].name, [&] {
     const Channel& c = kRecordChannels[ci];
+    progress::checkpoint(std::string("channel ") + c.name, out.axes.size(), chans.size());
     const fit::SensorSignal sensor = signalOf(c.sensor);
     const std::vector<double>& src = channelData(record, ci);
     std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip), src.end());

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "errormodels/model_io.hpp"
 #include "python/bindings.hpp"
+#include "sim/mc_headlines.hpp"
 #include "sim/mc_models.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/montecarlo.hpp"
@@ -152,7 +153,7 @@ py::dict mcToDict(const sim::Reference& ref, const sim::McResult& r, std::size_t
     final[r.labels[m].c_str()] = metrics;
   }
   py::dict head;
-  for (const auto& h : sim::mcHeadlines(ref, r, models))
+  for (const auto& h : sim::mcHeadlines(ref, r, models, {}).models)  // at the last epoch
     head[h.label.c_str()] = py::dict(py::arg("t") = h.t, py::arg("cep") = h.cep,
                                      py::arg("r95") = h.r95);
   py::dict d;

@@ -41,8 +41,9 @@ shot "$work/run1-analyze.html" "$work/run1-analyze.png" 1200 2400
 crop "$work/run1-analyze.png" 0 0 1200 820 "$dest/analyze-adis16405-gx.png"
 
 # AR(5) vs GM on car.yaml, 500 paired runs: the "models together" plot of the mc report.
+# --resume: a figures run stopped with Ctrl-C continues from the runs it saved.
 build/sinsim mc scenarios/car.yaml --runs 500 --model scenarios/adis16355-ar5.yaml \
-    --model scenarios/adis16355-gm.yaml --times "5 min,10 min,20 min,2078 s" -o "$work/ar-vs-gm"
+    --model scenarios/adis16355-gm.yaml --times "5 min,10 min,20 min,2078 s" -o "$work/ar-vs-gm" --resume
 /usr/bin/python3 - "$work/ar-vs-gm/report.html" "$dest/mc-ar-vs-gm.svg" <<'PY'
 import re, sys
 html = open(sys.argv[1], encoding="utf-8").read()
@@ -53,6 +54,19 @@ if not pick:
 open(sys.argv[2], "w", encoding="utf-8").write(pick[0] + "\n")
 PY
 
+# The mc report's first screen: the answer in words, the drift envelopes on log axes.
+shot "$work/ar-vs-gm/report.html" "$work/mc-report.png" 1200 1500
+crop "$work/mc-report.png" 0 0 1200 1000 "$dest/mc-report.png"
+
+# run --html on the car drive with a navigation-grade IMU: summary, track map, errors against time.
+build/sinsim run scenarios/car.yaml --model scenarios/grade-navigation.yaml -o "$work/car-nav" \
+    --html "$work/car-nav/report.html"
+shot "$work/car-nav/report.html" "$work/run-report.png" 1200 2000
+crop "$work/run-report.png" 0 0 1200 1500 "$dest/run-report.png"
+
 # The diagnose walkthrough (fit AR(5), diagnose, add what was found) and its two pictures.
 scripts/diagnose_walkthrough.sh build "$work/walkthrough" "$dest/diagnose"
+# The improved diagnosis page: before → after, what still fails, the command to run next.
+shot "$work/walkthrough/improve.html" "$work/diagnose-next.png" 1200 2000
+crop "$work/diagnose-next.png" 0 420 1200 1480 "$dest/diagnose/what-next.png"
 echo "figures in $dest"

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct AnalysisOptions {
   bool tauPerDecade = false;  // Allan τ grid: false octave, true 10 per decade
   double confidence = 0.683;  // two-sided level of the Allan bounds
   bool denoise = false;       // db5 wavelet denoising before ACF and PSD (Allan uses raw data)
+  bool fullJson = false;      // JSON with every ACF lag and PSD bin (default: log-spaced subset)
 };
 
 /// The statistics of one channel.
@@ -39,12 +41,32 @@ struct ChannelStats {
 std::vector<ChannelStats> analyzeRecord(const errormodels::Record& record,
                                         const AnalysisOptions& options);
 
+/// The noise terms read off an Allan deviation curve (IEEE Std 952-1997, Annex C), SI:
+/// N from the shortest τ on the −1/2 line σ = N/√τ; B from the curve's minimum, σ_min/0.664
+/// (flicker floor); K from the longest τ on the +1/2 line σ = K √(τ/3) (an upper bound when the
+/// curve has not reached that slope). NaN when the curve is empty.
+struct NoiseTerms {
+  double N = NAN;     // white noise density (ARW / VRW) [unit·√s]
+  double B = NAN;     // bias instability [unit]
+  double tauB = NAN;  // τ of the minimum [s]
+  double K = NAN;     // rate random walk [unit/√s]
+};
+NoiseTerms readNoiseTerms(const errormodels::AllanCurve& allan);
+
+/// The datasheet units of a channel: gyros deg/h, deg/√h, deg/h/√h; accelerometers µg, m/s/√h,
+/// µg/√h (factors from SI: value·level, N·density, K·walk).
+struct DatasheetUnits {
+  double level, density, walk;
+  std::string levelUnit, densityUnit, walkUnit;
+};
+DatasheetUnits datasheetUnits(bool gyro);
+
 /// A terminal table: per channel mean and sd, the white-noise density read at the shortest tau
 /// and the Allan minimum as a bias-instability B, in datasheet units (deg/h, deg/sqrt(h), ug,
 /// m/s/sqrt(h)).
 std::string analysisSummary(const std::vector<ChannelStats>& stats);
 
-/// Writes the analysis: JSON (SI, every number) to jsonPath and/or the HTML report to htmlPath
+/// Writes the analysis: JSON (SI; ACF and PSD log-spaced unless fullJson) to jsonPath and/or the HTML report to htmlPath
 /// (empty: not written), each whole or not at all.
 void writeAnalysis(const errormodels::Record& record, const std::vector<ChannelStats>& stats,
                    const AnalysisOptions& options, const std::string& jsonPath,

@@ -95,9 +95,68 @@ std::string verdict(const dg::AxisDiagnosis& a, double threshold) {
   return s.empty() ? "misfit, no catalogue effect explains it" : s;
 }
 
+/// A shell command broken before its options into lines of at most ~90 characters (" \\").
+std::string wrapCommand(const std::string& cmd) {
+  std::string out, line;
+  std::size_t at = 0;
+  while (at < cmd.size()) {
+    std::size_t next = cmd.find(" --", at + 1);
+    if (next == std::string::npos) next = cmd.size();
+    const std::string piece = cmd.substr(at, next - at);
+    if (!line.empty() && line.size() + piece.size() > 90) {
+      out += line + " \\\n   ";
+      line.clear();
+    }
+    line += piece;
+    at = next;
+  }
+  return out + line;
+}
+
+/// "What still fails" after --add, and the command to run next.
+void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* imp,
+               const DiagnoseCommand& cmd) {
+  page.heading("What next");
+  if (imp) {
+    std::string still;
+    for (const auto& a : imp->after.axes)
+      if (!a.fits(d.threshold))
+        still += (still.empty() ? "" : "; ") + a.channel + " (" + verdict(a, d.threshold) +
+                 ", misfit " + fmt(a.misfit) + ", " + fmt(100 * a.fractionOutside, 2) +
+                 " % of τ outside the band)";
+    page.paragraph(still.empty() ? "After the additions every channel fits."
+                                 : "Still failing after the additions: " + still + ".");
+    const std::string& m = cmd.improvedModel.empty() ? cmd.model : cmd.improvedModel;
+    if (still.empty())
+      page.paragraph("Navigate with the improved model:")
+          .preformatted(wrapCommand("sinsim run scenarios/car.yaml --model " + m + " --html run.html"));
+    else
+      page.paragraph("Diagnose the improved model again (and add what it finds):")
+          .preformatted(wrapCommand(cmd.base + " --model " + m + " --html diagnose2.html"));
+    return;
+  }
+  bool anyFail = false, anyFound = false;
+  for (const auto& a : d.axes) {
+    anyFail = anyFail || !a.fits(d.threshold);
+    for (const auto& f : a.findings) anyFound = anyFound || f.reported;
+  }
+  if (!anyFail)
+    page.paragraph("The model fits every channel. Navigate with it:")
+        .preformatted(wrapCommand("sinsim run scenarios/car.yaml --model " + cmd.model + " --html run.html"));
+  else if (anyFound)
+    page.paragraph("Add what was found, refit it to the record and see the misfit before → after:")
+        .preformatted(wrapCommand(cmd.base + " --model " + cmd.model + " --add found -o improved.yaml --html improve.html"));
+  else
+    page.paragraph("No catalogue effect explains the misfit. Fit the record's Allan variance "
+                   "jointly (white, quantization, GM, random walk, flicker, drift):")
+        .preformatted(wrapCommand("sinsim fit" + cmd.base.substr(std::string("sinsim diagnose").size()) +
+                      " --kind latent -o latent.yaml"));
+}
+
 }  // namespace
 
-std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* imp) {
+std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* imp,
+                               const DiagnoseCommand* command) {
   HtmlPage page("Diagnosis: " + d.model + " against " + d.data);
   page.paragraph(std::to_string(d.samples) + " samples at " + fmt(d.rate, 6) + " Hz; model bands from " +
                  std::to_string(d.realisations) + " Monte Carlo realisations of the model at the record's length and rate (" +
@@ -131,6 +190,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
     page.table(t);
     for (const auto& n : imp->notes) page.paragraph("Note: " + n);
   }
+  if (command) nextSteps(page, d, imp, *command);
   for (const auto& a : d.axes) {
     page.heading(a.channel + " — " + verdict(a, d.threshold) + " (misfit " + fmt(a.misfit) + ")", 2);
     std::string fails;
@@ -159,8 +219,9 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
   return page.html();
 }
 
-void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp) {
-  const std::string html = diagnoseReportHtml(d, imp);
+void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp,
+                         const DiagnoseCommand* command) {
+  const std::string html = diagnoseReportHtml(d, imp, command);
   writeFileAtomic(path, html);
 }
 

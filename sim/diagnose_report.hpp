@@ -9,12 +9,21 @@
 
 namespace sinsim {
 
+/// How the user ran the diagnosis, so that the page can say what to run next.
+struct DiagnoseCommand {
+  std::string base;           ///< "sinsim diagnose DATA <record options>" as typed (no --model)
+  std::string model;          ///< the model file diagnosed
+  std::string improvedModel;  ///< the improved model written (--add), else empty
+};
+
 /// The page's HTML text. Values are shown in deg/s (gyro) and mg (accelerometer).
 std::string diagnoseReportHtml(const errormodels::diagnose::Diagnosis& d,
-                               const errormodels::diagnose::Improvement* improvement = nullptr);
+                               const errormodels::diagnose::Improvement* improvement = nullptr,
+                               const DiagnoseCommand* command = nullptr);
 
 /// Writes it atomically (report::HtmlPage::write).
 void writeDiagnoseReport(const std::string& path, const errormodels::diagnose::Diagnosis& d,
-                         const errormodels::diagnose::Improvement* improvement = nullptr);
+                         const errormodels::diagnose::Improvement* improvement = nullptr,
+                         const DiagnoseCommand* command = nullptr);
 
 }  // namespace sinsim

@@ -54,7 +54,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.options = opt;
   batch.samples = ref.samples.size();
   if (batch.result.complete && opt.partition.rank == 0)
-    batch.headlines = mcHeadlines(ref, batch.result, models.size());
+    batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times);
   return batch;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/mc_headlines.hpp"
 #include "sim/mc_models.hpp"
 #include "sim/measured.hpp"
 #include "sim/montecarlo.hpp"
@@ -33,7 +34,7 @@ struct McCommandResult {
   McOptions options;       ///< as run (seed, outDir and bias window resolved)
   std::size_t samples = 0; ///< IMU samples per run
   McResult result;
-  std::vector<McHeadline> headlines;  ///< empty unless the batch is complete
+  McHeadlines headlines;  ///< empty unless the batch is complete
 };
 
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,

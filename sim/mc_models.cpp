@@ -6,8 +6,6 @@
 #include <sstream>
 
 #include "common/error.hpp"
-#include "sim/mc_output.hpp"
-#include "sim/mc_stats.hpp"
 
 namespace sinsim::sim {
 namespace {
@@ -51,22 +49,6 @@ std::vector<McModel> loadMcModels(const std::vector<std::string>& files, const S
   for (const auto& m : models)  // refuse a model that cannot run at the IMU rate, before any file
     if (!m.model.empty()) m.model.instantiate(sc.imuRate, {0, 0});
   return models;
-}
-
-std::vector<McHeadline> mcHeadlines(const Reference& ref, const McResult& r, std::size_t models) {
-  McBatch batch(ref);
-  batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / ref.runFloats();
-  for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});
-  batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models));
-  const std::size_t eLast = ref.epochs() - 1;
-  std::vector<McHeadline> out;
-  for (std::size_t m = 0; m < models; ++m) {
-    auto v = metricAcrossRuns(batch, m, eLast, kHorizontal);
-    std::sort(v.begin(), v.end());
-    out.push_back({r.labels[m], ref.epochTime(eLast), mcstats::percentileSorted(v, 50),
-                   mcstats::percentileSorted(v, 95)});
-  }
-  return out;
 }
 
 }  // namespace sinsim::sim

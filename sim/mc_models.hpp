@@ -17,16 +17,4 @@ namespace sinsim::sim {
 std::vector<McModel> loadMcModels(const std::vector<std::string>& files, const Scenario& scenario,
                                   const std::string& scenarioIdentity);
 
-/// The headline of one model: CEP and R95 of the horizontal error at the last epoch.
-struct McHeadline {
-  std::string label;
-  double t = 0.0;    // [s]
-  double cep = 0.0;  // [m] median
-  double r95 = 0.0;  // [m] 95th percentile
-};
-
-/// Headlines of the first `models` entries of a complete result (rank 0).
-std::vector<McHeadline> mcHeadlines(const Reference& ref, const McResult& result,
-                                    std::size_t models);
-
 }  // namespace sinsim::sim

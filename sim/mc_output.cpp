@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "sim/mc_aided_output.hpp"
+#include "sim/mc_per_run.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
 
@@ -123,7 +124,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
       std::fprintf(f, ",%s_mean,%s_sd", kFieldNames[fl], kFieldNames[fl]);
     std::fputs("\n", f);
     for (std::size_t m = 0; m < batch.entries.size(); ++m) {
-      const std::string label = csvText(batch.entries[m].label);
+      const std::string label = csvField(batch.entries[m].label);
       for (std::size_t e = 0; e < st.epochs; ++e) {
         std::fprintf(f, "%s,%.6f", label.c_str(), ref.epochTime(e));
         for (int q = 0; q < kMetrics; ++q) {
@@ -139,6 +140,8 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     }
     files.push_back("stats.csv");
   }
+  writePerRunCsv(batch, out.open("per_run.csv"));
+  files.push_back("per_run.csv");
 
   // ---- summary.json ------------------------------------------------------------------------------
   nlohmann::json j;
@@ -271,7 +274,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     for (std::size_t m = 0; m < batch.entries.size(); ++m)
       if (batch.entries[m].parent < 0) prim.push_back(m);
     for (std::size_t m : prim) {
-      const std::string l = csvText(batch.entries[m].label);
+      const std::string l = csvField(batch.entries[m].label);
       std::fprintf(f, ",%s horizontal percentile,%s horizontal p50_m,%s horizontal p95_m",
                    l.c_str(), l.c_str(), l.c_str());
     }

@@ -33,6 +33,18 @@ double processCpuTime() {
 
 }  // namespace
 
+std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<double>& times) {
+  std::vector<std::size_t> epochs;
+  for (double t : times) {
+    if (!(std::isfinite(t) && t >= 0 && t <= ref.epochTime(ref.epochs() - 1) + 1e-9))
+      throw InputError("report time " + std::to_string(t) + " s is outside the run (0 to " +
+                       std::to_string(ref.epochTime(ref.epochs() - 1)) + " s)");
+    epochs.push_back(std::size_t(std::llround(t * ref.outputRate)));
+  }
+  if (epochs.empty()) epochs.push_back(ref.epochs() - 1);
+  return epochs;
+}
+
 McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primaryModels,
                        const McOptions& opt) {
   const auto wallStart = std::chrono::steady_clock::now();
@@ -52,14 +64,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     for (std::size_t j = 0; j < i; ++j)
       if (primaryModels[i].label == primaryModels[j].label)
         throw InputError("two models share the label " + primaryModels[i].label);
-  std::vector<std::size_t> timeEpochs;
-  for (double t : opt.times) {
-    if (!(std::isfinite(t) && t >= 0 && t <= ref.epochTime(ref.epochs() - 1) + 1e-9))
-      throw InputError("report time " + std::to_string(t) + " s is outside the run (0 to " +
-                       std::to_string(ref.epochTime(ref.epochs() - 1)) + " s)");
-    timeEpochs.push_back(std::size_t(std::llround(t * ref.outputRate)));
-  }
-  if (timeEpochs.empty()) timeEpochs.push_back(ref.epochs() - 1);
+  const std::vector<std::size_t> timeEpochs = reportEpochs(ref, opt.times);
 
   // ---- the batch: models and budget variants -----------------------------------------------------
   McBatch batch(ref);
@@ -249,7 +254,10 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     for (std::size_t m = 0; m < models.size(); ++m) batch.errors[m].resize(opt.runs * perRun);
     for (const ChunkKey& wk : all) {
       float* dst = batch.errors[wk.model].data() + wk.first * perRun;
-      if (store.read(wk, dst) != CheckpointStore::State::valid) complete = false;
+      if (store.read(wk, dst) == CheckpointStore::State::valid)
+        result.runsSaved += wk.count;
+      else
+        complete = false;
     }
     result.complete = complete;
     if (complete) {

@@ -94,6 +94,8 @@ struct McResult {
   std::uint64_t runsComputedAll = 0;  // by every process (MPI ranks) in this session
   std::uint64_t runsResumed = 0;   // found in checkpoints at the start
   std::uint64_t runsTotal = 0;     // runs × (models incl. budget variants)
+  /// Runs in valid checkpoints at the end (whole chunks; rank 0 counts every rank's).
+  std::uint64_t runsSaved = 0;
   /// Checkpoints found damaged (checksum mismatch, truncated, zeroed, older format) and
   /// therefore recomputed by this session (their paths; rank 0 sees every one).
   std::vector<std::string> damaged;
@@ -109,6 +111,10 @@ struct McResult {
 };
 
 constexpr std::uint64_t kChunkRuns = 8;
+
+/// The output epochs of the report times [s] (McOptions::times), each snapped to the nearest
+/// epoch; no times: the last epoch. Throws InputError for a time outside the run.
+std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<double>& times);
 
 /// Runs (or resumes) a batch. Throws InputError for bad options or a checkpoint folder that
 /// belongs to another batch; nothing is written before the options are validated.

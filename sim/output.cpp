@@ -17,6 +17,16 @@ namespace sinsim::sim {
 
 namespace fs = std::filesystem;
 
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string r = "\"";
+  for (char c : s) {
+    if (c == '"') r += '"';
+    r += c;
+  }
+  return r + "\"";
+}
+
 OutputFiles::OutputFiles(const std::string& dir) : dir_(dir) {
   std::error_code ec;
   if (fs::exists(dir_, ec)) {

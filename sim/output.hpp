@@ -10,6 +10,10 @@
 
 namespace sinsim::sim {
 
+/// A CSV field as written: quoted (with doubled quotes) when it holds a comma, quote or newline —
+/// model labels may ("x without gyro.x[0].ar").
+std::string csvField(const std::string& s);
+
 class OutputFiles {
  public:
   /// Creates dir (and parents) when missing; throws InputError when it cannot.

@@ -3,21 +3,26 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <initializer_list>
 #include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "common/atomic_file.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/number_text.hpp"
+#include "common/progress.hpp"
 #include "nav/attitude.hpp"
 #include "nav/strapdown.hpp"
+#include "sim/aided/aided_output.hpp"
 #include "sim/imu_source.hpp"
 #include "sim/nav_loop.hpp"
-#include "sim/aided/aided_output.hpp"
 #include "sim/output.hpp"
+#include "sim/run_report.hpp"
 #include "sim/scenario_aiding.hpp"
 #include "sim/trajectory.hpp"
 
@@ -67,17 +72,6 @@ nlohmann::json errorJson(const NavError& e) {
           {"roll_rad", e.euler.x()},
           {"pitch_rad", e.euler.y()},
           {"yaw_rad", e.euler.z()}};
-}
-
-std::string lengthText(double m) {
-  char buf[64];
-  const double a = std::abs(m);
-  if (!std::isfinite(m) || m == 0.0) std::snprintf(buf, sizeof buf, "%g m", m);
-  else if (a < 1e-3) std::snprintf(buf, sizeof buf, "%.3g um", m * 1e6);
-  else if (a < 1.0) std::snprintf(buf, sizeof buf, "%.3g mm", m * 1e3);
-  else if (a < 1e4) std::snprintf(buf, sizeof buf, "%.3g m", m);
-  else std::snprintf(buf, sizeof buf, "%.4g km", m * 1e-3);
-  return buf;
 }
 
 // The scenario's aided navigation, or nullptr for a free-inertial run from the true start (which
@@ -150,6 +144,17 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     if (opt.writeImu) aided::writeImuHeader(fImu = out->open("imu.csv"));
   }
 
+  std::unique_ptr<RunTrack> track;
+  if (!opt.htmlPath.empty()) {
+    const std::filesystem::path dir = std::filesystem::path(opt.htmlPath).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
+      throw InputError("cannot write " + opt.htmlPath + ": folder " + dir.string() +
+                       " does not exist");
+    track = std::make_unique<RunTrack>(source.initial(),
+                                       source.sampleCount() / decimation + 1);
+  }
+
   RunSummary s;
   if (fTruth) {
     s.files = {"truth.csv", "nav.csv", "errors.csv"};
@@ -167,6 +172,8 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   double prevSpeed = source.initial().v_n.norm();
   NavError err;
   auto onEpoch = [&](const ImuEpoch& e, const nav::NavState& navState) {
+    if ((e.index & 0xffff) == 0)
+      progress::update("navigating", std::uint64_t(e.index), std::uint64_t(source.sampleCount()));
     if (fImu && e.index > 0) aided::writeImuRow(fImu, e.ideal, e.measured);
     err = navError(earth, navState, e.truth);
     if (e.index > 0) {
@@ -187,6 +194,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     sumV2 += err.vertical() * err.vertical();
     ++rows;
     if (opt.onRow) opt.onRow(err);
+    if (track) track->add(e.truth, navState, err);
     if (out) {
       writeState(fTruth, e.truth);
       writeState(fNav, navState);
@@ -197,7 +205,9 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   loop.strapdown = sc.strapdown;
   loop.biasWindow = opt.biasWindow;
   loop.aiding = aiding ? aiding.get() : opt.aiding;
-  navigate(source, loop, onEpoch);
+  loop.cancel = &progress::interruptFlag();
+  // An interruption unwinds through `out`, which removes the unfinished files.
+  if (!navigate(source, loop, onEpoch)) throw Interrupted();
   s.final = err;
   if (aiding) s.outages = aiding->aided().outages();
   s.rmsHorizontal = std::sqrt(sumH2 / static_cast<double>(rows));
@@ -245,6 +255,10 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     out->commit();
     s.outDir = out->dir();
   }
+  if (track) {
+    writeFileAtomic(opt.htmlPath, runReportHtml(s, *track));
+    s.report = opt.htmlPath;
+  }
   s.wallTime =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   return s;
@@ -252,9 +266,9 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
 
 std::string summaryLine(const RunSummary& s) {
   std::ostringstream os;
-  os << s.scenario << ": " << s.duration << " s, " << lengthText(s.distance) << " travelled, "
-     << "model " << s.model << "; final horizontal error " << lengthText(s.final.horizontal())
-     << " (max " << lengthText(s.maxHorizontal) << "), vertical " << lengthText(s.final.vertical());
+  os << s.scenario << ": " << s.duration << " s, " << lengthText(s.distance, 3) << " travelled, "
+     << "model " << s.model << "; final horizontal error " << lengthText(s.final.horizontal(), 3)
+     << " (max " << lengthText(s.maxHorizontal, 3) << "), vertical " << lengthText(s.final.vertical(), 3);
   return os.str();
 }
 

@@ -52,6 +52,9 @@ struct RunOptions {
   /// Also write imu.csv: ideal and measured IMU, as rates and as increments (large: one row per
   /// IMU interval).
   bool writeImu = false;
+  /// Also write the run's HTML report here (sim/run_report.hpp: track, errors against time);
+  /// empty: none. Its folder must exist (or be outDir).
+  std::string htmlPath;
 };
 
 struct RunSummary {
@@ -69,6 +72,7 @@ struct RunSummary {
   double wallTime = 0.0;    // [s]
   std::string outDir;       // "" when nothing was written
   std::vector<std::string> files;  // the files written into outDir, in order
+  std::string report;       // the HTML report written (RunOptions::htmlPath), "" for none
 };
 
 /// Runs the scenario. Throws InputError (ConfigError for a bad model file) before anything is

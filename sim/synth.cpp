@@ -11,6 +11,7 @@
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/progress.hpp"
 #include "common/units.hpp"
 #include "nav/attitude.hpp"
 #include "nav/earth.hpp"
@@ -59,6 +60,8 @@ long long writeStaticRecord(const errormodels::ImuErrorModel& model, const Stati
     used = 0;
   };
   for (long long k = 1; k <= n; ++k) {
+    // An interruption unwinds through `out`, which removes the unfinished file.
+    if ((k & 0xffff) == 0) progress::checkpoint("synthesising", std::uint64_t(k), std::uint64_t(n));
     nav::ImuSample s;
     s.t = double(k) * dt;
     s.dt = dt;

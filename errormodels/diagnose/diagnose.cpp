@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/compare.hpp"
@@ -131,6 +132,8 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.threshold = o.threshold;
   run.d.bandLevel = o.bandLevel;
   for (std::size_t ci = 0; ci < channels.size(); ++ci) {
+    progress::checkpoint(std::string("diagnosing channel ") + kChannels[std::size_t(channels[ci])], ci,
+                         channels.size());
     try {
       run.work.push_back(diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o));
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel

@@ -9,8 +9,9 @@
 #include <thread>
 
 #include "common/error.hpp"
-#include "errormodels/diagnose/channels.hpp"
+#include "common/progress.hpp"
 #include "common/types.hpp"
+#include "errormodels/diagnose/channels.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -69,6 +70,7 @@ McResult monteCarlo(const ImuErrorModel& model, const Record& record,
       const std::size_t r = next++;
       if (r >= R || failed) return;
       try {
+        progress::checkpoint("simulating the model", r, R);
         simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r,
                  channels, buf);
         for (std::size_t i = 0; i < channels.size(); ++i)

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/number_text.hpp"
+#include "common/progress.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/stats/allan.hpp"
@@ -432,6 +433,7 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
     LatentFitOptions o = options;
     o.tauMin = std::max(options.tauMin, fit.tau[start] * (1.0 - 1e-9));
     LatentFit f;
+    progress::checkpoint("scanning the start of the tau range", start, fit.tau.size());
     try {
       f = fitRange(m, avar, samples, o);
     } catch (const Error&) {

@@ -10,9 +10,10 @@
 #include <sstream>
 
 #include "common/error.hpp"
-#include "common/text.hpp"
 #include "common/limits.hpp"
+#include "common/progress.hpp"
 #include "common/read_file.hpp"
+#include "common/text.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record_time.hpp"
 
@@ -332,6 +333,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     }
     ++rows;
     p = next;
+    if ((rows & 0xffff) == 0) progress::checkpoint("reading " + source, rows, max_rows);
   }
   if (rows == 0) fail(source, header_line, "no data rows after the header");
 
@@ -375,6 +377,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
 }
 
 Record loadRecord(const std::string& path, const RecordOptions& options) {
+  progress::checkpoint("reading " + path);
   const std::string text = readWholeFile(path);
   return parseRecord(text, path, options);
 }

@@ -88,6 +88,13 @@ HtmlPage& HtmlPage::plotRow(const std::vector<Plot>& plots, int width, int heigh
   return *this;
 }
 
+HtmlPage& HtmlPage::bars(const BarChart& chart, const std::string& caption, int width) {
+  body_ += "<figure>\n" + chart.svg(width);
+  if (!caption.empty()) body_ += "<figcaption>" + escape(caption) + "</figcaption>\n";
+  body_ += "</figure>\n";
+  return *this;
+}
+
 HtmlPage& HtmlPage::preformatted(const std::string& text) {
   body_ += "<pre>" + escape(text) + "</pre>\n";
   return *this;

@@ -127,6 +127,25 @@ class Plot {
   std::vector<std::pair<Kind, std::size_t>> order_;  // legend order
 };
 
+/// One bar of a BarChart: its label, value (sets the length; ≤ 0 or NaN: no bar) and the text
+/// shown after it (e.g. "41 % ± 2").
+struct Bar {
+  std::string label;
+  double value = 0.0;
+  std::string text;
+  std::string color;  ///< empty = the first palette colour
+};
+
+/// Horizontal bars in the order given (sort them first for a ranking, e.g. an error budget),
+/// the longest one spanning the width.
+struct BarChart {
+  std::string title;
+  std::string xLabel;
+  std::vector<Bar> bars;
+  /// A standalone <svg> element `width` px wide, as tall as the bars need.
+  std::string svg(int width = 760) const;
+};
+
 /// A table cell: text plus an optional CSS class. Built-in classes: "pass" (green), "fail" (red),
 /// "warn" (amber), "num" (right-aligned, tabular digits), "muted" (grey). Several may be given
 /// separated by spaces ("num fail").
@@ -158,6 +177,8 @@ class HtmlPage {
   /// Several plots side by side (wrapping onto new rows when the window is narrow).
   HtmlPage& plotRow(const std::vector<Plot>& plots, int width = 520, int height = 360);
   HtmlPage& preformatted(const std::string& text);
+  /// A bar chart with an optional caption below it.
+  HtmlPage& bars(const BarChart& chart, const std::string& caption = "", int width = 760);
 
   /// The whole document (UTF-8, inline CSS).
   std::string html() const;

@@ -35,7 +35,7 @@ TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and
   }
   const fs::path err = dir / "stderr.txt";
   const fs::path js = dir / "a.json", html = dir / "a.html";
-  REQUIRE(sinsim::test::runSinsim("analyze " + (dir / "white.csv").string() + " --rate 100 --json " + js.string() +
+  REQUIRE(sinsim::test::runSinsim("analyze " + (dir / "white.csv").string() + " --rate 100 --json-full --json " + js.string() +
                   " --html " + html.string(),
               err) == 0);
   const nlohmann::json j = nlohmann::json::parse(slurp(js));
@@ -62,6 +62,29 @@ TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and
   const std::string page = slurp(html);
   CHECK(page.find("<svg") != std::string::npos);
   CHECK(page.find("Allan deviation gx") != std::string::npos);
+  // Datasheet units and the noise terms read off: white noise of sigma = 0.1 rad/s at 100 Hz is
+  // N = sigma/sqrt(fs) = 0.01 rad/sqrt(s) = 34.38 deg/sqrt(h) (x 180/pi x 60), read at the
+  // shortest tau to ~0.3 % (edf ~ 60000): "34.3" to "34.5".
+  CHECK(page.find("σ(τ) [deg/h]") != std::string::npos);
+  CHECK(page.find("white noise N = 34.") != std::string::npos);
+  CHECK(page.find("deg/sqrt(h) (ARW)") != std::string::npos);
+
+  // By default the JSON is compact: every ACF lag and PSD bin below index 64, then about 32 per
+  // decade, and the last one.
+  const fs::path js3 = dir / "c.json";
+  REQUIRE(sinsim::test::runSinsim("analyze " + (dir / "white.csv").string() + " --rate 100 --json " + js3.string(),
+                                  err) == 0);
+  const nlohmann::json c = nlohmann::json::parse(slurp(js3));
+  for (const char* part : {"acf", "psd"}) {
+    const auto& full = j["channels"]["gx"][part][std::string(part) == "acf" ? "lag_s" : "f_hz"];
+    const auto& kept = c["channels"]["gx"][part][std::string(part) == "acf" ? "lag_s" : "f_hz"];
+    INFO(part << ": " << full.size() << " values, " << kept.size() << " kept");
+    REQUIRE(full.size() > 200);
+    CHECK(kept.size() <= 64 + 32.0 * std::log10(double(full.size()) / 64.0) + 2);
+    CHECK(kept.size() >= 64 + 32.0 * std::log10(double(full.size()) / 64.0) - 2);
+    CHECK(double(kept.back()) == double(full.back()));
+    CHECK(double(kept[63]) == double(full[63]));
+  }
 
   // Bad input: text in data line 3 (file line 4) -> exit 1, file:line named, no output written.
   {

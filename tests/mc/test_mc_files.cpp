@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <sstream>
 #include <thread>
 
 #include "helpers.hpp"
@@ -65,6 +67,40 @@ int interruptAfterFirstChunk(pid_t pid, const fs::path& out, int sig) {
   return status;
 }
 
+// per_run.csv (20 runs, --times 10,30 of a 30 s run, 2 models + 12 budget variants): one row
+// per model, run and time, and its values agree with the distribution stats.csv reports.
+void checkPerRunCsv(const fs::path& dir) {
+  std::istringstream in(slurp(dir / "per_run.csv"));
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "model,run,t [s],north [m],east [m],down [m],horizontal [m],vertical [m],"
+                "vn [m/s],ve [m/s],vd [m/s],roll [rad],pitch [rad],yaw [rad]");
+  std::size_t rows = 0;
+  std::vector<double> horizontalAt30;
+  while (std::getline(in, line)) {
+    ++rows;
+    if (line.rfind("adis16355-ar5,", 0) != 0) continue;
+    std::vector<double> v;
+    std::istringstream fields(line.substr(line.find(',') + 1));
+    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
+    REQUIRE(v.size() == 13);
+    CHECK(v[5] == Approx(std::hypot(v[2], v[3])).epsilon(1e-8));  // horizontal = |(north, east)|
+    if (v[1] == 30.0) horizontalAt30.push_back(v[5]);
+  }
+  CHECK(rows == 14u * 20u * 2u);
+  REQUIRE(horizontalAt30.size() == 20u);
+  // stats.csv's mean horizontal error of the model at 30 s (column 3) from the same runs.
+  std::istringstream stats(slurp(dir / "stats.csv"));
+  double mean = NAN;
+  while (std::getline(stats, line))
+    if (line.rfind("adis16355-ar5,30.000000,", 0) == 0)
+      mean = std::stod(line.substr(std::string("adis16355-ar5,30.000000,").size()));
+  double sum = 0;
+  for (double h : horizontalAt30) sum += h;
+  // Both printed with 9 significant digits from the same float errors: agree to ~1e-8.
+  CHECK(sum / 20.0 == Approx(mean).epsilon(1e-7));
+}
+
 }  // namespace
 
 TEST_CASE("sinsim mc: threads 1 and 2 write identical files; a stopped batch resumes to the same files") {
@@ -75,7 +111,15 @@ TEST_CASE("sinsim mc: threads 1 and 2 write identical files; a stopped batch res
   const Result r1 = sinsim(common + " --threads 1 -o '" + (tmp / "t1").string() + "'", tmp);
   INFO(r1.err);
   REQUIRE(r1.exitCode == 0);
-  CHECK(r1.out.find("adis16355-ar5: horizontal error at 30 s") != std::string::npos);
+  // The terminal honours --times: each model at each time, and the paired comparison at each.
+  for (const char* t : {"10 s", "30 s"}) {
+    CHECK(r1.out.find(std::string("adis16355-ar5: horizontal error at ") + t + ": CEP ") != std::string::npos);
+    CHECK(r1.out.find(std::string("adis16355-gm: horizontal error at ") + t + ": CEP ") != std::string::npos);
+    CHECK(r1.out.find(std::string(" at ") + t + " (mean ") != std::string::npos);
+  }
+  CHECK(r1.out.find("20 paired runs, paired t-test p = ") != std::string::npos);
+  CHECK(r1.out.find("e+0") == std::string::npos);  // no exponent notation for a drift
+  checkPerRunCsv(tmp / "t1");
   const Result r2 = sinsim(common + " --threads 2 -o '" + (tmp / "t2").string() + "'", tmp);
   REQUIRE(r2.exitCode == 0);
   for (const char* f : {"stats.csv", "summary.json", "report.html"})
@@ -155,22 +199,25 @@ TEST_CASE("sinsim mc: checkpoints are protected: no silent overwrite, no resume 
   fs::remove_all(tmp);
 }
 
-TEST_CASE("sinsim mc: a progress bar on a terminal, none when stderr is a file") {
+TEST_CASE("sinsim mc: a progress line on a terminal, none when stderr is a file") {
   const fs::path tmp = tempDir("progress");
   const fs::path sc = writeScenario(tmp);
-  const std::string args = "mc '" + sc.string() + "' --runs 16 --threads 1 --model '" + sourceDir() +
+  // 480 runs on one thread: a few seconds, past the line's first second of silence
+  // (cli/terminal.hpp).
+  const std::string args = "mc '" + sc.string() + "' --runs 480 --threads 1 --model '" + sourceDir() +
                            "/scenarios/adis16355-gm.yaml'";
   const Result plain = sinsim(args + " -o '" + (tmp / "a").string() + "'", tmp);
   REQUIRE(plain.exitCode == 0);
-  CHECK(plain.err.find("runs/s") == std::string::npos);
+  CHECK(plain.err.find("sinsim mc: runs") == std::string::npos);
   // util-linux `script` gives the command a pseudo-terminal (part of every Debian base system).
   REQUIRE(fs::exists("/usr/bin/script"));
   const std::string cmd = "/usr/bin/script -qec \"'" + sinsimPath() + "' " + args + " -o '" +
                           (tmp / "b").string() + "'\" /dev/null > '" + (tmp / "pty.out").string() + "'";
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string out = slurp(tmp / "pty.out");
-  CHECK(out.find("16/16 runs") != std::string::npos);  // runs done
-  CHECK(out.find("runs/s") != std::string::npos);      // rate
-  CHECK(out.find("s left") != std::string::npos);      // time left
+  CHECK(out.find("sinsim mc: runs ") != std::string::npos);  // runs done
+  CHECK(out.find("/480 (") != std::string::npos);            // of how many
+  CHECK(out.find("/s, ") != std::string::npos);              // rate
+  CHECK(out.find("s left") != std::string::npos);            // time left
   fs::remove_all(tmp);
 }

@@ -413,3 +413,22 @@ TEST_CASE("write is atomic: the whole file or nothing") {
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("bar chart: bars in the order given, lengths proportional to the values") {
+  BarChart chart{"budget", "share [%]", {{"gyro <x>", 60.0, "60 %"}, {"accel", 30.0, "30 %"},
+                                         {"none", -1.0, "-1 %"}}};
+  const std::string svg = chart.svg(600);
+  CHECK(xmlProblem(svg).empty());  // well-formed, the label escaped
+  CHECK(svg.find("gyro &lt;x&gt;") < svg.find(">accel<"));
+  // Bar widths from the <rect> elements in order: 60 and 30 give 2:1; a negative value none.
+  std::vector<double> widths;
+  for (std::size_t at = svg.find("<rect"); at != std::string::npos; at = svg.find("<rect", at + 1)) {
+    const std::size_t w = svg.find("width=\"", at) + 7;
+    widths.push_back(std::stod(svg.substr(w, svg.find('"', w) - w)));
+  }
+  REQUIRE(widths.size() == 3);
+  CHECK(widths[0] > 100.0);
+  CHECK(widths[0] == Approx(2.0 * widths[1]).epsilon(0.01));  // 0.1 px rounding of ~200 px
+  CHECK(widths[2] == 0.0);
+  CHECK_THROWS_AS(chart.svg(100), sinsim::InputError);
+}

@@ -109,3 +109,33 @@ TEST_CASE("sinsim run without arguments runs the default scenario into out/<name
   CHECK(fs::is_regular_file(tmp / "out" / "car" / "errors.csv"));
   fs::remove_all(tmp);
 }
+
+TEST_CASE("sinsim run --html: a report with the track, the errors and the attitude errors") {
+  const fs::path tmp = tempDir("html");
+  const std::string scenario = "'" + kFixtures + "good_short.yaml'";
+  const std::string model = "'" + std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-gm.yaml'";
+  Result r = sinsim("run " + scenario + " -o '" + (tmp / "a").string() + "' --model " + model +
+                        " --html '" + (tmp / "a" / "report.html").string() + "'",
+                    tmp);
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.out.find("report: " + (tmp / "a" / "report.html").string()) != std::string::npos);
+  const std::string html = slurp(tmp / "a" / "report.html");
+  for (const char* s : {"Track: truth and navigation", "Position error (navigation − truth)",
+                        "Attitude error (navigation − truth)", "After ", " travelled, the navigation is "})
+    CHECK(html.find(s) != std::string::npos);
+  std::size_t svgs = 0;
+  for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1))
+    ++svgs;
+  CHECK(svgs >= 3);
+  CHECK(html.find("e+0") == std::string::npos);  // lengths in mm/m/km, not exponents
+
+  // A report into a missing folder: refused before anything is written.
+  r = sinsim("run " + scenario + " -o '" + (tmp / "b").string() + "' --html '" +
+                 (tmp / "nowhere" / "r.html").string() + "'",
+             tmp);
+  CHECK(r.exitCode == 1);
+  CHECK(r.err.find("nowhere") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "b"));
+  fs::remove_all(tmp);
+}

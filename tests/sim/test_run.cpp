@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "nav/earth.hpp"
 #include "sim/run.hpp"
+#include "sim/run_report.hpp"
 #include "sim/scenario.hpp"
 
 using namespace sinsim;
@@ -249,4 +250,35 @@ segments: [{type: static, duration: 60 s}]
     CHECK(e.diagnostics()[0].message.find("temperature") != std::string::npos);
   }
   fs::remove_all(dir);
+}
+
+TEST_CASE("the run report's map: east and north of the start on the WGS84 tangent plane") {
+  // Closed forms at the equator, height 0: a small step δ north is δ·M(0) with the meridian
+  // radius M(0) = a(1 − e²) = 6 335 439.327 m; east, δ·N(0) with N(0) = a = 6 378 137 m (WGS84).
+  // A 1e-5 rad step: the neglected curvature terms are ~δ²·R ≈ 1e-3 m (1e-5 relative) — the
+  // tolerance.
+  sinsim::nav::NavState start;  // lat 0, lon 0, h 0
+  sinsim::sim::RunTrack track(start, 3);
+  sinsim::nav::NavState north = start, east = start;
+  north.lat = 1e-5;
+  east.lon = 1e-5;
+  sinsim::sim::NavError e;
+  track.add(start, start, e);
+  track.add(north, east, e);
+  REQUIRE(track.northTrue.size() == 2);
+  CHECK(track.northTrue[0] == Approx(0.0).margin(1e-9));
+  CHECK(track.northTrue[1] == Approx(1e-5 * 6335439.327).epsilon(1e-5));
+  CHECK(track.eastTrue[1] == Approx(0.0).margin(1e-6));
+  CHECK(track.eastNav[1] == Approx(1e-5 * 6378137.0).epsilon(1e-5));
+  CHECK(track.northNav[1] == Approx(0.0).margin(1e-6));
+}
+
+TEST_CASE("the run report keeps at most RunTrack::kMaxPoints epochs of a long run") {
+  sinsim::nav::NavState s;
+  const long long rows = 3 * static_cast<long long>(sinsim::sim::RunTrack::kMaxPoints) + 5;
+  sinsim::sim::RunTrack track(s, rows);
+  sinsim::sim::NavError e;
+  for (long long k = 0; k < rows; ++k) track.add(s, s, e);
+  CHECK(track.t.size() <= sinsim::sim::RunTrack::kMaxPoints);
+  CHECK(track.t.size() >= sinsim::sim::RunTrack::kMaxPoints / 2);
 }

@@ -1,0 +1,129 @@
+#include "cli/terminal.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <ctime>
+#include <mutex>
+
+#include "common/progress.hpp"
+
+namespace sinsim::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Written by the signal handler: lock-free atomics only.
+std::atomic<long long> gFirstSigintMs{0};
+
+long long monotonicMs() {  // async-signal-safe (clock_gettime is)
+  timespec ts{};
+  ::clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<long long>(ts.tv_sec) * 1000 + ts.tv_nsec / 1000000;
+}
+
+extern "C" void onSigint(int) {
+  const long long now = monotonicMs();
+  if (!progress::interruptFlag().exchange(true)) {
+    gFirstSigintMs.store(now);
+    return;
+  }
+  if (now - gFirstSigintMs.load() < 1000) return;  // the same Ctrl-C, delivered twice
+  static const char msg[] = "\nsinsim: interrupted twice: stopped at once\n";
+  const ssize_t ignored = ::write(2, msg, sizeof msg - 1);
+  (void)ignored;
+  ::_exit(130);
+}
+
+std::atomic<bool> gLineEnabled{true};
+std::atomic<bool> gStop{false};
+std::mutex gWakeMutex;
+std::condition_variable gWake;
+std::mutex gLineMutex;
+bool gLineShown = false;  // guarded by gLineMutex
+
+void eraseLine() {
+  std::lock_guard<std::mutex> lock(gLineMutex);
+  if (!gLineShown) return;
+  std::fputs("\r\033[K", stderr);
+  std::fflush(stderr);
+  gLineShown = false;
+}
+
+// "sinsim mc: runs 24/100 (24 %), 2.1/s, 12 s, ~38 s left"
+std::string lineText(const std::string& command, const progress::Snapshot& p, double elapsed) {
+  std::string s = "sinsim " + command + ": " + (p.stage.empty() ? "working" : p.stage);
+  char buf[96];
+  if (p.total > 0) {
+    std::snprintf(buf, sizeof buf, " %llu/%llu (%.0f %%)", static_cast<unsigned long long>(p.done),
+                  static_cast<unsigned long long>(p.total), 100.0 * double(p.done) / double(p.total));
+    s += buf;
+  }
+  if (p.total > 0 && elapsed > 0) {
+    const double rate = double(p.done) / elapsed;
+    std::snprintf(buf, sizeof buf, rate < 10 ? ", %.2g/s" : ", %.0f/s", rate);  // no exponent
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, ", %.0f s", elapsed);
+  s += buf;
+  if (p.total > 0 && p.done > 0 && p.done < p.total) {
+    std::snprintf(buf, sizeof buf, ", ~%.0f s left",
+                  std::ceil(elapsed * double(p.total - p.done) / double(p.done)));
+    s += buf;
+  }
+  if (progress::interruptFlag().load()) s += " — stopping (Ctrl-C)";
+  return s;
+}
+
+void drawLines(const std::string& command) {
+  const auto start = Clock::now();
+  while (!gStop.load()) {
+    {
+      std::unique_lock<std::mutex> lock(gWakeMutex);  // the end of the work wakes it at once
+      gWake.wait_for(lock, std::chrono::milliseconds(250), [] { return gStop.load(); });
+    }
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    if (gStop.load() || elapsed < 1.0 || !gLineEnabled.load()) continue;
+    const std::string text = lineText(command, progress::current(), elapsed);
+    std::lock_guard<std::mutex> lock(gLineMutex);
+    if (!gLineEnabled.load()) continue;  // ended while the text was made
+    std::fprintf(stderr, "\r\033[K%s", text.c_str());
+    std::fflush(stderr);
+    gLineShown = true;
+  }
+}
+
+}  // namespace
+
+LongWork::LongWork(std::string command) : command_(std::move(command)) {
+  std::signal(SIGINT, onSigint);
+  gStop.store(false);
+  if (::isatty(1) && ::isatty(2)) line_ = std::thread(drawLines, command_);
+}
+
+LongWork::~LongWork() {
+  {
+    std::lock_guard<std::mutex> lock(gWakeMutex);
+    gStop.store(true);
+  }
+  gWake.notify_all();
+  if (line_.joinable()) line_.join();
+  eraseLine();
+  std::signal(SIGINT, SIG_DFL);
+}
+
+void endProgressLine() {
+  gLineEnabled.store(false);
+  eraseLine();
+}
+
+std::string interruptedMessage(const std::string& command) {
+  return "sinsim " + command + ": interrupted (Ctrl-C); ";
+}
+
+}  // namespace sinsim::cli

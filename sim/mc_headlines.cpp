@@ -1,0 +1,70 @@
+#include "sim/mc_headlines.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/number_text.hpp"
+#include "sim/mc_stats.hpp"
+
+namespace sinsim::sim {
+
+std::string McPairedHeadline::sentence() const {
+  // Said of the model with the larger mean drift, relative to the other.
+  const bool bMore = meanB > meanA;
+  const std::string& more = bMore ? b : a;
+  const std::string& less = bMore ? a : b;
+  const double hi = std::max(meanA, meanB), lo = std::min(meanA, meanB);
+  const std::string evidence = " (mean " + lengthText(hi, 3) + " vs " + lengthText(lo, 3) + ", " +
+                               std::to_string(runs) + " paired runs, paired t-test p = " +
+                               pValueText(pT) + ").";
+  const std::string when = " at " + durationText(t);
+  if (!(pT < 0.05) || !(lo > 0))
+    return "No significant difference in horizontal drift between " + more + " and " + less +
+           when + evidence;
+  const double ratio = hi / lo;
+  const std::string amount = ratio >= 2.0 ? significant(ratio, 2) + " times the horizontal drift of "
+                                          : significant(100.0 * (ratio - 1.0), 2) +
+                                                " % more horizontal drift than ";
+  return more + " predicts " + amount + less + when + evidence;
+}
+
+McHeadlines mcHeadlines(const McBatch& batch, std::size_t models) {
+  McHeadlines out;
+  for (std::size_t e : batch.timeEpochs) {
+    const double t = batch.ref.epochTime(e);
+    std::vector<std::vector<double>> h(models);
+    for (std::size_t m = 0; m < models; ++m) {
+      h[m] = metricAcrossRuns(batch, m, e, kHorizontal);
+      std::vector<double> v = h[m];
+      std::sort(v.begin(), v.end());
+      out.models.push_back({batch.entries[m].label, t, mcstats::percentileSorted(v, 50),
+                            mcstats::percentileSorted(v, 95)});
+    }
+    for (std::size_t a = 0; a < models; ++a)
+      for (std::size_t b = a + 1; b < models; ++b) {
+        McPairedHeadline p;
+        p.a = batch.entries[a].label;
+        p.b = batch.entries[b].label;
+        p.t = t;
+        p.runs = h[a].size();
+        p.meanA = mcstats::moments(h[a]).mean;
+        p.meanB = mcstats::moments(h[b]).mean;
+        p.pT = mcstats::pairedT(h[a], h[b]).p;
+        p.pWilcoxon = mcstats::wilcoxonSignedRank(h[a], h[b]).p;
+        out.pairs.push_back(p);
+      }
+  }
+  return out;
+}
+
+McHeadlines mcHeadlines(const Reference& ref, const McResult& r, std::size_t models,
+                        const std::vector<double>& times) {
+  McBatch batch(ref);
+  batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / ref.runFloats();
+  batch.timeEpochs = reportEpochs(ref, times);
+  for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});
+  batch.errors.assign(r.errors.begin(), r.errors.begin() + long(models));
+  return mcHeadlines(batch, models);
+}
+
+}  // namespace sinsim::sim
