@@ -49,6 +49,11 @@ std::vector<LatentTermSet> latentCandidateSets(bool quantization, int maxGm, boo
   return out;
 }
 
+double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options) {
+  return options.penaltyPerTerm * double(set.termCount()) +
+         options.penaltyPerParameter * double(set.parameterCount());
+}
+
 const LatentParameter& LatentFit::parameter(const std::string& name) const {
   for (const auto& p : parameters)
     if (p.name == name) return p;
@@ -231,7 +236,7 @@ Eigen::VectorXd modelLevels(const Problem& p, const LatentModel& m) {
 
 /// Best valid set under the current p.W (every set fitted); all fits returned, best first.
 std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<LatentTermSet>& sets,
-                                      double penalty, std::vector<SetFit>* fits) {
+                                      const LatentFitOptions& penalty, std::vector<SetFit>* fits) {
   std::vector<LatentCandidate> out;
   for (const auto& s : sets) {
     if (s.parameterCount() + 1 > p.m.size()) continue;  // needs dof >= 1
@@ -240,7 +245,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
     c.terms = s;
     c.model = modelOf(f);
     c.chi2 = f.chi2;
-    c.score = f.chi2 + penalty * double(s.termCount());
+    c.score = f.chi2 + latentPenalty(s, penalty);
     c.valid = f.allPositive && std::isfinite(f.chi2);
     out.push_back(c);
     if (fits) fits->push_back(f);
@@ -262,7 +267,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
 }
 
 /// Pass 1: each set with diagonal weights from its own model levels (two reweightings).
-LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, double penalty) {
+LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, const LatentFitOptions& penalty) {
   const Eigen::MatrixXd W0 = diagonalWhitening(p, p.y);
   std::optional<LatentCandidate> best;
   for (const auto& s : sets) {
@@ -274,7 +279,7 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
       f = fitSet(p, s);
     }
     if (!f.allPositive) continue;
-    const double score = f.chi2 + penalty * double(s.termCount());
+    const double score = f.chi2 + latentPenalty(s, penalty);
     if (!best || score < best->score) best = LatentCandidate{s, modelOf(f), f.chi2, score, true};
   }
   if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
@@ -381,8 +386,10 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     throw InputError("latent fit: " + std::to_string(p.m.size()) + " Allan points in the range (m <= N/10, tau in [" +
                      fmt(options.tauMin) + ", " + fmt(options.tauMax) + "] s): too few for " +
                      std::to_string(minPar) + " parameters");
-  const double penalty = options.penaltyPerTerm;
-  if (!(std::isfinite(penalty) && penalty >= 0.0)) throw InputError("latent fit: penalty must be >= 0");
+  const LatentFitOptions& penalty = options;
+  if (!(std::isfinite(options.penaltyPerTerm) && options.penaltyPerTerm >= 0.0 &&
+        std::isfinite(options.penaltyPerParameter) && options.penaltyPerParameter >= 0.0))
+    throw InputError("latent fit: penalties must be >= 0");
 
   // Pass 2 with Omega from the preliminary model; repeated (at most 3 times) while the winner
   // changes, as Omega depends on the model.

@@ -80,9 +80,15 @@ struct LatentFitOptions {
   /// consistent start, else the one with the smallest chi^2 / dof. Real sensors show features at
   /// short tau no term carries (an internal filter's hump); `sinsim fit` turns this on.
   bool scanStart = false;
-  /// Penalty per term in the score (a GM is one term); see the selection rule above.
-  double penaltyPerTerm = 5.41;
+  /// Penalty per term in the score (a GM is one term) and per parameter (a GM has two); the
+  /// score adds both (latentPenalty). The defaults make a term of k parameters cost the 1 %
+  /// point of the boundary mixture (chi^2_0 + chi^2_k) / 2: 5.41 for k = 1, 7.82 for k = 2.
+  double penaltyPerTerm = 3.0;
+  double penaltyPerParameter = 2.41;
 };
+
+/// The score's penalty of a term set: penaltyPerTerm * terms + penaltyPerParameter * parameters.
+double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options);
 
 /// One parameter of the fitted model with its 1-sigma uncertainty (SI of the channel, see
 /// latent_model.hpp for the units).
