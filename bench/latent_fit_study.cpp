@@ -9,6 +9,7 @@
 //
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 |
 //       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
+//           [--min-right F --min-coverage F --expect N]   (exit 1 below a floor: the ctest slice)
 //   build/bench/latent_fit_study [--seeds N] [--case NAME] [--rate HZ] [--duration S] [--penalty P]
 //
 // Prints one line per (case, rate, duration): the rate of the right term set, and per parameter
@@ -157,8 +158,15 @@ struct Tally {
 };
 
 /// The independent generator's stream (bench/latent_study/generate.py) on stdin. The cells are
-/// printed every 50 records of a cell (progress) and at the end.
-int runStdin(const fit::LatentFitOptions& base) {
+/// printed every 10 records of a cell (progress) and at the end.
+/// Exit status 1 when fewer than `expect` records arrive, or when the right-set rate or the 2-sigma
+/// coverage pooled over all cells is below its floor (the ctest slice, bench/CMakeLists.txt).
+struct Floors {
+  double minRight = 0.0, minCoverage = 0.0;
+  int expect = 0;
+};
+
+int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
   std::map<std::string, Tally> tallies;
   std::string line;
   while (std::getline(std::cin, line)) {
@@ -181,11 +189,23 @@ int runStdin(const fit::LatentFitOptions& base) {
     Tally& tally = tallies[label];
     tally.label = label;
     tally.add(truth, params, x, rate, base, head.at("seed").get<int>());
-    if ((tally.fitted + tally.failed) % 50 == 0) tally.print();
+    if ((tally.fitted + tally.failed) % 10 == 0) tally.print();
   }
   std::printf("== final\n");
-  for (const auto& [label, tally] : tallies) tally.print();
-  return 0;
+  int records = 0, right = 0, checks = 0, covered = 0;
+  for (const auto& [label, tally] : tallies) {
+    tally.print();
+    records += tally.fitted + tally.failed;
+    right += tally.right;
+    for (const auto& [name, k] : tally.seen) checks += k;
+    for (const auto& [name, k] : tally.covered) covered += k;
+  }
+  std::printf("pooled: right set %d/%d, 2-sigma coverage %d/%d\n", right, records, covered, checks);
+  const bool ok = records >= floors.expect && right >= floors.minRight * records &&
+                  covered >= floors.minCoverage * checks;
+  if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g)\n", floors.expect,
+                       floors.minRight, floors.minCoverage);
+  return ok ? 0 : 1;
 }
 
 }  // namespace
@@ -195,6 +215,7 @@ int main(int argc, char** argv) {
   fit::LatentFitOptions base;
   std::string only;
   bool fromStdin = false;
+  Floors floors;
   std::vector<double> rates{100.0, 1000.0}, durations{1200.0, 7200.0};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--stdin")) { fromStdin = true; continue; }
@@ -202,11 +223,14 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];
     else if (!std::strcmp(argv[i], "--penalty")) base.penaltyPerTerm = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--min-right")) floors.minRight = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--min-coverage")) floors.minCoverage = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--expect")) floors.expect = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--penalty-per-parameter")) base.penaltyPerParameter = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};
     else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[++i])};
   }
-  if (fromStdin) return runStdin(base);
+  if (fromStdin) return runStdin(base, floors);
   for (double rate : rates)
     for (double duration : durations)
       for (const Case& cs : cases(rate, duration)) {

@@ -82,6 +82,9 @@ struct Problem {
   std::size_t N = 0;
   double minT = 0.0;  ///< [s] shortest GM tau searched
   Eigen::MatrixXd W;
+  /// The five non-GM Allan basis columns at the points (allanColumn), computed once: they do not
+  /// depend on the GM taus the search varies.
+  std::array<Eigen::VectorXd, kAllanTermCount> basis;
 };
 
 /// Column of a five-term Allan basis function (index in AllanTermKind order) at the points.
@@ -94,12 +97,6 @@ Eigen::VectorXd allanColumn(const Problem& p, std::size_t kind) {
   return c;
 }
 
-Eigen::VectorXd gmColumn(const Problem& p, double T) {
-  Eigen::VectorXd c(static_cast<Eigen::Index>(p.m.size()));
-  for (std::size_t i = 0; i < p.m.size(); ++i) c(Eigen::Index(i)) = gmDiscreteAllanVariance(1.0, T, p.dt, p.m[i]);
-  return c;
-}
-
 /// A fit of one term set: the variance coefficients in design order (Q, N, gm..., B, K, R).
 struct SetFit {
   LatentTermSet set;
@@ -109,16 +106,21 @@ struct SetFit {
   bool allPositive = false;
 };
 
+/// The design matrix of a set: one column per variance coefficient, in the order Q, N, gm..., B,
+/// K, R (parameterCount() - gm columns: a GM's tau is not a column).
 Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
-  std::vector<Eigen::VectorXd> cols;
-  if (s.quantization) cols.push_back(allanColumn(p, 0));
-  if (s.white) cols.push_back(allanColumn(p, 1));
-  for (double t : T) cols.push_back(gmColumn(p, t));
-  if (s.flicker) cols.push_back(allanColumn(p, 2));
-  if (s.randomWalk) cols.push_back(allanColumn(p, 3));
-  if (s.drift) cols.push_back(allanColumn(p, 4));
-  Eigen::MatrixXd X(static_cast<Eigen::Index>(p.m.size()), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t j = 0; j < cols.size(); ++j) X.col(Eigen::Index(j)) = cols[j];
+  const auto n = static_cast<Eigen::Index>(p.m.size());
+  Eigen::MatrixXd X(n, static_cast<Eigen::Index>(s.parameterCount() - T.size()));
+  Eigen::Index j = 0;
+  if (s.quantization) X.col(j++) = p.basis[0];
+  if (s.white) X.col(j++) = p.basis[1];
+  for (double t : T) {
+    for (Eigen::Index i = 0; i < n; ++i) X(i, j) = gmDiscreteAllanVariance(1.0, t, p.dt, p.m[std::size_t(i)]);
+    ++j;
+  }
+  if (s.flicker) X.col(j++) = p.basis[2];
+  if (s.randomWalk) X.col(j++) = p.basis[3];
+  if (s.drift) X.col(j++) = p.basis[4];
   return X;
 }
 
@@ -378,6 +380,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     y.push_back(avar[i]);
   }
   p.y = Eigen::Map<Eigen::VectorXd>(y.data(), Eigen::Index(y.size()));
+  for (std::size_t kind = 0; kind < kAllanTermCount; ++kind) p.basis[kind] = allanColumn(p, kind);
   const std::vector<LatentTermSet> sets =
       options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
   std::size_t minPar = 1000;
