@@ -104,7 +104,7 @@ struct LatentCandidate {
   LatentTermSet terms;
   LatentModel model;
   double chi2 = 0.0;
-  double score = 0.0;  ///< chi2 + k * penalty
+  double score = 0.0;  ///< chi2 + latentPenalty(terms, options)
   bool valid = false;  ///< every variance strictly positive
 };
 
