@@ -1,9 +1,15 @@
 // Validation study of the composite latent-process fit (errormodels/fit/latent_fit.hpp):
-// round trips over many seeds. Each record is made by the simulator's own effect plug-ins
-// (ImuErrorModel::instantiate + corrupt on zero ideal increments, the loop of `sinsim synth`), one
-// gyro channel; the fit must choose the generating term set and cover each true parameter with
-// 2 stated sigma.
+// round trips over many seeds; the fit must choose the generating term set and cover each true
+// parameter with 2 stated sigma. Two sources of records:
+//  --stdin  records from an independent generator (bench/latent_study/generate.py, NumPy only:
+//           spectral 1/f flicker, closed-form GM): per record a JSON line (case, rate, duration,
+//           seed, terms, params, n) and n float64 samples. This is the study of docs/fitting.md.
+//  default  the simulator's own effect plug-ins (ImuErrorModel::instantiate + corrupt on zero
+//           ideal increments, the loop of `sinsim synth`), one gyro channel.
 //
+//   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 |
+//       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
+//           [--min-right F --min-coverage F --expect N]   (exit 1 below a floor: the ctest slice)
 //   build/bench/latent_fit_study [--seeds N] [--case NAME] [--rate HZ] [--duration S] [--penalty P]
 //
 // Prints one line per (case, rate, duration): the rate of the right term set, and per parameter
@@ -14,7 +20,10 @@
 #include <cstring>
 #include <map>
 #include <string>
+#include <iostream>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/imu_model.hpp"
@@ -92,67 +101,147 @@ std::vector<double> record(const std::vector<EffectSpec>& effects, double rate, 
   return x;
 }
 
+/// Right-set and coverage counts of one (case, rate, duration) cell.
+struct Tally {
+  std::string label;
+  int right = 0, fitted = 0, failed = 0;
+  std::map<std::string, int> covered, seen, chosen;
+  std::vector<std::string> names;  ///< parameters in the case's order
+
+  void add(const fit::LatentTermSet& truth, const std::map<std::string, double>& params,
+           const std::vector<double>& x, double rate, const fit::LatentFitOptions& base, int seed) {
+    if (names.empty())
+      for (const auto& [n, v] : params) names.push_back(n);
+    fit::LatentFitOptions o = base;
+    o.sampleInterval = 1.0 / rate;
+    fit::LatentFit f;
+    try {
+      f = fit::fitLatentModel(x, o);
+    } catch (const std::exception& e) {
+      std::printf("  seed %d: %s\n", seed, e.what());
+      ++failed;
+      return;
+    }
+    ++fitted;
+    if (std::getenv("STUDY_VERBOSE") && seed < 3) {
+      std::printf("  seed %d [%s] chi2 %.3g/%zu, runner-up [%s]:", seed, f.terms.name().c_str(), f.chi2, f.dof,
+                  f.runnerUp() ? f.runnerUp()->terms.name().c_str() : "-");
+      for (const auto& p : f.parameters) {
+        const auto t = params.find(p.name);
+        std::printf(" %s %.4g+-%.2g (%.4g)", p.name.c_str(), p.value, p.stdError,
+                    t == params.end() ? NAN : t->second);
+      }
+      std::printf("\n");
+    }
+    ++chosen[f.terms.name()];
+    if (!(f.terms == truth)) return;
+    ++right;
+    for (const auto& [name, value] : params) {
+      const auto& p = f.parameter(name);
+      ++seen[name];
+      if (std::fabs(p.value - value) <= 2.0 * p.stdError) ++covered[name];
+    }
+  }
+
+  void print() const {
+    std::printf("%s: right set %d/%d (%.1f %%);", label.c_str(), right, fitted + failed,
+                100.0 * right / std::max(fitted + failed, 1));
+    for (const auto& name : names) {
+      const auto c = covered.find(name), s = seen.find(name);
+      std::printf(" %s %d/%d", name.c_str(), c == covered.end() ? 0 : c->second, s == seen.end() ? 0 : s->second);
+    }
+    std::printf("\n   chosen:");
+    for (const auto& [n, k] : chosen) std::printf(" [%s] %d", n.c_str(), k);
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+};
+
+/// The independent generator's stream (bench/latent_study/generate.py) on stdin. The cells are
+/// printed every 10 records of a cell (progress) and at the end.
+/// Exit status 1 when fewer than `expect` records arrive, or when the right-set rate or the 2-sigma
+/// coverage pooled over all cells is below its floor (the ctest slice, bench/CMakeLists.txt).
+struct Floors {
+  double minRight = 0.0, minCoverage = 0.0;
+  int expect = 0;
+};
+
+int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
+  std::map<std::string, Tally> tallies;
+  std::string line;
+  while (std::getline(std::cin, line)) {
+    const auto head = nlohmann::json::parse(line);
+    const auto& t = head.at("terms");
+    const fit::LatentTermSet truth{t.at("quantization").get<bool>(), t.at("white").get<bool>(), t.at("gm").get<int>(),
+                                   t.at("flicker").get<bool>(),      t.at("random_walk").get<bool>(),
+                                   t.at("drift").get<bool>()};
+    const auto params = head.at("params").get<std::map<std::string, double>>();
+    const double rate = head.at("rate").get<double>(), duration = head.at("duration").get<double>();
+    const std::size_t n = head.at("n").get<std::size_t>();
+    std::vector<double> x(n);
+    if (!std::cin.read(reinterpret_cast<char*>(x.data()), std::streamsize(n * sizeof(double)))) {
+      std::fprintf(stderr, "latent_fit_study: stream ends inside a record\n");
+      return 1;
+    }
+    char label[160];
+    std::snprintf(label, sizeof label, "%-20s %6g Hz %6g s", head.at("case").get<std::string>().c_str(), rate,
+                  duration);
+    Tally& tally = tallies[label];
+    tally.label = label;
+    tally.add(truth, params, x, rate, base, head.at("seed").get<int>());
+    if ((tally.fitted + tally.failed) % 10 == 0) tally.print();
+  }
+  std::printf("== final\n");
+  int records = 0, right = 0, checks = 0, covered = 0;
+  for (const auto& [label, tally] : tallies) {
+    tally.print();
+    records += tally.fitted + tally.failed;
+    right += tally.right;
+    for (const auto& [name, k] : tally.seen) checks += k;
+    for (const auto& [name, k] : tally.covered) covered += k;
+  }
+  std::printf("pooled: right set %d/%d, 2-sigma coverage %d/%d\n", right, records, covered, checks);
+  const bool ok = records >= floors.expect && right >= floors.minRight * records &&
+                  covered >= floors.minCoverage * checks;
+  if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g)\n", floors.expect,
+                       floors.minRight, floors.minCoverage);
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int seeds = 200;
-  double penalty = fit::LatentFitOptions{}.penaltyPerTerm;
+  fit::LatentFitOptions base;
   std::string only;
+  bool fromStdin = false;
+  Floors floors;
   std::vector<double> rates{100.0, 1000.0}, durations{1200.0, 7200.0};
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--case")) only = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--penalty")) penalty = std::atof(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[i + 1])};
-    else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[i + 1])};
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--stdin")) { fromStdin = true; continue; }
+    if (i + 1 >= argc) break;
+    if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--case")) only = argv[++i];
+    else if (!std::strcmp(argv[i], "--penalty")) base.penaltyPerTerm = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--min-right")) floors.minRight = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--min-coverage")) floors.minCoverage = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--expect")) floors.expect = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--penalty-per-parameter")) base.penaltyPerParameter = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};
+    else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[++i])};
   }
+  if (fromStdin) return runStdin(base, floors);
   for (double rate : rates)
     for (double duration : durations)
       for (const Case& cs : cases(rate, duration)) {
         if (!only.empty() && cs.name != only) continue;
-        int right = 0, fitted = 0;
-        std::map<std::string, int> covered, seen;
-        std::map<std::string, int> chosen;
-        for (int s = 0; s < seeds; ++s) {
-          const auto x = record(cs.effects, rate, duration, 1000 + std::uint64_t(s));
-          fit::LatentFitOptions o;
-          o.sampleInterval = 1.0 / rate;
-          o.penaltyPerTerm = penalty;
-          fit::LatentFit f;
-          try {
-            f = fit::fitLatentModel(x, o);
-          } catch (const std::exception& e) {
-            std::printf("  seed %d: %s\n", s, e.what());
-            continue;
-          }
-          ++fitted;
-          if (std::getenv("STUDY_VERBOSE") && s < 3) {
-            std::printf("  seed %d [%s] chi2 %.3g/%zu, runner-up [%s]:", s, f.terms.name().c_str(), f.chi2, f.dof,
-                        f.runnerUp() ? f.runnerUp()->terms.name().c_str() : "-");
-            for (const auto& p : f.parameters) {
-              const auto t = cs.params.find(p.name);
-              std::printf(" %s %.4g+-%.2g (%.4g)", p.name.c_str(), p.value, p.stdError,
-                          t == cs.params.end() ? NAN : t->second);
-            }
-            std::printf("\n");
-          }
-          ++chosen[f.terms.name()];
-          if (!(f.terms == cs.truth)) continue;
-          ++right;
-          for (const auto& [name, truth] : cs.params) {
-            const auto& p = f.parameter(name);
-            ++seen[name];
-            if (std::fabs(p.value - truth) <= 2.0 * p.stdError) ++covered[name];
-          }
-        }
-        std::printf("%-20s %6g Hz %6g s: right set %d/%d (%.1f %%);", cs.name.c_str(), rate, duration, right,
-                    fitted, 100.0 * right / std::max(fitted, 1));
-        for (const auto& [name, truth] : cs.params)
-          std::printf(" %s %d/%d", name.c_str(), covered[name], seen[name]);
-        std::printf("\n   chosen:");
-        for (const auto& [n, k] : chosen) std::printf(" [%s] %d", n.c_str(), k);
-        std::printf("\n");
-        std::fflush(stdout);
+        Tally tally;
+        char label[160];
+        std::snprintf(label, sizeof label, "%-20s %6g Hz %6g s", cs.name.c_str(), rate, duration);
+        tally.label = label;
+        for (int s = 0; s < seeds; ++s)
+          tally.add(cs.truth, cs.params, record(cs.effects, rate, duration, 1000 + std::uint64_t(s)), rate, base, s);
+        tally.print();
       }
   return 0;
 }

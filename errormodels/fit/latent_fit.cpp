@@ -50,6 +50,11 @@ std::vector<LatentTermSet> latentCandidateSets(bool quantization, int maxGm, boo
   return out;
 }
 
+double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options) {
+  return options.penaltyPerTerm * double(set.termCount()) +
+         options.penaltyPerParameter * double(set.parameterCount());
+}
+
 const LatentParameter& LatentFit::parameter(const std::string& name) const {
   for (const auto& p : parameters)
     if (p.name == name) return p;
@@ -78,6 +83,9 @@ struct Problem {
   std::size_t N = 0;
   double minT = 0.0;  ///< [s] shortest GM tau searched
   Eigen::MatrixXd W;
+  /// The five non-GM Allan basis columns at the points (allanColumn), computed once: they do not
+  /// depend on the GM taus the search varies.
+  std::array<Eigen::VectorXd, kAllanTermCount> basis;
 };
 
 /// Column of a five-term Allan basis function (index in AllanTermKind order) at the points.
@@ -90,12 +98,6 @@ Eigen::VectorXd allanColumn(const Problem& p, std::size_t kind) {
   return c;
 }
 
-Eigen::VectorXd gmColumn(const Problem& p, double T) {
-  Eigen::VectorXd c(static_cast<Eigen::Index>(p.m.size()));
-  for (std::size_t i = 0; i < p.m.size(); ++i) c(Eigen::Index(i)) = gmDiscreteAllanVariance(1.0, T, p.dt, p.m[i]);
-  return c;
-}
-
 /// A fit of one term set: the variance coefficients in design order (Q, N, gm..., B, K, R).
 struct SetFit {
   LatentTermSet set;
@@ -105,16 +107,21 @@ struct SetFit {
   bool allPositive = false;
 };
 
+/// The design matrix of a set: one column per variance coefficient, in the order Q, N, gm..., B,
+/// K, R (parameterCount() - gm columns: a GM's tau is not a column).
 Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
-  std::vector<Eigen::VectorXd> cols;
-  if (s.quantization) cols.push_back(allanColumn(p, 0));
-  if (s.white) cols.push_back(allanColumn(p, 1));
-  for (double t : T) cols.push_back(gmColumn(p, t));
-  if (s.flicker) cols.push_back(allanColumn(p, 2));
-  if (s.randomWalk) cols.push_back(allanColumn(p, 3));
-  if (s.drift) cols.push_back(allanColumn(p, 4));
-  Eigen::MatrixXd X(static_cast<Eigen::Index>(p.m.size()), static_cast<Eigen::Index>(cols.size()));
-  for (std::size_t j = 0; j < cols.size(); ++j) X.col(Eigen::Index(j)) = cols[j];
+  const auto n = static_cast<Eigen::Index>(p.m.size());
+  Eigen::MatrixXd X(n, static_cast<Eigen::Index>(s.parameterCount() - T.size()));
+  Eigen::Index j = 0;
+  if (s.quantization) X.col(j++) = p.basis[0];
+  if (s.white) X.col(j++) = p.basis[1];
+  for (double t : T) {
+    for (Eigen::Index i = 0; i < n; ++i) X(i, j) = gmDiscreteAllanVariance(1.0, t, p.dt, p.m[std::size_t(i)]);
+    ++j;
+  }
+  if (s.flicker) X.col(j++) = p.basis[2];
+  if (s.randomWalk) X.col(j++) = p.basis[3];
+  if (s.drift) X.col(j++) = p.basis[4];
   return X;
 }
 
@@ -232,7 +239,7 @@ Eigen::VectorXd modelLevels(const Problem& p, const LatentModel& m) {
 
 /// Best valid set under the current p.W (every set fitted); all fits returned, best first.
 std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<LatentTermSet>& sets,
-                                      double penalty, std::vector<SetFit>* fits) {
+                                      const LatentFitOptions& penalty, std::vector<SetFit>* fits) {
   std::vector<LatentCandidate> out;
   for (const auto& s : sets) {
     if (s.parameterCount() + 1 > p.m.size()) continue;  // needs dof >= 1
@@ -241,7 +248,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
     c.terms = s;
     c.model = modelOf(f);
     c.chi2 = f.chi2;
-    c.score = f.chi2 + penalty * double(s.termCount());
+    c.score = f.chi2 + latentPenalty(s, penalty);
     c.valid = f.allPositive && std::isfinite(f.chi2);
     out.push_back(c);
     if (fits) fits->push_back(f);
@@ -263,7 +270,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
 }
 
 /// Pass 1: each set with diagonal weights from its own model levels (two reweightings).
-LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, double penalty) {
+LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, const LatentFitOptions& penalty) {
   const Eigen::MatrixXd W0 = diagonalWhitening(p, p.y);
   std::optional<LatentCandidate> best;
   for (const auto& s : sets) {
@@ -275,7 +282,7 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
       f = fitSet(p, s);
     }
     if (!f.allPositive) continue;
-    const double score = f.chi2 + penalty * double(s.termCount());
+    const double score = f.chi2 + latentPenalty(s, penalty);
     if (!best || score < best->score) best = LatentCandidate{s, modelOf(f), f.chi2, score, true};
   }
   if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
@@ -374,6 +381,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     y.push_back(avar[i]);
   }
   p.y = Eigen::Map<Eigen::VectorXd>(y.data(), Eigen::Index(y.size()));
+  for (std::size_t kind = 0; kind < kAllanTermCount; ++kind) p.basis[kind] = allanColumn(p, kind);
   const std::vector<LatentTermSet> sets =
       options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
   std::size_t minPar = 1000;
@@ -382,8 +390,10 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     throw InputError("latent fit: " + std::to_string(p.m.size()) + " Allan points in the range (m <= N/10, tau in [" +
                      fmt(options.tauMin) + ", " + fmt(options.tauMax) + "] s): too few for " +
                      std::to_string(minPar) + " parameters");
-  const double penalty = options.penaltyPerTerm;
-  if (!(std::isfinite(penalty) && penalty >= 0.0)) throw InputError("latent fit: penalty must be >= 0");
+  const LatentFitOptions& penalty = options;
+  if (!(std::isfinite(options.penaltyPerTerm) && options.penaltyPerTerm >= 0.0 &&
+        std::isfinite(options.penaltyPerParameter) && options.penaltyPerParameter >= 0.0))
+    throw InputError("latent fit: penalties must be >= 0");
 
   // Pass 2 with Omega from the preliminary model; repeated (at most 3 times) while the winner
   // changes, as Omega depends on the model.

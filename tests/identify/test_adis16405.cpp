@@ -16,6 +16,7 @@
 #include <string>
 
 #include "errormodels/identify.hpp"
+#include "errormodels/stats/special.hpp"
 
 using namespace sinsim::errormodels;
 
@@ -59,5 +60,82 @@ TEST_CASE("ADIS16405: run-1 model predicts run-2 gyro Allan curve, 10-82 s", "[i
     INFO(a.channel << " ARW " << arw << " deg/sqrt(h)");
     CHECK(arw > 1.5);
     CHECK(arw < 3.5);
+  }
+}
+
+// Issue 11, `fit --kind gm` (white + GM (+ RW), fit/latent_fit.hpp) on the ADIS16405 runs, all six
+// channels, 10 min skipped:
+//  (a) the fitted model's ADEV lies inside the 99 % band of the run's own Allan estimate at every
+//      point of the fitted tau range (tau >= 2 samples). The band is the chi^2 interval of the
+//      estimate with its Greenhall EDF nu: nu adev^2 / model^2 in [chi2_nu(0.005), chi2_nu(0.995)].
+//      A right model leaves ~1 % of points outside: with ~10 points per fit, 12 fits, ~1.2 in all
+//      (Poisson: P(>= 5) ~ 0.8 %). Asserted: <= 2 outside per fit and <= 4 over the 12 fits.
+//  (b) the run-1 model predicts run 2's Allan curve over run 1's fitted range: z as in the test
+//      above (both runs' estimation noise), |z| <= 3.29 (two-sided 99.9 %). Asserted for the three
+//      gyros at every point; the accelerometers' run-2 curves differ from run 1 beyond the
+//      estimation noise on part of the range (ay most), so only printed. Per-axis results are in
+//      docs/fitting.md ("ADIS16405").
+namespace {
+
+Identification gmFit(const std::string& file) {
+  RecordOptions ro;
+  ro.rate_hz = 100.0;
+  ro.gyro_unit = "deg/s";
+  ro.accel_unit = "g";
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Gm;
+  o.skipStart = 600.0;
+  return identify(loadRecord(file, ro), o);
+}
+
+}  // namespace
+
+TEST_CASE("ADIS16405: GM model inside the 99 % band of its run; run 1 predicts run 2",
+          "[identify][adis16405][latent]") {
+  const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
+  if (!std::ifstream(dir + "run1.csv.gz") || !std::ifstream(dir + "run2.csv.gz")) {
+    WARN("ADIS16405 data not found in " << dir << ": skipped");
+    return;
+  }
+  const Identification id1 = gmFit(dir + "run1.csv.gz"), id2 = gmFit(dir + "run2.csv.gz");
+  std::size_t outside = 0;
+  for (const Identification* id : {&id1, &id2})
+    for (const auto& a : id->axes) {
+      REQUIRE(a.latent);
+      const auto pred = a.modelAdev(a.allan.tau);
+      std::size_t tested = 0, inside = 0;
+      for (std::size_t i = 0; i < a.allan.size(); ++i) {
+        const double tau = a.allan.tau[i];
+        if (tau < a.latent->tau.front() * (1 - 1e-9) || tau > a.latent->tau.back() * (1 + 1e-9)) continue;
+        if (tau < 2.0 / id->rate_hz) continue;
+        const double nu = a.allan.edf[i], r = nu * std::pow(a.allan.dev[i] / pred[i], 2);
+        ++tested;
+        if (r >= chiSquareQuantile(0.005, nu) && r <= chiSquareQuantile(0.995, nu)) ++inside;
+        else WARN(a.channel << " tau " << tau << " s outside: model " << pred[i] << " adev " << a.allan.dev[i]);
+      }
+      WARN(a.channel << " (a) " << a.latent->terms.name() << ": inside " << inside << "/" << tested << " from "
+                     << a.latent->tau.front() << " s");
+      CHECK(tested >= 6);
+      CHECK(tested - inside <= 2);
+      outside += tested - inside;
+    }
+  CHECK(outside <= 4);
+  for (const auto& a : id1.axes) {
+    const auto& b = id2.axis(a.channel);
+    const auto pred = a.modelAdev(b.allan.tau);
+    std::size_t tested = 0, inside = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < b.allan.size(); ++i) {
+      const double tau = b.allan.tau[i];
+      if (tau < a.latent->tau.front() * (1 - 1e-9) || tau > a.latent->tau.back() * (1 + 1e-9)) continue;
+      const double z = std::log(pred[i] / b.allan.dev[i]) /
+                       std::sqrt(1.0 / (2.0 * a.allan.edf[i]) + 1.0 / (2.0 * b.allan.edf[i]));
+      ++tested;
+      if (std::fabs(z) <= 3.29) ++inside;
+      worst = std::max(worst, std::fabs(z));
+    }
+    WARN(a.channel << " (b) run 2 inside " << inside << "/" << tested << ", max |z| " << worst);
+    CHECK(tested >= 6);
+    if (a.sensor == fit::SensorSignal::Gyro) CHECK(inside == tested);
   }
 }

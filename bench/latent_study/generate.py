@@ -1,0 +1,145 @@
+"""Records for the latent-fit round-trip study, made without any sinsim code (NumPy only).
+
+Issue 11's five cases at a given rate and length, one gyro-like channel per record [rad/s]:
+  white+gm            white + first-order GM
+  white+gm+rw         white + GM + random walk
+  white+2gm           white + two GMs, taus a decade apart
+  white+flicker+rw    white + 1/f flicker + random walk
+  quantization+white  white noise whose increments are output-quantized with carry
+
+How each process is made (on purpose not the way the fit models it, where there is a choice):
+  white        N / sqrt(dt) * normal samples
+  GM           the sampled Ornstein-Uhlenbeck process, x_k = phi x_{k-1} + sigma sqrt(1-phi^2) e_k,
+               started from its stationary law, computed blockwise in closed form
+               (x_k = phi^k (x_0 + sum phi^-j w_j)), not by a loop or a filter routine
+  random walk  sampled discrete walk b_k = b_{k-1} + K sqrt(dt) e_k (the fit assumes the continuous
+               walk averaged over each interval; they differ by K^2 dt / (6 m), far below the white)
+  flicker      spectral synthesis: white noise shaped in the frequency domain by sqrt(h / (2 dt f))
+               (one-sided PSD h / f, h = B^2 / pi, so that the Allan floor is 2 ln 2 h = (2 ln 2 / pi)
+               B^2 in IEEE 952's convention) over an FFT twice the record's length, first half kept.
+               No sum of GMs, no AR: nothing the fit is built from.
+  quantization the angle (cumulative increment) rounded to an LSB, the rate = difference / dt
+
+Output (stdout): per record one JSON line (case, rate, duration, seed, term set, true parameters
+in SI with the fit's parameter names, n) followed by n little-endian float64 samples. Read by
+`latent_fit_study --stdin`. Seeds: numpy.random.default_rng([seed, case index, rate, duration]).
+
+    python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 \
+        | build/bench/latent_fit_study --stdin
+"""
+import argparse
+import json
+import math
+import sys
+
+import numpy as np
+
+CASES = ["white+gm", "white+gm+rw", "white+2gm", "white+flicker+rw", "quantization+white"]
+DEG = math.pi / 180.0
+
+
+def parameters(case, rate, duration):
+    """True parameters (SI) and the term set. Sizes: every term carries >= ~40 % of the Allan
+    variance on at least one octave of tau <= duration / 10 at both rates and lengths."""
+    N = 0.2 * DEG / 60.0                  # white [rad/sqrt(s)], 0.2 deg/sqrt(h)
+    T1 = duration / 2400.0                # GM tau [s]: 0.5 s (20 min), 3 s (2 h)
+    s1 = 0.005 * DEG                      # GM sigma [rad/s]
+    T2, s2 = 10.0 * T1, 0.003 * DEG       # second GM, a decade slower
+    K = 200.0 * N / duration              # random walk [rad/s/sqrt(s)]
+    B = 40.0 * N / math.sqrt(duration)    # flicker [rad/s]
+    Kf = 2.0 * K                          # the random walk beside the flicker
+    Q = N * math.sqrt(1.0 / rate) / math.sqrt(12.0)  # LSB = per-sample white increment sd
+    terms = {"quantization": False, "white": True, "gm": 0, "flicker": False,
+             "random_walk": False, "drift": False}
+    if case == "white+gm":
+        terms["gm"] = 1
+        p = {"white": N, "gm1.sigma": s1, "gm1.tau": T1}
+    elif case == "white+gm+rw":
+        terms.update(gm=1, random_walk=True)
+        p = {"white": N, "gm1.sigma": s1, "gm1.tau": T1, "random_walk": K}
+    elif case == "white+2gm":
+        terms["gm"] = 2
+        p = {"white": N, "gm1.sigma": s1, "gm1.tau": T1, "gm2.sigma": s2, "gm2.tau": T2}
+    elif case == "white+flicker+rw":
+        terms.update(flicker=True, random_walk=True)
+        p = {"white": N, "flicker": B, "random_walk": Kf}
+    elif case == "quantization+white":
+        terms["quantization"] = True
+        p = {"white": N, "quantization": Q}
+    else:
+        raise SystemExit(f"unknown case {case!r}; known: {', '.join(CASES)}")
+    return terms, p
+
+
+def gauss_markov(rng, n, dt, sigma, tau):
+    phi = math.exp(-dt / tau)
+    w = sigma * math.sqrt(1.0 - phi * phi) * rng.standard_normal(n)
+    x = np.empty(n)
+    prev = sigma * rng.standard_normal()
+    block = max(1, min(n, int(300.0 * tau / dt)))  # phi^-block <= e^300: no overflow
+    for s in range(0, n, block):
+        j = np.arange(1, min(block, n - s) + 1, dtype=float)
+        decay = np.exp(-j * dt / tau)                      # phi^j
+        acc = np.cumsum(w[s:s + len(j)] / decay)           # sum phi^-i w_i
+        x[s:s + len(j)] = decay * (prev + acc)
+        prev = x[s + len(j) - 1]
+    return x
+
+
+def flicker(rng, n, dt, B):
+    h = B * B / math.pi
+    M = 2 * n
+    W = np.fft.rfft(rng.standard_normal(M))
+    f = np.fft.rfftfreq(M, dt)
+    G = np.zeros_like(f)
+    G[1:] = np.sqrt(h / (2.0 * dt * f[1:]))
+    return np.fft.irfft(W * G, M)[:n]
+
+
+def record(case, rate, duration, seed):
+    terms, p = parameters(case, rate, duration)
+    dt = 1.0 / rate
+    n = int(round(duration * rate))
+    rng = np.random.default_rng([seed, CASES.index(case), int(rate), int(duration)])
+    x = p["white"] / math.sqrt(dt) * rng.standard_normal(n)
+    for g in (1, 2):
+        if f"gm{g}.sigma" in p:
+            x += gauss_markov(rng, n, dt, p[f"gm{g}.sigma"], p[f"gm{g}.tau"])
+    if "random_walk" in p:
+        x += np.cumsum(p["random_walk"] * math.sqrt(dt) * rng.standard_normal(n))
+    if "flicker" in p:
+        x += flicker(rng, n, dt, p["flicker"])
+    if "quantization" in p:
+        lsb = p["quantization"] * math.sqrt(12.0)  # [rad]
+        angle = np.round(np.cumsum(x * dt) / lsb) * lsb
+        x = np.diff(angle, prepend=0.0) / dt
+    return terms, p, x
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--rate", type=float, action="append", help="Hz (repeatable; default 100 and 1000)")
+    ap.add_argument("--duration", type=float, action="append", help="s (repeatable; default 1200 and 7200)")
+    ap.add_argument("--case", action="append", help="(repeatable; default all five)")
+    ap.add_argument("--seeds", type=int, default=200)
+    ap.add_argument("--first-seed", type=int, default=0)
+    a = ap.parse_args()
+    out = sys.stdout.buffer
+    # seed-major order: a stream cut short still has every cell at a similar number of seeds
+    for seed in range(a.first_seed, a.first_seed + a.seeds):
+        for rate in a.rate or [100.0, 1000.0]:
+            for duration in a.duration or [1200.0, 7200.0]:
+                for case in a.case or CASES:
+                    terms, p, x = record(case, rate, duration, seed)
+                    head = {"case": case, "rate": rate, "duration": duration, "seed": seed,
+                            "terms": terms, "params": p, "n": len(x)}
+                    out.write((json.dumps(head) + "\n").encode())
+                    out.write(x.astype("<f8").tobytes())
+                    out.flush()
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except BrokenPipeError:
+        pass
