@@ -7,6 +7,7 @@
 #include <string>
 
 #include "errormodels/diagnose/significance.hpp"
+#include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -27,6 +28,30 @@ double ownEvidence(const Candidate& c, const std::vector<double>& currentAvar) {
   return z * z;
 }
 
+/// Closed-form AVAR on the tau grid of the AR base re-estimated (Burg, its order) on the record
+/// without w.removed and without `signal` (may be empty).
+std::vector<double> refittedBaseAvar(const ChannelWork& w, const std::vector<double>& signal) {
+  std::vector<double> x = *w.y;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    x[k] -= (w.removed.empty() ? 0.0 : w.removed[k]) + (signal.empty() ? 0.0 : signal[k]);
+  const auto ar = fit::burg(x, w.arOrder);
+  return fit::arAllanVariance(ar.a, ar.drivingVariance, w.factors);
+}
+
+/// The problem of a trial: for an AR base and a candidate with a signal, the model's AVAR scaled
+/// by what re-estimating the base on the record without the signal does to it (the base's free
+/// parameters refitted: a base fitted to a record with a ramp is bent by it, and only the refit
+/// shows how much of the misfit the ramp explains); otherwise the current problem.
+AllanProblem trialProblem(const ChannelWork& w, const Candidate& c, std::vector<double>* trialAvar) {
+  if (w.arOrder == 0 || c.signal.empty()) return w.prob;
+  AllanProblem p = w.prob;
+  const auto av = refittedBaseAvar(w, c.signal);
+  for (std::size_t k = 0; k < p.mu.size(); ++k)
+    if (w.baseAvar[k] > 0 && av[k] > 0) p.mu[k] *= av[k] / w.baseAvar[k];
+  if (trialAvar) *trialAvar = av;
+  return p;
+}
+
 /// Trial of every candidate whose effect is not accepted yet: added to the current set, the
 /// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
 /// parameters. Returns the best, or -1 when none is left.
@@ -42,7 +67,7 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t) {
     trial.push_back(&w.cands[i]);
     auto start = w.sol.theta;
     start.push_back(-1.0);
-    t.sol[i] = solveAllan(w.prob, trial, start);
+    t.sol[i] = solveAllan(trialProblem(w, w.cands[i], nullptr), trial, start);
     t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + ownEvidence(w.cands[i], currentAvar) -
                 penalty * double(w.cands[i].parameters);
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
@@ -117,6 +142,7 @@ void selectFindings(ChannelWork& w, double threshold) {
   AxisDiagnosis& d = w.d;
   const double penalty = criterionPenalty(w.prob.L.size());
   w.sol = solveAllan(w.prob, {});
+  if (w.arOrder > 0) w.baseAvar = refittedBaseAvar(w, {});
   Trials t;
   t.score.assign(w.cands.size(), 0.0);
   t.drop.assign(w.cands.size(), 0.0);
@@ -129,6 +155,14 @@ void selectFindings(ChannelWork& w, double threshold) {
     f.score = t.score[std::size_t(best)];
     f.drop = t.drop[std::size_t(best)];
     f.reported = true;
+    const Candidate& c = w.cands[std::size_t(best)];
+    if (w.arOrder > 0 && !c.signal.empty()) {  // the base refitted without it from now on
+      std::vector<double> av;
+      w.prob = trialProblem(w, c, &av);
+      w.baseAvar = av;
+      w.removed.resize(c.signal.size(), 0.0);
+      for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
+    }
     w.accepted.push_back(std::size_t(best));
     w.sol = t.sol[std::size_t(best)];
     d.findings.push_back(f);
