@@ -236,7 +236,7 @@ def run_one(a, i):
     row["result"] = diagnose(a.sinsim, row, a)
     if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in g.CATALOGUE:
         res = row["result"].get(row["channel"], {})
-        if res.get("findings", [None])[0] == row["hidden"][0]["effect"]:
+        if (res.get("findings") or [None])[0] == row["hidden"][0]["effect"]:
             row["add"] = diagnose(a.sinsim, row, a, f'{row["hidden"][0]["effect"]}:{row["channel"]}')
     os.remove(row["record"])
     return row

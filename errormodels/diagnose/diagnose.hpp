@@ -58,8 +58,10 @@ struct DiagnoseOptions {
   /// Two-sided level of the bands. 0.99: with ~30 tau points a perfect model leaves on average
   /// 0.3 outside (P(>= 3 outside) = 0.3 %), so "outside" means something.
   double bandLevel = 0.99;
-  /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 8.
-  double threshold = 8.0;
+  /// Reporting threshold on the score sqrt(drop of the penalised criterion): 5.5, above the
+  /// largest of 180 null channels (4.81) of the white + random walk + flicker family of the
+  /// challenge generator (docs/diagnose.md, "Threshold, calibrated on null channels").
+  double threshold = 5.5;
   /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
   double maxFactorFraction = 0.125;
   std::size_t psdSegment = 0;  ///< 0: min(4096, largest power of two <= N/8)
