@@ -259,7 +259,12 @@ def main():
     ap.add_argument("--null", action="store_true", help="no hidden effects (threshold calibration)")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")
+    ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",
+                    help="only print the scores of earlier runs' results.json files, pooled")
     a = ap.parse_args()
+    if a.report:
+        report([row for path in a.report for row in json.load(open(path))])
+        return
     os.makedirs(a.work, exist_ok=True)
     rows = []
     from concurrent.futures import ThreadPoolExecutor
