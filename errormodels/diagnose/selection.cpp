@@ -55,14 +55,14 @@ AllanProblem trialProblem(const ChannelWork& w, const Candidate& c, std::vector<
 /// Trial of every candidate whose effect is not accepted yet: added to the current set, the
 /// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
 /// parameters. Returns the best, or -1 when none is left.
-std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t) {
+std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const std::string& only = "") {
   std::set<std::string> taken;
   std::vector<const Candidate*> set;
   for (auto i : w.accepted) taken.insert(w.cands[i].effect), set.push_back(&w.cands[i]);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
-    if (taken.count(w.cands[i].effect)) continue;
+    if (taken.count(w.cands[i].effect) || !(only.empty() || w.cands[i].effect == only)) continue;
     auto trial = set;
     trial.push_back(&w.cands[i]);
     auto start = w.sol.theta;
@@ -147,8 +147,19 @@ void selectFindings(ChannelWork& w, double threshold) {
   t.score.assign(w.cands.size(), 0.0);
   t.drop.assign(w.cands.size(), 0.0);
   t.sol.resize(w.cands.size());
+  // With a temperature column the temperature is tried first (issue 12: "regress on it first"):
+  // a thermal drift has the shape of the record's temperature in time, which a warm-up, a ramp or
+  // a random walk can imitate; when the temperature alone passes the threshold it is taken before
+  // them, and they are tried on what it leaves.
+  bool temperatureRound = std::any_of(w.cands.begin(), w.cands.end(),
+                                      [](const Candidate& c) { return c.effect == "temperature"; });
   for (;;) {
-    const std::ptrdiff_t best = trialRound(w, penalty, t);
+    std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
+    if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold)) {
+      temperatureRound = false;
+      best = trialRound(w, penalty, t);
+    }
+    temperatureRound = false;
     if (best < 0 || t.drop[std::size_t(best)] < threshold * threshold) break;
     Finding f;
     f.effect = w.cands[std::size_t(best)].effect;
