@@ -102,7 +102,7 @@ Outcome diagnoseHidden(const std::string& name, const Record& r,
     CHECK(before.findings[i].reported);
     CHECK(before.findings[i].score >= options().threshold);
   }
-  // No false alarm beside them: nothing else reported (threshold 8, see the README).
+  // No false alarm beside them: nothing else reported (threshold 5.5, calibrated: docs/diagnose.md).
   std::size_t reported = 0;
   for (const auto& f : before.findings) reported += f.reported;
   CHECK(reported == hidden.size());
