@@ -208,6 +208,9 @@ TEST_CASE("nothing hidden gives no reported finding", "[diagnose][null]") {
       INFO(f.effect << " score " << f.score);
       CHECK_FALSE(f.reported);
     }
+    // A right model leaves nothing unexplained: the remaining chi2 is below its 0.999 quantile
+    // (P = 0.1 % per channel if the chi2 law held exactly; three seeds).
+    CHECK_FALSE(d.axis("gx").unexplained.has_value());
   }
 }
 
@@ -235,7 +238,7 @@ TEST_CASE("the improved model file loads and its JSON carries before and after",
   CHECK(hasWarmup);
   const auto j = dg::toJson(imp);
   for (const char* key : {"\"misfit_before\"", "\"misfit_after\"", "\"findings\"", "\"fails\"",
-                          "\"evidence\"", "\"score\"", "\"size\""})
+                          "\"evidence\"", "\"score\"", "\"drop\"", "\"unexplained\"", "\"size\""})
     CHECK(j.find(key) != std::string::npos);
   CHECK(imp.changes.at(0).misfitAfter < imp.changes.at(0).misfitBefore);
   const auto table = dg::summaryTable(imp);
