@@ -28,7 +28,7 @@ struct DiagnoseArgs {
   std::size_t realisations = 32;
   std::uint64_t seed = 20240505;
   unsigned threads = 0;
-  double threshold = 8.0;
+  double threshold = errormodels::diagnose::DiagnoseOptions{}.threshold;
 };
 
 int diagnoseAndWrite(const DiagnoseArgs& a);
@@ -111,7 +111,7 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
   c->add_option("--seed", a->seed, "seed of the realisations");
   c->add_option("--threads", a->threads, "worker threads (default: all cores)");
-  c->add_option("--threshold", a->threshold, "reporting threshold on the score (default 8)");
+  c->add_option("--threshold", a->threshold, "reporting threshold on the score (default: calibrated on null channels, docs/diagnose.md)");
   c->callback([a, &action] { action = [a] { return runDiagnose(*a); }; });
 }
 

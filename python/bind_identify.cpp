@@ -96,6 +96,7 @@ py::dict findingDict(const em::diagnose::Finding& f, const std::string& channel)
   d["yaml"] = em::diagnose::effectText(f.spec, channel);
   d["params"] = f.params;
   d["score"] = f.score;
+  d["drop"] = f.drop;
   d["reported"] = f.reported;
   return d;
 }

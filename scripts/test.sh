@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-test_packages=(chromium python3 python3-pytest python3-matplotlib)  # + the Python module's tests
+test_packages=(chromium python3 python3-pytest python3-matplotlib python3-numpy python3-scipy)  # + the Python module's tests, the diagnosis challenge slice
 missing=()
 for p in "${test_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

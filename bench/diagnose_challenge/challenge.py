@@ -32,11 +32,13 @@ GYRO_SCALE = math.radians(0.005)  # rad/s/sqrt(Hz): a MEMS gyro's white density
 ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
 
 
-def draw_record(rng, max_samples):
+def draw_record(rng, max_samples, null=False):
     fs = float(rng.choice(RATES))
     T = 10 ** rng.uniform(math.log10(1200.0), math.log10(4 * 3600.0))
     n = int(min(T * fs, max_samples))
     n_effects = int(rng.choice([0, 1, 1, 2], p=[0.2, 0.5, 0.1, 0.2]))
+    if null:
+        n_effects = 0
     pool = g.CATALOGUE + g.OUT_OF_CATALOGUE
     names = list(rng.choice(pool, size=n_effects, replace=False)) if n_effects else []
     return fs, n, names
@@ -65,8 +67,8 @@ def axis_key(ch):
     return ("gyro" if ch[0] == "g" else "accel"), ch[1]
 
 
-def make(rng, idx, work, max_samples):
-    fs, n, names = draw_record(rng, max_samples)
+def make(rng, idx, work, max_samples, bases=BASES, null=False):
+    fs, n, names = draw_record(rng, max_samples, null)
     t = np.arange(1, n + 1) / fs
     T = n / fs
     temp = 25.0 + 15.0 * (1.0 - np.exp(-t / (T / 4.0))) + 0.05 * rng.standard_normal(n)
@@ -77,7 +79,7 @@ def make(rng, idx, work, max_samples):
     for ch in g.CHANNELS:
         sensor, ax = axis_key(ch)
         scale = GYRO_SCALE if sensor == "gyro" else ACCEL_SCALE
-        kind = str(rng.choice(BASES))
+        kind = str(rng.choice(bases))
         base, effects = g.make_base(rng, n, fs, scale, kind)
         q = None
         if rng.random() < 0.25:  # a quantized base: LSB a fraction of the one-sample sd
@@ -115,56 +117,83 @@ def make(rng, idx, work, max_samples):
             "hidden": truth}
 
 
-def diagnose(sinsim, row, threads):
-    out = row["record"][:-4] + ".json"
-    cmd = [sinsim, "diagnose", row["record"], "--model", row["model"], "--json", out,
-           "--threads", str(threads), "-o", row["record"][:-4] + ".improved.yaml"]
+def diagnose(sinsim, row, opts, add=None):
+    """Runs sinsim diagnose on the row's record; per channel the reported findings in acceptance
+    order, the best drop score of any candidate (the first trial round when nothing is reported:
+    what a threshold calibration needs), and the unexplained range. With add="EFFECT:CH" the
+    misfit before and after adding it."""
+    out = row["record"][:-4] + (".add.json" if add else ".json")
+    cmd = ["nice", opts.sinsim, "diagnose", row["record"], "--model", row["model"], "--json", out,
+           "--threads", str(opts.threads), "--realisations", str(opts.realisations),
+           "-o", row["record"][:-4] + ".improved.yaml"]
+    if opts.threshold is not None:
+        cmd += ["--threshold", str(opts.threshold)]
+    if add:
+        cmd += ["--add", add]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         return {"error": p.stderr.strip()[-400:]}
     d = json.load(open(out))
     res = {}
     for a in d["axes"]:
-        rep = sorted([f for f in a["findings"] if f.get("reported")], key=lambda f: -f["score"])
+        if add:
+            res[a["channel"]] = {"misfit_before": a["misfit_before"], "misfit_after": a["misfit_after"],
+                                 "added": a["added"]}
+            continue
+        rep = [f for f in a["findings"] if f.get("reported")]
         res[a["channel"]] = {"findings": [f["effect"] for f in rep], "misfit": a["misfit"],
-                             "fits": a["fits"]}
+                             "fits": a["fits"], "unexplained": a.get("unexplained"),
+                             "best_score": max([f["score"] for f in a["findings"]] + [0.0]),
+                             "best_effect": max(a["findings"], key=lambda f: f["score"])["effect"]
+                             if a["findings"] else None}
     return res
 
 
 def score(rows):
-    top1 = defaultdict(lambda: [0, 0])      # size -> [correct, total] (single catalogue effect)
-    both = [0, 0]
-    clean = [0, 0]                         # [false alarms, clean channels]
-    ooc = [0, 0]
-    confusion = defaultdict(Counter)
+    """Counts [hits, total] of every score of the issue (docs/diagnose.md, "Challenge benchmark")."""
+    sc = {"top1": defaultdict(lambda: [0, 0]), "by_effect": defaultdict(lambda: [0, 0]),
+          "both": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0],
+          "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": []}
     for r in rows:
         res = r.get("result", {})
         if "error" in res:
             continue
         for ch, c in res.items():
-            named = c["findings"][0] if c["findings"] else ("unexplained" if not c["fits"] else "none")
+            named = c["findings"][0] if c["findings"] else ("unexplained" if c.get("unexplained") else "none")
             if ch != r["channel"] or not r["hidden"]:
-                clean[1] += 1
-                clean[0] += bool(c["findings"])
-                confusion["(clean)"][named] += 1
+                sc["clean"][1] += 1
+                sc["clean"][0] += bool(c["findings"])
+                sc["clean_unexplained"][1] += 1
+                sc["clean_unexplained"][0] += bool(c.get("unexplained")) and not c["findings"]
+                sc["null_scores"].append(c.get("best_score", 0.0))
+                sc["confusion"]["(clean)"][named] += 1
                 continue
             hid = [h["effect"] for h in r["hidden"]]
             if len(hid) == 1:
                 h = r["hidden"][0]
-                confusion[h["effect"]][named] += 1
+                sc["confusion"][h["effect"]][named] += 1
                 if h["effect"] in g.OUT_OF_CATALOGUE:
-                    ooc[1] += 1
-                    ooc[0] += named in g.EQUIVALENT[h["effect"]]
+                    sc["ooc"][1] += 1
+                    sc["ooc"][0] += named in g.EQUIVALENT[h["effect"]]
                 else:
                     key = "lsb" if h["effect"] == "quantization" else h["size"]
-                    top1[key][1] += 1
-                    top1[key][0] += named == h["effect"]
+                    sc["top1"][key][1] += 1
+                    sc["top1"][key][0] += named == h["effect"]
+                    sc["by_effect"][h["effect"]][1] += 1
+                    sc["by_effect"][h["effect"]][0] += named == h["effect"]
+                    add = r.get("add", {}).get(ch)
+                    if add and named == h["effect"] and add["misfit_before"] > 0:
+                        ratio = add["misfit_after"] / add["misfit_before"]
+                        sc["ratios"].append(ratio)
+                        sc["halved"][1] += 1
+                        sc["halved"][0] += ratio <= 0.5
             else:
-                cat = [h for h in hid if h in g.CATALOGUE]
+                cat = [x for x in hid if x in g.CATALOGUE]
+                sc["confusion"]["+".join(sorted(hid))][named] += 1
                 if len(cat) == 2:
-                    both[1] += 1
-                    both[0] += set(cat) <= set(c["findings"])
-    return top1, both, clean, ooc, confusion
+                    sc["both"][1] += 1
+                    sc["both"][0] += set(cat) <= set(c["findings"])
+    return sc
 
 
 def pct(a, b):
@@ -172,40 +201,77 @@ def pct(a, b):
 
 
 def report(rows):
-    top1, both, clean, ooc, confusion = score(rows)
+    sc = score(rows)
     errors = sum("error" in r.get("result", {}) for r in rows)
     print(f"records: {len(rows)}  (diagnose failed on {errors})")
+    top1 = sc["top1"]
     for k in sorted(x for x in top1 if x != "lsb"):
         print(f"top-1 correct, one effect at {k:4.1f}x base ADEV: {pct(*top1[k])}")
+    ge3 = [sum(top1[k][i] for k in top1 if k != "lsb" and k >= 3) for i in (0, 1)]
+    print(f"top-1 correct, one effect at >= 3x:             {pct(*ge3)}")
     print(f"top-1 correct, quantization (LSB 0.75-5 sd):    {pct(*top1['lsb'])}")
-    print(f"both effects found on two-effect channels:      {pct(*both)}")
-    print(f"false alarms on clean channels:                 {pct(*clean)}")
-    print(f"out-of-catalogue named as equivalent/unexplained: {pct(*ooc)}")
-    print("confusion (hidden -> first reported, 'none' = fits, 'unexplained' = misfit, no finding):")
-    for h in sorted(confusion):
-        print(f"  {h:18s} " + ", ".join(f"{k} {v}" for k, v in confusion[h].most_common()))
+    print(f"both effects found on two-effect channels:      {pct(*sc['both'])}")
+    print(f"false alarms on clean channels:                 {pct(*sc['clean'])}")
+    print(f"clean channels 'unexplained' (no finding):      {pct(*sc['clean_unexplained'])}")
+    print(f"out-of-catalogue named as equivalent/unexplained: {pct(*sc['ooc'])}")
+    if sc["halved"][1]:
+        rt = np.array(sc["ratios"])
+        print(f"misfit at least halved by the correct addition: {pct(*sc['halved'])} "
+              f"(after/before median {np.median(rt):.3f}, worst {rt.max():.3f})")
+    if sc["null_scores"]:
+        ns = np.array(sc["null_scores"])
+        print("best candidate score on clean channels: quantiles 50/90/99/max "
+              + " / ".join(f"{np.quantile(ns, q):.2f}" for q in (0.5, 0.9, 0.99, 1.0)))
+    print("top-1 by effect: " + ", ".join(f"{e} {a}/{b}" for e, (a, b) in sorted(sc["by_effect"].items())))
+    print("confusion (hidden -> first reported; 'none' = no finding, 'unexplained' = misfit left, no finding):")
+    for h in sorted(sc["confusion"]):
+        print(f"  {h:32s} " + ", ".join(f"{k} {v}" for k, v in sc["confusion"][h].most_common()))
+    return sc
+
+
+def run_one(a, i):
+    rng = np.random.default_rng([a.seed, i])
+    bases = a.bases.split(",") if a.bases else BASES
+    row = make(rng, i, a.work, a.max_samples, bases, a.null)
+    row["result"] = diagnose(a.sinsim, row, a)
+    if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in g.CATALOGUE:
+        res = row["result"].get(row["channel"], {})
+        if (res.get("findings") or [None])[0] == row["hidden"][0]["effect"]:
+            row["add"] = diagnose(a.sinsim, row, a, f'{row["hidden"][0]["effect"]}:{row["channel"]}')
+    os.remove(row["record"])
+    return row
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("--records", type=int, default=60)
+    ap.add_argument("--first", type=int, default=0, help="index of the first record")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--sinsim", default="build/sinsim")
     ap.add_argument("--work", default="out/challenge")
     ap.add_argument("--max-samples", type=int, default=400000,
                     help="cap on samples per record (the full benchmark: 3e7)")
-    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--threads", type=int, default=1, help="of each diagnose")
+    ap.add_argument("--jobs", type=int, default=2, help="records diagnosed at once")
+    ap.add_argument("--realisations", type=int, default=32)
+    ap.add_argument("--threshold", type=float, default=None, help="diagnose --threshold")
+    ap.add_argument("--bases", default="", help="comma list of base families (default: all)")
+    ap.add_argument("--null", action="store_true", help="no hidden effects (threshold calibration)")
+    ap.add_argument("--add", action="store_true",
+                    help="also add the correct effect where it came first: misfit after / before")
+    ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",
+                    help="only print the scores of earlier runs' results.json files, pooled")
     a = ap.parse_args()
+    if a.report:
+        report([row for path in a.report for row in json.load(open(path))])
+        return
     os.makedirs(a.work, exist_ok=True)
     rows = []
-    for i in range(a.records):
-        rng = np.random.default_rng([a.seed, i])
-        row = make(rng, i, a.work, a.max_samples)
-        row["result"] = diagnose(a.sinsim, row, a.threads)
-        rows.append(row)
-        print(f"\r{i + 1}/{a.records} records", end="", file=sys.stderr, flush=True)
-        for suffix in (".csv",):
-            os.remove(row["record"][:-4] + suffix)
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(max_workers=a.jobs) as ex:
+        for row in ex.map(lambda i: run_one(a, i), range(a.first, a.first + a.records)):
+            rows.append(row)
+            print(f"\r{len(rows)}/{a.records} records", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
     with open(os.path.join(a.work, "results.json"), "w") as f:
         json.dump(rows, f, indent=1, default=float)

@@ -14,6 +14,9 @@ namespace sinsim::errormodels::diagnose::detail {
 struct Candidate {
   std::string effect;          // catalogue type
   bool freeSize = true;        // theta fitted >= 0 (g per unit theta) or fixed (g absolute AVAR)
+  /// Parameters the effect adds to the model (the criterion's penalty counts them): a GM's
+  /// sigma and tau, a sinusoid's amplitude, frequency and phase, ...
+  std::size_t parameters = 1;
   std::vector<double> g;       // AVAR contribution at each tau [SI^2]
   double zSpecial = 0.0;       // its own test, Gaussian-equivalent
   /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.

@@ -7,7 +7,7 @@ namespace sinsim::errormodels::diagnose::detail {
 
 const std::vector<DetectorType>& detectorTypes() {
   static const std::vector<DetectorType> types = {
-#define SINSIM_DETECTOR(effect, summary) {#effect, summary, &detect_##effect},
+#define SINSIM_DETECTOR(effect, repeatable, summary) {#effect, repeatable, summary, &detect_##effect},
 #include "errormodels/diagnose/detectors.def"
 #undef SINSIM_DETECTOR
   };
@@ -31,7 +31,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
                             isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration()};
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
-    if (std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end()) continue;
+    if (!d.repeatable && std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end())
+      continue;
     for (auto& c : d.detect(ctx)) out.push_back(std::move(c));
   }
   return out;

@@ -7,10 +7,10 @@
 //
 // To add a detector: write detectors/<effect>.cpp defining
 //   std::vector<Candidate> detect_<effect>(const DetectorContext& ctx)
-// and add one line SINSIM_DETECTOR(<effect>, "summary") to detectors.def. A candidate's describe
+// and add one line SINSIM_DETECTOR(<effect>, repeatable, "summary") to detectors.def. A candidate's describe
 // states the effect as an EffectSpec in SI, each size rounded (stated()) to the digits its
-// finding reports, so that the improved model holds what the report says. A detector is not run
-// on a channel whose model already has its effect (enabled).
+// finding reports, so that the improved model holds what the report says. A detector that is not
+// repeatable is not run on a channel whose model already has its effect (enabled).
 #pragma once
 
 #include <cstddef>
@@ -55,6 +55,7 @@ using DetectFn = std::vector<Candidate> (*)(const DetectorContext& ctx);
 
 struct DetectorType {
   const char* effect;   // the catalogue type it proposes
+  bool repeatable;      // runs where the model already has its effect (adds to it)
   const char* summary;  // what it looks for
   DetectFn detect;
 };
@@ -63,12 +64,12 @@ struct DetectorType {
 /// score keep it).
 const std::vector<DetectorType>& detectorTypes();
 
-/// The candidates of every detector whose effect is not among modelEffects.
+/// The candidates of every detector that is repeatable or whose effect is not among modelEffects.
 std::vector<Candidate> buildCandidates(const Record& record, int channel,
                                        const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects);
 
-#define SINSIM_DETECTOR(effect, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
+#define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"
 #undef SINSIM_DETECTOR
 

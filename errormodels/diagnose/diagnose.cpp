@@ -100,8 +100,11 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
-  if (auto a = baseAr(model, c, record.rate_hz))
+  if (auto a = baseAr(model, c, record.rate_hz)) {
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
+    w.y = &y;
+    w.arOrder = a->size() - 1;
+  }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
   w.cands = buildCandidates(record, c, d.adev.x, setup, effectTypesOn(model, sensor, c % 3));
   selectFindings(w, o.threshold);

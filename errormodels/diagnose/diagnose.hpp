@@ -26,12 +26,14 @@
 //   chi2      r' C^-1 r, r = ln AVAR_meas - ln AVAR_model, C the covariance of ln AVAR estimates
 //             from the realisations (per-tau variances, correlation averaged along the octave
 //             diagonals, times 1 + 1/R for the Monte Carlo mean's own error).
-//   score     Gaussian-equivalent significance of a candidate: sqrt(chi2 reduction) when the
-//             candidate's Allan contribution is added to the model (overall noise level s refitted
-//             too), or the look-elsewhere-corrected z of its own test (lattice of values, a PSD
-//             line, isolated samples), whichever is larger; capped at 40.
-//   findings  forward selection: the candidate with the largest score is accepted when its score
-//             >= threshold (default 8), the others are re-scored given it, and so on.
+//   drop      selection by trial: each candidate is added to the model (the level s and every
+//             free size refitted) and the fall of the penalised criterion
+//               chi2 + ln(points) x parameters - z^2 of the members' own tests
+//             (lattice, PSD line, one-sign increments, first step, isolated samples) is its drop.
+//   score     sqrt(max(0, drop)), capped at 40 (Gaussian-equivalent).
+//   findings  greedy: the largest drop is accepted when its score >= threshold (calibrated on
+//             null channels, docs/diagnose.md), the others are tried again given it, and so on;
+//             what the accepted ones leave outside the estimation scatter is `unexplained`.
 #pragma once
 
 #include <cstddef>
@@ -56,8 +58,10 @@ struct DiagnoseOptions {
   /// Two-sided level of the bands. 0.99: with ~30 tau points a perfect model leaves on average
   /// 0.3 outside (P(>= 3 outside) = 0.3 %), so "outside" means something.
   double bandLevel = 0.99;
-  /// Reporting threshold on the score (Gaussian-equivalent sigma); see the README for why 8.
-  double threshold = 8.0;
+  /// Reporting threshold on the score sqrt(drop of the penalised criterion): 5.5, above the
+  /// largest of 180 null channels (4.81) of the white + random walk + flicker family of the
+  /// challenge generator (docs/diagnose.md, "Threshold, calibrated on null channels").
+  double threshold = 5.5;
   /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
   double maxFactorFraction = 0.125;
   std::size_t psdSegment = 0;  ///< 0: min(4096, largest power of two <= N/8)
@@ -89,8 +93,9 @@ struct Finding {
   /// The effect as it is added to the model (SI); effectText() shows it in model-file syntax.
   EffectSpec spec;
   std::map<std::string, double> params;  ///< fitted parameters, SI
-  double score = 0.0;
-  bool reported = false;  ///< score >= threshold (accepted by the forward selection)
+  double score = 0.0;     ///< sqrt(max(0, drop)), capped at 40: Gaussian-equivalent
+  double drop = 0.0;      ///< fall of the penalised criterion when the effect is added (trial)
+  bool reported = false;  ///< score >= threshold (accepted by the selection by trial)
 };
 
 struct LjungBox {
@@ -114,6 +119,11 @@ struct AxisDiagnosis {
   /// Every candidate considered: reported ones first in acceptance order, then the rest by score.
   std::vector<Finding> findings;
   double noiseScale = 1.0;  ///< variance factor s fitted with the reported findings
+  double chi2Selected = 0.0;  ///< Allan chi2 of the model with the reported findings (refitted)
+  /// The longest tau range the model with its reported findings still misses (residual beyond
+  /// 2.58 sigma on one side, >= 2 points, remaining chi2 above its 0.999 quantile): what no
+  /// candidate explains. Empty when the remaining misfit is within the estimation scatter.
+  std::optional<FailRange> unexplained;
   bool fits(double threshold) const;  ///< no reported finding and chi2 below its 0.999 quantile
 };
 

@@ -18,13 +18,15 @@ nlohmann::json curveJson(const Comparison& c, const char* xname) {
   return j;
 }
 
+nlohmann::json failJson(const FailRange& f) {
+  return {{"statistic", f.statistic}, {"from", f.from}, {"to", f.to},
+          {"unit", f.statistic == "adev" ? "s" : "Hz"}, {"direction", f.direction > 0 ? "above" : "below"},
+          {"worst_ratio", f.worstRatio}, {"points", f.points}};
+}
+
 nlohmann::json failsJson(const std::vector<FailRange>& fails) {
   nlohmann::json j = nlohmann::json::array();
-  for (const auto& f : fails)
-    j.push_back({{"statistic", f.statistic}, {"from", f.from}, {"to", f.to},
-                 {"unit", f.statistic == "adev" ? "s" : "Hz"},
-                 {"direction", f.direction > 0 ? "above" : "below"},
-                 {"worst_ratio", f.worstRatio}, {"points", f.points}});
+  for (const auto& f : fails) j.push_back(failJson(f));
   return j;
 }
 
@@ -33,7 +35,7 @@ nlohmann::json findingsJson(const AxisDiagnosis& a) {
   for (const auto& f : a.findings)
     j.push_back({{"effect", f.effect}, {"evidence", f.evidence}, {"size", f.size},
                  {"yaml", effectText(f.spec, a.channel)}, {"params", f.params}, {"score", f.score},
-                 {"reported", f.reported}});
+                 {"drop", f.drop}, {"reported", f.reported}});
   return j;
 }
 
@@ -48,6 +50,8 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   j["chi2_points"] = a.chi2Points;
   j["noise_scale"] = a.noiseScale;
   j["fits"] = a.fits(threshold);
+  j["chi2_selected"] = a.chi2Selected;
+  j["unexplained"] = a.unexplained ? failJson(*a.unexplained) : nlohmann::json(nullptr);
   if (a.ljungBox)
     j["ljung_box"] = {{"lags", a.ljungBox->lags}, {"dof", a.ljungBox->dof}, {"Q", a.ljungBox->Q},
                       {"p", a.ljungBox->pValue}};

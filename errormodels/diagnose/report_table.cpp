@@ -22,6 +22,7 @@ std::string findingsText(const AxisDiagnosis& a, double threshold) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "" : ", ") + f.effect + " (" + num(f.score, 3) + ")";
+  if (a.unexplained) s += std::string(s.empty() ? "" : ", ") + "unexplained";
   if (s.empty()) s = a.fits(threshold) ? "fits" : "no effect above threshold";
   return s;
 }
@@ -39,6 +40,10 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   if (head) o << "\n";
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
+  if (const auto& u = a.unexplained)
+    o << "  " << a.channel << " unexplained: ADEV " << num(u->from, 3) << ".." << num(u->to, 3) << " s "
+      << (u->direction > 0 ? "above" : "below") << " the model with its findings (x" << num(u->worstRatio, 3)
+      << "); no candidate of the catalogue lowers the criterion there\n";
 }
 
 }  // namespace

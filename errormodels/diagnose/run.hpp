@@ -17,6 +17,12 @@ struct ChannelWork {
   std::vector<Candidate> cands;
   std::vector<std::size_t> accepted;  // indices into cands, in acceptance order
   AllanSolution sol;                  // the joint fit of the accepted ones
+  /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal
+  /// (selection.cpp): the channel's samples, the AR order (0: no AR base), the accepted signals'
+  /// sum and the closed-form AVAR of the AR refitted on the record without them.
+  const std::vector<double>* y = nullptr;
+  std::size_t arOrder = 0;
+  std::vector<double> removed, baseAvar;
 };
 
 struct Run {

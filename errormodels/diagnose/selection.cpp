@@ -1,4 +1,4 @@
-// Forward selection of the candidates by score (selection.hpp).
+// Selection of the candidates by trial (selection.hpp).
 #include "errormodels/diagnose/selection.hpp"
 
 #include <algorithm>
@@ -7,46 +7,79 @@
 #include <string>
 
 #include "errormodels/diagnose/significance.hpp"
+#include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
-/// Each candidate's last trial fit (with the accepted ones) and its score.
+/// Each candidate's last trial fit (with the accepted ones), its drop of the criterion and score.
 struct Trials {
-  std::vector<double> score, dchi;
+  std::vector<double> score, drop;
   std::vector<AllanSolution> sol;
 };
 
-/// Scores every candidate whose effect is not accepted yet against the current fit: the larger of
-/// sqrt(chi2 reduction) and its own tests, capped. Returns the best, or -1 when none is left.
-std::ptrdiff_t scoreRound(const ChannelWork& w, Trials& t) {
+/// The candidate's own test (lattice, PSD line, one-sign increments, first step, largest
+/// residual) as a chi-square(1) term of the criterion: z^2 of its Gaussian-equivalent z.
+double ownEvidence(const Candidate& c, const std::vector<double>& currentAvar) {
+  double z = c.zSpecial;
+  if (c.zConditional) z = std::max(z, c.zConditional(currentAvar));
+  return z * z;
+}
+
+/// Closed-form AVAR on the tau grid of the AR base re-estimated (Burg, its order) on the record
+/// without w.removed and without `signal` (may be empty).
+std::vector<double> refittedBaseAvar(const ChannelWork& w, const std::vector<double>& signal) {
+  std::vector<double> x = *w.y;
+  for (std::size_t k = 0; k < x.size(); ++k)
+    x[k] -= (w.removed.empty() ? 0.0 : w.removed[k]) + (signal.empty() ? 0.0 : signal[k]);
+  const auto ar = fit::burg(x, w.arOrder);
+  return fit::arAllanVariance(ar.a, ar.drivingVariance, w.factors);
+}
+
+/// The problem of a trial: for an AR base and a candidate with a signal, the model's AVAR scaled
+/// by what re-estimating the base on the record without the signal does to it (the base's free
+/// parameters refitted: a base fitted to a record with a ramp is bent by it, and only the refit
+/// shows how much of the misfit the ramp explains); otherwise the current problem.
+AllanProblem trialProblem(const ChannelWork& w, const Candidate& c, std::vector<double>* trialAvar) {
+  if (w.arOrder == 0 || c.signal.empty()) return w.prob;
+  AllanProblem p = w.prob;
+  const auto av = refittedBaseAvar(w, c.signal);
+  for (std::size_t k = 0; k < p.mu.size(); ++k)
+    if (w.baseAvar[k] > 0 && av[k] > 0) p.mu[k] *= av[k] / w.baseAvar[k];
+  if (trialAvar) *trialAvar = av;
+  return p;
+}
+
+/// Trial of every candidate whose effect is not accepted yet: added to the current set, the
+/// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
+/// parameters. Returns the best, or -1 when none is left.
+std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const std::string& only = "") {
   std::set<std::string> taken;
   std::vector<const Candidate*> set;
   for (auto i : w.accepted) taken.insert(w.cands[i].effect), set.push_back(&w.cands[i]);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
-    if (taken.count(w.cands[i].effect)) continue;
+    if (taken.count(w.cands[i].effect) || !(only.empty() || w.cands[i].effect == only)) continue;
     auto trial = set;
     trial.push_back(&w.cands[i]);
     auto start = w.sol.theta;
     start.push_back(-1.0);
-    t.sol[i] = solveAllan(w.prob, trial, start);
-    t.dchi[i] = w.sol.chi2 - t.sol[i].chi2;
-    double z = std::max(std::sqrt(std::max(0.0, t.dchi[i])), w.cands[i].zSpecial);
-    if (w.cands[i].zConditional) z = std::max(z, w.cands[i].zConditional(currentAvar));
-    t.score[i] = std::min(kMaxScore, z);
-    if (best < 0 || t.score[i] > t.score[std::size_t(best)] ||
-        (t.score[i] == t.score[std::size_t(best)] && t.dchi[i] > t.dchi[std::size_t(best)]))
-      best = std::ptrdiff_t(i);
+    t.sol[i] = solveAllan(trialProblem(w, w.cands[i], nullptr), trial, start);
+    t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + ownEvidence(w.cands[i], currentAvar) -
+                penalty * double(w.cands[i].parameters);
+    t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
+    if (best < 0 || t.drop[i] > t.drop[std::size_t(best)]) best = std::ptrdiff_t(i);
   }
   return best;
 }
 
-/// One finding per effect not accepted (its best-scoring variant), by score.
+/// One finding per effect not accepted (its best variant), by score.
 std::vector<Finding> otherFindings(const ChannelWork& w, const Trials& t) {
   std::vector<Finding> rest;
+  std::vector<double> drops;
   std::set<std::string> taken;
   for (auto i : w.accepted) taken.insert(w.cands[i].effect);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
@@ -55,43 +88,108 @@ std::vector<Finding> otherFindings(const ChannelWork& w, const Trials& t) {
     f.effect = w.cands[i].effect;
     f.evidence = w.cands[i].evidence;
     f.score = t.score[i];
+    f.drop = t.drop[i];
     w.cands[i].describe(t.sol[i].theta.empty() ? 0.0 : t.sol[i].theta.back(), f);
     auto it = std::find_if(rest.begin(), rest.end(), [&](const Finding& g) { return g.effect == f.effect; });
     if (it == rest.end()) rest.push_back(f);
-    else if (f.score > it->score) *it = f;
+    else if (f.drop > it->drop) *it = f;
   }
-  std::stable_sort(rest.begin(), rest.end(), [](const Finding& a, const Finding& b) { return a.score > b.score; });
+  std::stable_sort(rest.begin(), rest.end(), [](const Finding& a, const Finding& b) { return a.drop > b.drop; });
   return rest;
+}
+
+/// The longest run of tau points (>= 2) whose residual under the final fit lies beyond the 99 %
+/// two-sided limit of its own estimation scatter on one side, when the remaining chi2 exceeds its
+/// 0.999 quantile: what no candidate explained.
+std::optional<FailRange> unexplainedRange(const ChannelWork& w, const std::vector<const Candidate*>& set) {
+  const std::size_t K = w.prob.L.size();
+  if (K < 3 || !(w.sol.chi2 > chiSquareQuantile(0.999, double(K)))) return std::nullopt;
+  const Eigen::VectorXd var = w.prob.W.inverse().diagonal();
+  const auto M = modelAvarOf(w.prob, set, w.sol);
+  std::vector<double> r(K);
+  std::vector<int> side(K, 0);
+  for (std::size_t k = 0; k < K; ++k) {
+    r[k] = w.prob.L[k] - w.prob.bias[k] - std::log(std::max(M[k], 1e-300));
+    const double z = r[k] / std::sqrt(std::max(var[Eigen::Index(k)], 1e-300));
+    side[k] = z > 2.576 ? 1 : (z < -2.576 ? -1 : 0);
+  }
+  std::optional<FailRange> best;
+  for (std::size_t a = 0; a < K;) {
+    std::size_t b = a;
+    while (b < K && side[b] != 0 && side[b] == side[a]) ++b;
+    if (b - a >= 2 && (!best || b - a > best->points)) {
+      FailRange f;
+      f.statistic = "adev";
+      f.from = w.d.adev.x[a], f.to = w.d.adev.x[b - 1];
+      f.direction = side[a];
+      f.points = b - a;
+      for (std::size_t k = a; k < b; ++k) {
+        const double ratio = std::exp(0.5 * r[k]);  // of the deviations
+        if (std::fabs(std::log(ratio)) > std::fabs(std::log(f.worstRatio))) f.worstRatio = ratio;
+      }
+      best = f;
+    }
+    a = b > a ? b : a + 1;
+  }
+  return best;
 }
 
 }  // namespace
 
+double criterionPenalty(std::size_t points) { return std::log(double(std::max<std::size_t>(points, 2))); }
+
 void selectFindings(ChannelWork& w, double threshold) {
   AxisDiagnosis& d = w.d;
+  const double penalty = criterionPenalty(w.prob.L.size());
   w.sol = solveAllan(w.prob, {});
+  if (w.arOrder > 0) w.baseAvar = refittedBaseAvar(w, {});
   Trials t;
   t.score.assign(w.cands.size(), 0.0);
-  t.dchi.assign(w.cands.size(), 0.0);
+  t.drop.assign(w.cands.size(), 0.0);
   t.sol.resize(w.cands.size());
+  // With a temperature column the temperature is tried first (issue 12: "regress on it first"):
+  // a thermal drift has the shape of the record's temperature in time, which a warm-up, a ramp or
+  // a random walk can imitate; when the temperature alone passes the threshold it is taken before
+  // them, and they are tried on what it leaves.
+  bool temperatureRound = std::any_of(w.cands.begin(), w.cands.end(),
+                                      [](const Candidate& c) { return c.effect == "temperature"; });
   for (;;) {
-    const std::ptrdiff_t best = scoreRound(w, t);
-    if (best < 0 || t.score[std::size_t(best)] < threshold) break;
+    std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
+    if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold)) {
+      temperatureRound = false;
+      best = trialRound(w, penalty, t);
+    }
+    temperatureRound = false;
+    if (best < 0 || t.drop[std::size_t(best)] < threshold * threshold) break;
     Finding f;
     f.effect = w.cands[std::size_t(best)].effect;
     f.score = t.score[std::size_t(best)];
+    f.drop = t.drop[std::size_t(best)];
     f.reported = true;
+    const Candidate& c = w.cands[std::size_t(best)];
+    if (w.arOrder > 0 && !c.signal.empty()) {  // the base refitted without it from now on
+      std::vector<double> av;
+      w.prob = trialProblem(w, c, &av);
+      w.baseAvar = av;
+      w.removed.resize(c.signal.size(), 0.0);
+      for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
+    }
     w.accepted.push_back(std::size_t(best));
     w.sol = t.sol[std::size_t(best)];
     d.findings.push_back(f);
   }
   // Sizes of the reported ones from the final joint fit.
+  std::vector<const Candidate*> set;
   for (std::size_t j = 0; j < w.accepted.size(); ++j) {
     const auto& cand = w.cands[w.accepted[j]];
+    set.push_back(&cand);
     Finding& f = d.findings[j];
     f.evidence = cand.evidence;
     cand.describe(w.sol.theta[j], f);
   }
   d.noiseScale = w.sol.s;
+  d.chi2Selected = w.sol.chi2;
+  d.unexplained = unexplainedRange(w, set);
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
 }
 

@@ -1,14 +1,23 @@
-// Step 3 of the diagnosis: forward selection of the candidates (diagnose.hpp, "score" and
-// "findings").
+// Step 3 of the diagnosis: selection of the candidates by trial (diagnose.hpp, "score" and
+// "findings"; docs/diagnose.md, "Selection by trial").
 #pragma once
+
+#include <cstddef>
 
 #include "errormodels/diagnose/run.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
-/// From w.prob and w.cands: accepts the best-scoring candidate while its score >= threshold
-/// (w.accepted, w.sol), then fills w.d.findings (the accepted ones with sizes from the final joint
-/// fit, then one per other effect, its best variant, by score) and w.d.noiseScale.
+/// Penalty per fitted parameter of the criterion: ln(points), BIC's (Schwarz 1978) for the Allan
+/// points of the channel.
+double criterionPenalty(std::size_t points);
+
+/// From w.prob and w.cands, greedily: every candidate not yet accepted is added in trial to the
+/// accepted set, the level and all free sizes refitted (solveAllan), and its drop of the criterion
+///   chi2 (Allan GLS) + penalty x parameters - sum of z^2 of the members' own tests
+/// computed; the largest drop is accepted while drop >= threshold^2 (w.accepted, w.sol). Then fills
+/// w.d.findings (the accepted ones with sizes from the final joint fit, then one per other effect,
+/// its best variant, by drop), w.d.noiseScale, w.d.chi2Selected and w.d.unexplained.
 void selectFindings(ChannelWork& w, double threshold);
 
 }  // namespace sinsim::errormodels::diagnose::detail

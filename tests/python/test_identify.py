@@ -108,6 +108,6 @@ def test_record_dict_errors_name_the_key():
 def test_diagnose_finds_nothing_missing_in_the_true_model(record):
     rec, _ = record
     d = sinsim.diagnose(rec, sinsim.Model(TRUE_MODEL), channels=["gx"], realisations=8, seed=3)
-    # The record was drawn from this very model: no effect can be missing at the 8-sigma
-    # reporting threshold (docs/diagnose.md).
+    # The record was drawn from this very model: no effect can be missing at the calibrated
+    # reporting threshold (5.5, docs/diagnose.md).
     assert [f["effect"] for f in d["gx"]["findings"] if f["reported"]] == []

@@ -76,6 +76,7 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   Candidate c;
   c.effect = "outliers";
   c.freeSize = false;
+  c.parameters = 2;  // rate and amplitude
   c.g = allanVariance(sig, ctx.setup);
   c.signal = sig;
   // p of the largest |z| among N Gaussian residuals (Bonferroni).

@@ -115,6 +115,7 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   Candidate c;
   c.effect = "sinusoid";
   c.freeSize = false;
+  c.parameters = 3;  // amplitude, frequency, phase
   c.g = allanVariance(sig, ctx.setup);
   c.signal = sig;
   c.zSpecial = lineZ;

@@ -73,6 +73,7 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
     Candidate c;
     c.effect = "temperature";
     c.freeSize = false;
+    c.parameters = std::size_t(degree);
     c.g = allanVariance(sig, ctx.setup);
     c.signal = sig;
     c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +

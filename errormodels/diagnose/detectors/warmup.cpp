@@ -86,6 +86,7 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   Candidate c;
   c.effect = "warmup";
   c.freeSize = false;
+  c.parameters = 2;  // amplitude and time constant
   c.g = allanVariance(w, ctx.setup);
   c.signal = w;
   double tStart = 0;

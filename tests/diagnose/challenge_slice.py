@@ -1,0 +1,63 @@
+#!/usr/bin/python3
+"""A small seeded slice of the diagnosis challenge (bench/diagnose_challenge) as a test.
+
+Records made by the NumPy generator (no sinsim code), diagnosed by `sinsim diagnose` at the default
+(calibrated) threshold. The bounds are statistical: each is the count that a diagnosis meeting the
+issue's floors would miss with probability < 1 % (binomial tail), so a failure means the rate is
+worse than the floor, not bad luck of this seed.
+
+    challenge_slice.py SINSIM WORKDIR
+"""
+import math
+import os
+import sys
+from types import SimpleNamespace
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "diagnose_challenge"))
+import challenge  # noqa: E402
+
+RECORDS = 16
+
+
+def binom_cdf(k, n, p):
+    return sum(math.comb(n, i) * p ** i * (1 - p) ** (n - i) for i in range(k + 1))
+
+
+def max_allowed(n, p, alpha=0.01):
+    """Largest count c with P(X > c) < alpha for X ~ Binomial(n, p)."""
+    c = 0
+    while 1 - binom_cdf(c, n, p) >= alpha:
+        c += 1
+    return c
+
+
+def min_required(n, p, alpha=0.01):
+    """Smallest count c with P(X < c) < alpha for X ~ Binomial(n, p)."""
+    c = n
+    while c > 0 and binom_cdf(c - 1, n, p) >= alpha:
+        c -= 1
+    return c
+
+
+def main():
+    sinsim, work = sys.argv[1], sys.argv[2]
+    os.makedirs(work, exist_ok=True)
+    a = SimpleNamespace(seed=12, work=work, max_samples=20000, bases="", null=False, add=False,
+                        sinsim=sinsim, threads=1, realisations=16, threshold=None)
+    rows = [challenge.run_one(a, i) for i in range(RECORDS)]
+    sc = challenge.report(rows)
+    errors = sum("error" in r.get("result", {}) for r in rows)
+    fa, clean = sc["clean"]
+    ge3 = [sum(sc["top1"][k][i] for k in sc["top1"] if k != "lsb" and k >= 3) for i in (0, 1)]
+    # Floors of issue 12: false alarms <= 2 % per clean channel; top-1 >= 90 % at >= 3x.
+    fa_max = max_allowed(clean, 0.02)
+    top_min = min_required(ge3[1], 0.90)
+    print(f"diagnose errors {errors}; false alarms {fa}/{clean} (allowed <= {fa_max}); "
+          f"top-1 at >= 3x {ge3[0]}/{ge3[1]} (required >= {top_min})")
+    ok = errors == 0 and fa <= fa_max and ge3[0] >= top_min and clean >= 60 and ge3[1] >= 3
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
