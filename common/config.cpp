@@ -321,17 +321,23 @@ std::optional<double> ConfigNode::asQuantity(Dimension expected) const {
     error(e.what());
     return std::nullopt;
   }
-  if (!(std::abs(v) <= limits::kMaxQuantity)) {
-    error("\"" + limits::echo(*s) + "\" is beyond any physical value here (|x| <= " +
-          limits::fmt(limits::kMaxQuantity) + " " + expected.siUnit() + "; docs/limits.md)");
-    return std::nullopt;
-  }
-  if (expected == Dimension::frequency() && v > limits::kMaxRate) {
-    error("\"" + limits::echo(*s) + "\" is faster than any IMU or process rate (at most " +
-          limits::fmt(limits::kMaxRate) + " Hz; docs/limits.md)");
-    return std::nullopt;
-  }
+  if (!checkPhysical(v, expected)) return std::nullopt;
   return v;
+}
+
+bool ConfigNode::checkPhysical(double si, Dimension dim) const {
+  const std::string text = limits::echo(node_.IsScalar() ? node_.Scalar() : std::string());
+  if (!(std::abs(si) <= limits::kMaxQuantity)) {
+    error("\"" + text + "\" is beyond any physical value here (|x| <= " +
+          limits::fmt(limits::kMaxQuantity) + " " + dim.siUnit() + "; docs/limits.md)");
+    return false;
+  }
+  if (dim == Dimension::frequency() && si > limits::kMaxRate) {
+    error("\"" + text + "\" is faster than any IMU or process rate (at most " +
+          limits::fmt(limits::kMaxRate) + " Hz; docs/limits.md)");
+    return false;
+  }
+  return true;
 }
 
 std::optional<double> ConfigNode::asNumber() const {

@@ -55,8 +55,8 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   std::vector<std::size_t> timeEpochs;
   for (double t : opt.times) {
     if (!(std::isfinite(t) && t >= 0 && t <= ref.epochTime(ref.epochs() - 1) + 1e-9))
-      throw InputError("report time " + std::to_string(t) + " s is outside the run (0 to " +
-                       std::to_string(ref.epochTime(ref.epochs() - 1)) + " s)");
+      throw InputError("--times: report time " + limits::fmt(t) + " s is outside the run (0 to " +
+                       limits::fmt(ref.epochTime(ref.epochs() - 1)) + " s)");
     timeEpochs.push_back(std::size_t(std::llround(t * ref.outputRate)));
   }
   if (timeEpochs.empty()) timeEpochs.push_back(ref.epochs() - 1);
