@@ -114,7 +114,7 @@ namespace detail {
 
 Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& o) {
   if (o.realisations < 8 || o.realisations > 100000)
-    throw InputError("--realisations: from 8 to 100000 Monte Carlo realisations, got " +
+    throw InputError("--realisations: at least 8 and at most 100000 Monte Carlo realisations, got " +
                      std::to_string(o.realisations));
   if (!(std::isfinite(o.threshold) && o.threshold > 0))
     throw InputError("--threshold: expected a positive score");
