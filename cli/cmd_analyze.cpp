@@ -1,5 +1,6 @@
 // sinsim analyze DATA [--json OUT] [--html OUT]: per-axis statistics of a measured record (ACF,
 // Welch PSD, Allan deviation with confidence bounds) as JSON for scripting and as an HTML report.
+#include <cmath>
 #include <iostream>
 #include <string>
 
@@ -7,6 +8,7 @@
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/analysis.hpp"
 
@@ -18,8 +20,8 @@ struct AnalyzeArgs {
   std::string json_out;
   std::string html_out;
   RecordArgs record;
-  double max_lag_s = 0;
-  std::size_t segment = 0;
+  double max_lag_s = 0;  // 0: default
+  long long segment = 0;  // 0: default
   std::string tau = "octave";
   double confidence = 0.683;
   std::string denoise = "none";
@@ -32,14 +34,23 @@ int runAnalyze(const AnalyzeArgs& a) {
     throw InputError("--denoise: expected db5 or none, got \"" + a.denoise + "\"");
   if (a.tau != "octave" && a.tau != "decade")
     throw InputError("--tau: expected octave or decade, got \"" + a.tau + "\"");
+  if (!(std::isfinite(a.max_lag_s) && a.max_lag_s >= 0 && a.max_lag_s <= limits::kMaxDuration))
+    throw InputError("--max-lag: expected a lag from 0 to " + limits::fmt(limits::kMaxDuration) +
+                     " s, got " + limits::fmt(a.max_lag_s));
+  if (a.segment < 0) throw InputError("--segment: expected a positive number of samples");
+  if (!(a.confidence > 0 && a.confidence < 1))
+    throw InputError("--confidence: expected a level in (0, 1), got " + limits::fmt(a.confidence));
   sim::AnalysisOptions opt;
   opt.max_lag_s = a.max_lag_s;
-  opt.segment = a.segment;
+  opt.segment = static_cast<std::size_t>(a.segment);
   opt.tauPerDecade = a.tau == "decade";
   opt.confidence = a.confidence;
   opt.denoise = a.denoise == "db5";
   opt.fullJson = a.fullJson;
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
+  if (a.segment > 0 && static_cast<std::size_t>(a.segment) > rec.size())
+    throw InputError("--segment: " + std::to_string(a.segment) + " samples, longer than the " +
+                     std::to_string(rec.size()) + "-sample record " + a.data);
   const std::vector<sim::ChannelStats> stats = sim::analyzeRecord(rec, opt);
   sim::writeAnalysis(rec, stats, opt, a.json_out, a.html_out);
   endProgressLine();

@@ -13,6 +13,7 @@
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/units.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/stats/record.hpp"
@@ -28,7 +29,7 @@ struct FitArgs {
   int denoise_level = -1;
   bool ar_on_denoised = false;
   RecordArgs record;
-  std::size_t max_order = 20;
+  long long max_order = 20;
   std::string nav_step = "10 ms";
   bool quiet = false;
 };
@@ -87,12 +88,16 @@ int runFit(const FitArgs& a) {
       p = std::stoll(a.order, &used);
     } catch (const std::exception&) {
     }
-    if (used != a.order.size() || p < 1)
-      throw InputError("--order: expected a positive integer or auto, got \"" + a.order + "\"");
+    if (used != a.order.size() || p < 1 || p > limits::kMaxArOrder)
+      throw InputError("--order: expected an integer from 1 to " +
+                       std::to_string(limits::kMaxArOrder) + " or auto, got \"" +
+                       limits::echo(a.order) + "\"");
     opt.order = static_cast<std::size_t>(p);
   }
-  if (a.max_order < 1) throw InputError("--max-order: expected a positive integer");
-  opt.maxOrder = std::max(a.max_order, opt.order.value_or(0));  // the table covers a forced order
+  if (a.max_order < 1 || a.max_order > limits::kMaxArOrder)
+    throw InputError("--max-order: expected an integer from 1 to " +
+                     std::to_string(limits::kMaxArOrder) + " (docs/limits.md)");
+  opt.maxOrder = std::max(static_cast<std::size_t>(a.max_order), opt.order.value_or(0));  // the table covers a forced order
   opt.criterion = errormodels::orderCriterionByName(a.criterion);
   if (a.denoise == "db5") opt.denoise = errormodels::DenoiseChoice::Db5;
   else if (a.denoise != "none")
@@ -103,10 +108,12 @@ int runFit(const FitArgs& a) {
   if (a.denoise_mode == "hard") opt.denoiseOptions.mode = errormodels::ThresholdMode::Hard;
   else if (a.denoise_mode != "soft")
     throw InputError("--denoise-mode: expected soft or hard, got \"" + a.denoise_mode + "\"");
+  if (a.denoise_level != -1 && !(a.denoise_level >= 1 && a.denoise_level <= 30))
+    throw InputError("--denoise-level: expected a level from 1 to 30");
   opt.denoiseOptions.level = a.denoise_level;
   opt.arOnDenoised = a.ar_on_denoised;
   opt.axes = splitAxes(a.axes);
-  opt.navigationStep = parseQuantityAs(a.nav_step, Dimension::time());
+  opt.navigationStep = parseOptionQuantity(a.nav_step, Dimension::time(), "--nav-step");
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
 

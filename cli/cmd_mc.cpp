@@ -116,7 +116,7 @@ sim::MeasuredOptions measuredOptions(const Args& a) {
   o.record = recordOptions(a.record);
   o.lat = parseAngle(a.latitude, "--latitude");
   o.lon = parseAngle(a.longitude, "--longitude");
-  o.h = parseQuantityAs(a.height, Dimension::length());
+  o.h = parseOptionQuantity(a.height, Dimension::length(), "--height");
   if (!a.attitude.empty()) {
     const auto parts = splitList(a.attitude);
     if (parts.size() != 3) throw InputError("--attitude: expected roll,pitch,yaw");

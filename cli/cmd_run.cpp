@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/terminal.hpp"
 #include "common/error.hpp"
+#include "common/units.hpp"
 #include "sim/run.hpp"
 #include "sim/scenario.hpp"
 
@@ -43,7 +44,7 @@ void addRunCommand(CLI::App& app, Action& action) {
     std::string outDir;
     std::optional<std::uint64_t> seed;
     std::string model;
-    double biasWindow = 0.0;
+    std::string biasWindow;  // "30 s"; empty: none
     bool imu = false;
     std::string html;
   };
@@ -74,11 +75,19 @@ void addRunCommand(CLI::App& app, Action& action) {
       sim::RunOptions opt;
       opt.outDir = args->outDir.empty() ? (fs::path("out") / sc.name).string() : args->outDir;
       opt.seed = args->seed;
-      opt.biasWindow = args->biasWindow;
+      if (!args->biasWindow.empty())
+        opt.biasWindow = parseDuration(args->biasWindow, "--bias-window");
       if (!args->model.empty()) opt.model = args->model;
       opt.writeImu = args->imu;
       opt.htmlPath = args->html;
-      const sim::RunSummary s = sim::run(sc, opt);
+      const sim::RunSummary s = [&] {
+        try {
+          return sim::run(sc, opt);
+        } catch (const NumericalError& e) {  // "the navigation state became non-finite": say where
+          throw NumericalError(file + (opt.model ? " with model " + *opt.model : "") + ": " +
+                               e.what());
+        }
+      }();
       endProgressLine();
       std::string files;
       for (const std::string& f : s.files) files += (files.empty() ? "" : ", ") + f;

@@ -50,8 +50,8 @@ int runSynth(const SynthOptions& o) {
   spec.rate = o.rate;
   spec.duration = parseDuration(o.duration, "--duration");
   spec.key = {o.seed, o.run};
-  spec.lat = parseQuantityAs(o.latitude, Dimension::angle());
-  spec.h = parseQuantityAs(o.height, Dimension::length());
+  spec.lat = parseOptionQuantity(o.latitude, Dimension::angle(), "--latitude");
+  spec.h = parseOptionQuantity(o.height, Dimension::length(), "--height");
   spec.rpy = parseAttitude(o.attitude);
   const sim::TemperatureProfile temperature = sim::temperatureFromText(o.temperature, spec.duration);
   const long long n = sim::writeStaticRecord(model, spec, temperature, o.output);

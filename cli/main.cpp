@@ -1,7 +1,9 @@
 // sinsim — strapdown INS simulator and inertial-sensor error-model lab.
 // Exit codes: 0 success, 1 bad input or failed run (message on stderr), 2 bad command line,
 // 130 interrupted (Ctrl-C).
+#include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -24,6 +26,34 @@ int main(int argc, char** argv) {
   sinsim::cli::addRunCommand(app, action);
   sinsim::cli::addMcCommand(app, action);
   sinsim::cli::addSynthCommand(app, action);
+  // An empty argument ("" from an unset shell variable) would read as 0 or as "not given" (CLI11
+  // converts "" to a default): `--seed ""` ran with seed 0, `run ""` the default scenario.
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    const bool emptyValue = arg.empty() || (arg.rfind("--", 0) == 0 && arg.back() == '=');
+    if (!emptyValue) continue;
+    const std::string option = !arg.empty() ? arg.substr(0, arg.size() - 1)
+                               : k > 1 && argv[k - 1][0] == '-' ? std::string(argv[k - 1])
+                                                                : "argument " + std::to_string(k);
+    std::cerr << "sinsim: error: " << option << ": an empty value on the command line\n";
+    return 2;
+  }
+  // CLI11 reads an unsigned integer beyond 2^64 - 1 as 2^64 - 1 (and "-1" as 2^64 - 1): a seed or
+  // run index must be the number given.
+  for (int k = 1; k + 1 < argc; ++k) {
+    const std::string opt = argv[k];
+    if (opt != "--seed" && opt != "--run") continue;
+    const std::string v = argv[k + 1];
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
+    (void)x;
+    if (v.find_first_not_of("0123456789") != std::string::npos || errno == ERANGE) {
+      std::cerr << "sinsim: error: " << opt << ": expected an integer from 0 to "
+                << "18446744073709551615, got \"" << v.substr(0, 40) << "\"\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

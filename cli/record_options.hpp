@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/units.hpp"
 #include "errormodels/stats/record.hpp"
 
@@ -19,7 +20,7 @@ namespace sinsim::cli {
 struct RecordArgs {
   std::string gyroUnit;   // e.g. "deg/s"; empty: from the header, else rad/s
   std::string accelUnit;  // e.g. "g"; empty: from the header, else m/s^2
-  double rate = 0.0;      // [Hz]; 0: from the t column
+  std::string rate;       // "100" or "100 Hz"; empty: from the t column
   bool allowIrregular = false;
   std::string delimiter = "auto";
   std::string columns;   // "t=Time[ms],gx=GyroX[deg/s],..."
@@ -42,14 +43,19 @@ inline void addRecordOptions(CLI::App* c, RecordArgs& r) {
   c->add_option("--duration", r.duration, "use only this much of the record after --skip, e.g. \"1 h\"");
 }
 
-/// The loader's options; a negative or non-finite --rate is refused here.
+/// The loader's options; a --rate that is not a positive frequency is refused here (the loader
+/// checks its range).
 inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
-  if (!(std::isfinite(r.rate) && r.rate >= 0.0))
-    throw InputError("--rate: expected a positive sample rate in Hz, got " + std::to_string(r.rate));
   errormodels::RecordOptions ro;
+  if (!r.rate.empty()) {
+    const double rate = parseOptionQuantity(r.rate, Dimension::frequency(), "--rate", true);
+    if (!(rate > 0.0))
+      throw InputError("--rate: expected a positive sample rate, got \"" + limits::echo(r.rate) +
+                       "\"");
+    ro.rate_hz = rate;
+  }
   if (!r.gyroUnit.empty()) ro.gyro_unit = r.gyroUnit;
   if (!r.accelUnit.empty()) ro.accel_unit = r.accelUnit;
-  if (r.rate > 0.0) ro.rate_hz = r.rate;
   ro.allow_irregular_time = r.allowIrregular;
   ro.separator = errormodels::parseSeparator(r.delimiter);
   if (!r.columns.empty()) ro.columns = errormodels::parseColumnMapping(r.columns);

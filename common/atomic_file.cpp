@@ -27,6 +27,14 @@ std::FILE* openTemporary(const std::string& path, std::string& temp) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
     throw InputError("cannot write " + path + ": folder " + dir.string() + " does not exist");
+  // The rename at the end replaces whatever the name points at: a device (`-o /dev/null` run as
+  // root would turn /dev/null into a regular file), a pipe or a folder is refused first.
+  const fs::file_status st = fs::status(target, ec);
+  if (fs::is_directory(st))
+    throw InputError("cannot write " + path + ": it is a folder; give a file name");
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw InputError("cannot write " + path +
+                     ": it is a device, pipe or socket; sinsim writes regular files only");
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
                    std::to_string(counter++)))

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <yaml-cpp/eventhandler.h>
 
@@ -82,11 +83,26 @@ int nulLine(const std::string& text) {
 // the stack of a sanitizer build is not to be trusted with it.
 std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& name) {
   std::vector<Diagnostic> out;
-  std::vector<YAML::Node> stack{root};
+  // An entry with `leave` set closes a container: its position leaves the current path. yaml-cpp
+  // accepts an alias inside the node it names (`a: &a [*a]`), a cycle the walk would follow to
+  // the node budget (3 s of CPU under the sanitizers: fuzz_scenario); the positions of the
+  // containers on the path find it at once.
+  struct Entry {
+    YAML::Node node;
+    bool leave;
+  };
+  std::vector<Entry> stack{{root, false}};
+  std::unordered_set<int> onPath;  // text positions of the open containers (-1: built in code)
   std::size_t visits = 0;
   while (!stack.empty()) {
-    YAML::Node n = stack.back();
+    Entry e = stack.back();
     stack.pop_back();
+    const int pos = e.node.Mark().pos;
+    if (e.leave) {
+      onPath.erase(pos);
+      continue;
+    }
+    const YAML::Node& n = e.node;
     if (++visits > limits::kMaxYamlNodeVisits) {
       out.push_back({name, 0, "",
                      "the document expands (through its aliases) to more than " +
@@ -94,8 +110,16 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
                          " nodes; see docs/limits.md"});
       return out;
     }
+    if ((n.IsSequence() || n.IsMap()) && pos >= 0) {
+      if (!onPath.insert(pos).second) {
+        out.push_back({name, lineOf(n, 0), "",
+                       "an alias refers to a node that contains it (a structure without end)"});
+        return out;
+      }
+      stack.push_back({n, true});
+    }
     if (n.IsSequence()) {
-      for (std::size_t i = n.size(); i-- > 0;) stack.push_back(n[i]);
+      for (std::size_t i = n.size(); i-- > 0;) stack.push_back({n[i], false});
     } else if (n.IsMap()) {
       std::unordered_map<std::string, int> seen;  // key -> line; hashed: a map may be huge
       for (const auto& kv : n) {
@@ -109,7 +133,7 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
           out.push_back({name, line, limits::echo(it->first),
                          "duplicate key (first given at " + name + ":" +
                              std::to_string(it->second) + ")"});
-        stack.push_back(kv.second);
+        stack.push_back({kv.second, false});
       }
     }
   }
@@ -321,17 +345,23 @@ std::optional<double> ConfigNode::asQuantity(Dimension expected) const {
     error(e.what());
     return std::nullopt;
   }
-  if (!(std::abs(v) <= limits::kMaxQuantity)) {
-    error("\"" + limits::echo(*s) + "\" is beyond any physical value here (|x| <= " +
-          limits::fmt(limits::kMaxQuantity) + " " + expected.siUnit() + "; docs/limits.md)");
-    return std::nullopt;
-  }
-  if (expected == Dimension::frequency() && v > limits::kMaxRate) {
-    error("\"" + limits::echo(*s) + "\" is faster than any IMU or process rate (at most " +
-          limits::fmt(limits::kMaxRate) + " Hz; docs/limits.md)");
-    return std::nullopt;
-  }
+  if (!checkPhysical(v, expected)) return std::nullopt;
   return v;
+}
+
+bool ConfigNode::checkPhysical(double si, Dimension dim) const {
+  const std::string text = limits::echo(node_.IsScalar() ? node_.Scalar() : std::string());
+  if (!(std::abs(si) <= limits::kMaxQuantity)) {
+    error("\"" + text + "\" is beyond any physical value here (|x| <= " +
+          limits::fmt(limits::kMaxQuantity) + " " + dim.siUnit() + "; docs/limits.md)");
+    return false;
+  }
+  if (dim == Dimension::frequency() && si > limits::kMaxRate) {
+    error("\"" + text + "\" is faster than any IMU or process rate (at most " +
+          limits::fmt(limits::kMaxRate) + " Hz; docs/limits.md)");
+    return false;
+  }
+  return true;
 }
 
 std::optional<double> ConfigNode::asNumber() const {

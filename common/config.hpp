@@ -83,6 +83,9 @@ class ConfigNode {
 
   /// Records a problem at this node.
   void error(const std::string& message) const;
+  /// Is an SI value read from this node within limits::kMaxQuantity (and, for a frequency,
+  /// limits::kMaxRate)? Records the problem at this node if not. asQuantity checks it itself.
+  bool checkPhysical(double si, Dimension dim) const;
   /// Checks a condition on an already read value; records the message at this node if false.
   bool check(bool ok, const std::string& message) const;
 

@@ -39,8 +39,19 @@ constexpr double kMinSegmentDuration = 1e-5;
 /// Largest sample count of a simulated signal (duration × rate): ~4 min of a 2-core machine
 /// per 1e8 strapdown steps; 10 days at 100 Hz is 8.64e7.
 constexpr double kMaxSamples = 1e8;
-/// Largest number of segments after expanding every `repeat`.
-constexpr std::size_t kMaxSegments = 1000000;
+/// Largest number of segments after expanding every `repeat`: laying out and integrating a
+/// segment costs ~2 µs, and 1,000,000 segments from two nested repeats of a 100-byte file took
+/// 2.3 s of CPU before the first IMU sample (10 s under the sanitizers).
+constexpr std::size_t kMaxSegments = 100000;
+
+// ---- Error models ---------------------------------------------------------------------------
+/// Largest order of an AR effect, and of an AR fit (`sinsim fit --order/--max-order`): a fitted
+/// model must load back. 64 lags at 1 kHz reach 64 ms, beyond what an AR of raw IMU data resolves.
+constexpr int kMaxArOrder = 64;
+
+/// Largest number of effects in one error model (all sensors, axes and lists): a real model has
+/// a few per axis; 20,000 white-noise effects made `diagnose` run for minutes.
+constexpr std::size_t kMaxModelEffects = 1000;
 
 // ---- Motion ---------------------------------------------------------------------------------
 /// [m] Height range of a trajectory (below the Dead Sea floor to the edge of space).
@@ -49,13 +60,20 @@ constexpr double kMaxHeight = 1.0e5;
 /// [m/s] Highest speed of a trajectory (above orbital speed).
 constexpr double kMaxSpeed = 1.2e4;
 
+/// [K] Highest sensor temperature of a scenario's profile (1000 degC; sensors are specified to
+/// ~125 degC): `rate: 1e10 degC/s` reached 2e11 degC and ran.
+constexpr double kMaxTemperature = 1273.15;
+
 // ---- Records (CSV) --------------------------------------------------------------------------
-/// [bytes] Largest record text after decompression.
-constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 30;
+/// [bytes] Largest record text after decompression. With the values below (and the text's last
+/// doubling while it is read) a record stays under ~1.2 GB of memory; at 1 GiB a 1 MB gzip of one
+/// long line ended in std::bad_alloc under a 1.5 GB limit.
+constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 29;
 /// Largest number of columns of a record.
 constexpr std::size_t kMaxRecordColumns = 64;
-/// Largest number of cells (rows × columns): 8 bytes each in memory.
-constexpr std::size_t kMaxRecordCells = 100000000;
+/// Largest number of cells (rows × columns): 8 bytes each in memory (400 MB); 17 h of 8
+/// columns at 100 Hz.
+constexpr std::size_t kMaxRecordCells = 50000000;
 /// [characters] Longest field of a record (a double needs at most ~25).
 constexpr std::size_t kMaxFieldChars = 64;
 

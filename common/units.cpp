@@ -308,6 +308,18 @@ double parseQuantityAs(std::string_view text, Dimension expected) {
   return q.si;
 }
 
+double parseOptionQuantity(std::string_view text, Dimension expected, const std::string& option,
+                           bool plainIsSi) {
+  try {
+    Quantity q = parseQuantity(text);
+    if (plainIsSi && q.dim == Dimension::none()) q.dim = expected;
+    if (q.dim != expected) return parseQuantityAs(text, expected);  // its message
+    return q.si;
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
+}
+
 double parseDuration(std::string_view text, const std::string& option) {
   try {
     Quantity q = parseQuantity(text);

@@ -80,6 +80,11 @@ Quantity parseUnit(std::string_view unit);
 /// an example unit. A plain number is accepted only for a dimensionless expectation.
 double parseQuantityAs(std::string_view text, Dimension expected);
 
+/// A command-line option's quantity (parseQuantityAs; with `plainIsSi` a plain number is taken
+/// in SI units: "100" for --rate is 100 Hz). Must be finite; errors are prefixed with `option`.
+double parseOptionQuantity(std::string_view text, Dimension expected, const std::string& option,
+                           bool plainIsSi = false);
+
 /// A time option: "90" (seconds), "90 s", "10 min", "2 h"; >= 0. Errors are prefixed with
 /// `option` ("--duration: ...").
 double parseDuration(std::string_view text, const std::string& option);

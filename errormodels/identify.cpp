@@ -9,6 +9,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/number_text.hpp"
 #include "common/progress.hpp"
 #include "errormodels/channels.hpp"
@@ -56,7 +57,7 @@ IdentifyKind identifyKindByName(const std::string& name) {
   if (name == "allan") return IdentifyKind::Allan;
   if (name == "auto") return IdentifyKind::Auto;
   if (name == "latent") return IdentifyKind::Latent;
-  throw InputError("unknown model kind \"" + name + "\" (known: ar, gm, allan, auto, latent)");
+  throw InputError("--kind: unknown model kind \"" + name + "\" (known: ar, gm, allan, auto, latent)");
 }
 
 fit::OrderCriterion orderCriterionByName(const std::string& name) {
@@ -206,8 +207,11 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
     throw InputError(record.source + ": the record has no valid sample rate");
   if (!(std::isfinite(opt.skipStart) && opt.skipStart >= 0.0))
     throw InputError("skip: expected a non-negative time, got " + significant(opt.skipStart));
-  if (opt.order && *opt.order < 1) throw InputError("order: expected >= 1 (or auto)");
-  if (opt.maxOrder < 1) throw InputError("max order: expected >= 1");
+  const auto maxAr = static_cast<std::size_t>(limits::kMaxArOrder);
+  if (opt.order && !(*opt.order >= 1 && *opt.order <= maxAr))
+    throw InputError("order: expected 1 to " + std::to_string(maxAr) + " (or auto; docs/limits.md)");
+  if (!(opt.maxOrder >= 1 && opt.maxOrder <= maxAr))
+    throw InputError("max order: expected 1 to " + std::to_string(maxAr) + " (docs/limits.md)");
   if (opt.arOnDenoised && opt.denoise != DenoiseChoice::Db5)
     throw InputError("fitting the AR on denoised data needs denoising (db5)");
   if (!(opt.navigationStep > 0.0 && std::isfinite(opt.navigationStep)))
@@ -223,7 +227,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   } else {
     for (const auto& name : opt.axes) {
       const std::optional<int> c = findChannel(name);
-      if (!c) throw InputError("axis \"" + name + "\": expected one of " + kChannelList);
+      if (!c) throw InputError("--axes: axis \"" + name + "\": expected one of " + kChannelList);
       if (channelData(record, *c).empty())
         throw InputError(record.source + ": axis \"" + name + "\" is not in the record");
       if (std::find(chans.begin(), chans.end(), *c) != chans.end())

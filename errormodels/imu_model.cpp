@@ -174,7 +174,10 @@ std::unique_ptr<ImuCorruptor> ImuErrorModel::instantiate(double imuRate,
     ctx.imuRate = imuRate;
     ctx.key = key;
     ctx.site = &e->site;
-    auto state = e->effect->instantiate(ctx);
+    // "gyro.x[0].ar: the process is defined at 5 Hz, slower than the IMU rate" names the model
+    // file too (it is found only here, once the IMU rate is known).
+    auto state = source().empty() ? e->effect->instantiate(ctx)
+                                  : withContext(source(), [&] { return e->effect->instantiate(ctx); });
     (e->site.sensor == Sensor::gyro ? c->gyro : c->accel).push_back(std::move(state));
     c->needsTemperature = c->needsTemperature || e->effect->needsTemperature();
   }

@@ -37,8 +37,10 @@ std::optional<std::pair<double, Dimension>> readValue(const ConfigNode& n, const
   try {
     Quantity q = parseQuantity(*text);
     if (s.accepts(q.dim, sensor, item) && (q.dim != Dimension::none() || !s.plainZero ||
-                                           q.si == 0.0 || want == Dimension::none()))
+                                           q.si == 0.0 || want == Dimension::none())) {
+      if (!n.checkPhysical(q.si, q.dim)) return std::nullopt;
       return std::make_pair(q.si, q.dim);
+    }
     n.error("expected " + expectedWords(s, sensor, item) + ", got \"" + *text + "\"");
   } catch (const InputError& e) {
     n.error(e.what());
@@ -239,8 +241,15 @@ ErrorModelSpec readErrorModel(const ConfigNode& node) {
   }
   node.allowKeys({"description", "gyro", "accel"});
   spec.description = node.string("description", "");
+  // `gyro: ~` or a file of only `description:` would silently be a perfect IMU.
+  if (!node.yaml()["gyro"] && !node.yaml()["accel"])
+    node.error("no gyro: or accel: section: an empty error model; write `gyro: {}` if you mean a "
+               "perfect IMU");
   for (Sensor sensor : {Sensor::gyro, Sensor::accel}) {
     ConfigNode sn = node[sensorName(sensor)];
+    if (node.yaml()[sensorName(sensor)] && !sn.exists())
+      sn.error("no effects given (write `" + std::string(sensorName(sensor)) +
+               ": {}` for a perfect sensor)");
     if (!sn.exists()) continue;
     if (!sn.isMap()) {
       sn.error("expected a map with keys triad, all, x, y, z (each a list of effects)");
@@ -252,6 +261,14 @@ ErrorModelSpec readErrorModel(const ConfigNode& node) {
       if (sn.has(listName(l)) || sn.yaml()[listName(l)])
         readList(sn[listName(l)], sensor, l, spec.sensor(sensor), node.fileName());
   }
+  std::size_t effects = 0;
+  for (Sensor sensor : {Sensor::gyro, Sensor::accel})
+    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y,
+                         EffectList::z})
+      effects += spec.sensor(sensor).list(l).size();
+  if (effects > limits::kMaxModelEffects)
+    node.error(std::to_string(effects) + " effects: more than the " +
+               std::to_string(limits::kMaxModelEffects) + " a model may hold (docs/limits.md)");
   return spec;
 }
 

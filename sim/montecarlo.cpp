@@ -37,8 +37,8 @@ std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<do
   std::vector<std::size_t> epochs;
   for (double t : times) {
     if (!(std::isfinite(t) && t >= 0 && t <= ref.epochTime(ref.epochs() - 1) + 1e-9))
-      throw InputError("report time " + std::to_string(t) + " s is outside the run (0 to " +
-                       std::to_string(ref.epochTime(ref.epochs() - 1)) + " s)");
+      throw InputError("--times: report time " + limits::fmt(t) + " s is outside the run (0 to " +
+                       limits::fmt(ref.epochTime(ref.epochs() - 1)) + " s)");
     epochs.push_back(std::size_t(std::llround(t * ref.outputRate)));
   }
   if (epochs.empty()) epochs.push_back(ref.epochs() - 1);

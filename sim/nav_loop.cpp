@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 
 namespace sinsim::sim {
 
@@ -67,9 +68,16 @@ bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sin
   Bias bias;
   const bool removeBias = opt.biasWindow > 0.0;
   if (removeBias) {
-    const auto nb = std::min<long long>(source.sampleCount(),
-                                        std::llround(opt.biasWindow * source.rate()));
-    if (nb <= 0) throw InputError("the bias window is shorter than one IMU interval");
+    // In floating point first: llround of 1e308 s × rate overflows.
+    const double samples = opt.biasWindow * source.rate();
+    if (!(samples <= double(source.sampleCount()) + 0.5))
+      throw InputError("the bias window (--bias-window) of " + limits::fmt(opt.biasWindow) +
+                       " s is longer than the run (" +
+                       limits::fmt(double(source.sampleCount()) / source.rate()) + " s)");
+    const long long nb = std::llround(samples);
+    if (nb <= 0)
+      throw InputError("the bias window (--bias-window) of " + limits::fmt(opt.biasWindow) +
+                       " s is shorter than one IMU interval");
     head.resize(std::size_t(nb));
     for (ImuEpoch& h : head)
       if (!source.next(h)) throw NumericalError("IMU source ended inside the bias window");

@@ -45,6 +45,14 @@ OutputFiles::~OutputFiles() {
 std::FILE* OutputFiles::open(const std::string& name) {
   File f;
   f.finalPath = (fs::path(dir_) / name).string();
+  // The rename at commit replaces whatever the name points at: not a device, pipe or folder.
+  std::error_code ec;
+  const fs::file_status st = fs::status(f.finalPath, ec);
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw InputError("cannot write " + f.finalPath + ": it is " +
+                     (fs::is_directory(st) ? std::string("a folder; give a file name")
+                                           : std::string("a device, pipe or socket; sinsim "
+                                                         "writes regular files only")));
   f.tempPath = (fs::path(dir_) / ("." + name + ".tmp." + std::to_string(::getpid()))).string();
   f.fp = std::fopen(f.tempPath.c_str(), "w");
   if (!f.fp) throw Error(writeErrorMessage(f.tempPath, errno));

@@ -97,7 +97,12 @@ errormodels::ImuErrorModel parseErrors(const ConfigNode& root, const std::string
   try {
     return errormodels::ImuErrorModel::load(path.lexically_normal().string());
   } catch (const ConfigError& err) {
-    foreign.insert(foreign.end(), err.diagnostics().begin(), err.diagnostics().end());
+    // A problem of the whole file (a folder, a device, empty, too large) is reported at the
+    // scenario's `errors:` line too; problems inside the model name its own lines.
+    for (const Diagnostic& d : err.diagnostics()) {
+      if (d.line == 0 && d.key.empty()) e.error(d.file + ": " + d.message);
+      else foreign.push_back(d);
+    }
   } catch (const InputError& err) {
     e.error(err.what());
   }
@@ -145,6 +150,11 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
 
   sc.temperature = readTemperature(root["temperature"], sc.duration());
   sc.aiding = aided::parseAiding(root, baseDir, sc.duration());
+  // A fix is applied at an IMU epoch: GNSS at 100 kHz with a 100 Hz IMU ran as if it were 100 Hz.
+  if (sc.aiding.gnss.enabled && std::isfinite(sc.imuRate) && sc.aiding.gnss.rate > sc.imuRate)
+    root["gnss"]["rate"].error("GNSS at " + limits::fmt(sc.aiding.gnss.rate) +
+                               " Hz is faster than the IMU (" + limits::fmt(sc.imuRate) +
+                               " Hz): fixes are applied at IMU epochs");
 
   std::vector<Diagnostic> foreign;
   sc.errors = parseErrors(root, baseDir, foreign);

@@ -2,11 +2,13 @@
 #include "sim/temperature.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/units.hpp"
 
 namespace sinsim::sim {
@@ -77,6 +79,12 @@ TemperatureProfile readTemperature(const ConfigNode& t, double duration) {
   }
   p.present = true;
   if (std::isfinite(p.start)) t.check(p.start > 0.0, "expected an absolute temperature above 0 K");
+  const double end = p.start + p.rate * duration;  // linear: the extremes are at the ends
+  if (std::isfinite(p.start) && std::isfinite(p.rate) && p.start > 0.0)
+    t.check(end > 0.0 && std::max(p.start, end) <= limits::kMaxTemperature,
+            "the temperature goes from " + limits::fmt(p.start - kZeroCelsius) + " to " +
+                limits::fmt(end - kZeroCelsius) + " degC over the scenario, outside (-273.15, " +
+                limits::fmt(limits::kMaxTemperature - kZeroCelsius) + "] degC (docs/limits.md)");
   return p;
 }
 

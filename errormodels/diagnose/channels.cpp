@@ -12,7 +12,7 @@ namespace sinsim::errormodels::diagnose::detail {
 
 int channelIndex(const std::string& name) {
   if (const auto c = findChannel(name)) return *c;
-  throw InputError("unknown channel \"" + name + "\" (known: " + kChannelList + ")");
+  throw InputError("--channels: unknown channel \"" + name + "\" (known: " + kChannelList + ")");
 }
 
 namespace {

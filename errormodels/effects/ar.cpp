@@ -17,13 +17,14 @@
 
 #include <sstream>
 
+#include "common/limits.hpp"
 #include "errormodels/ar_model.hpp"
 #include "errormodels/held_process.hpp"
 
 namespace sinsim::errormodels {
 namespace {
 
-constexpr int kMaxOrder = 64;
+constexpr int kMaxOrder = limits::kMaxArOrder;
 
 class ArState final : public HeldProcessState {
  public:

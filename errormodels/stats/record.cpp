@@ -35,25 +35,20 @@ struct Column {
   detail::recordError(source, line, what);
 }
 
-/// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
-std::string readWholeFile(const std::string& path) {
-  requireRegularFile(path, "record");
+/// Reads (and gunzips) `path` into `out`, at most `limit` bytes; with `out` nullptr only counts,
+/// up to `limit` + 1 (more than the limit). The number of bytes read. A read error or a truncated
+/// gzip stream fails with the file's name.
+std::size_t readGz(const std::string& path, char* out, std::size_t limit) {
   gzFile f = gzopen(path.c_str(), "rb");
   if (f == nullptr) fail(path, 0, std::string("cannot open file: ") + std::strerror(errno));
   gzbuffer(f, 1u << 20);
-  std::string text;
+  std::vector<char> scratch(out ? 0 : std::size_t{1} << 20);
   std::size_t used = 0;
-  text.resize(std::size_t{1} << 24);
-  for (;;) {
-    if (used > limits::kMaxRecordBytes) {
-      gzclose(f);
-      fail(path, 0, "record larger than " + std::to_string(limits::kMaxRecordBytes) +
-                        " bytes after decompression (docs/limits.md)");
-    }
-    if (text.size() - used < (std::size_t{1} << 22)) text.resize(text.size() * 2);
-    const unsigned want = static_cast<unsigned>(
-        std::min<std::size_t>(text.size() - used, limits::kMaxRecordBytes + 1 - used));
-    const int got = gzread(f, text.data() + used, want);
+  const std::size_t stop = out ? limit : limit + 1;
+  while (used < stop) {
+    const std::size_t room = out ? limit - used : scratch.size();
+    const unsigned want = static_cast<unsigned>(std::min<std::size_t>(room, 1u << 30));
+    const int got = gzread(f, out ? out + used : scratch.data(), want);
     if (got < 0) {
       int code = 0;
       std::string msg = gzerror(f, &code);
@@ -66,13 +61,28 @@ std::string readWholeFile(const std::string& path) {
   // A truncated gzip stream ends with Z_BUF_ERROR ("unexpected end of file").
   int code = Z_OK;
   const char* msg = gzerror(f, &code);
-  if (code != Z_OK && code != Z_STREAM_END) {
+  if (used <= limit && code != Z_OK && code != Z_STREAM_END) {
     std::string m = msg;
     gzclose(f);
     fail(path, 0, "read error: " + m);
   }
   gzclose(f);
-  text.resize(used);
+  return used;
+}
+
+/// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
+/// Two passes: the size first, without keeping the text (a 1 MB gzip can hold 1 GB, and nothing
+/// is allocated for it), then one buffer of exactly that size. A buffer grown by doubling held the
+/// old and the new copy at once: 1 GB of memory for a 512 MB record.
+std::string readWholeFile(const std::string& path) {
+  requireRegularFile(path, "record");
+  const std::size_t size = readGz(path, nullptr, limits::kMaxRecordBytes);
+  if (size > limits::kMaxRecordBytes)
+    fail(path, 0, "record larger than " + std::to_string(limits::kMaxRecordBytes) +
+                      " bytes after decompression (docs/limits.md)");
+  std::string text(size, '\0');
+  const std::size_t again = readGz(path, text.data(), size);
+  if (again != size) fail(path, 0, "the file changed while it was read");
   return text;
 }
 
@@ -244,7 +254,7 @@ inline const char* parseField(const char* p, const char* end, double& value, con
 }  // namespace
 
 Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
-  if (options.rate_hz) detail::checkRate(*options.rate_hz, source, "the rate option");
+  if (options.rate_hz) detail::checkRate(*options.rate_hz, source, "the rate option (--rate)");
   if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
     fail(source, 0, "time tolerance must be positive");
   if (!(std::isfinite(options.skip_s) && options.skip_s >= 0))

@@ -42,7 +42,7 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
     const double dt_opt = 1.0 / *options.rate_hz;
     if (n >= 2 && std::abs(dt_opt - dt0) > options.time_tolerance * dt_opt) {
       std::ostringstream os;
-      os << "the rate option " << *options.rate_hz << " Hz disagrees with the time stamps (median step "
+      os << "the rate option (--rate) " << *options.rate_hz << " Hz disagrees with the time stamps (median step "
          << dt0 << " s, i.e. " << 1.0 / dt0 << " Hz)";
       recordError(rec.source, 0, os.str());
     }
