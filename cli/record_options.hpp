@@ -7,7 +7,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "common/error.hpp"
@@ -74,11 +73,7 @@ inline std::string recordOptionsText(const RecordArgs& r) {
   auto add = [&](const char* name, const std::string& v) {
     if (!v.empty()) s += std::string(" ") + name + " " + quoted(v);
   };
-  if (r.rate > 0.0) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", r.rate);
-    add("--rate", buf);
-  }
+  add("--rate", r.rate);
   add("--gyro-unit", r.gyroUnit);
   add("--accel-unit", r.accelUnit);
   if (r.allowIrregular) s += " --allow-irregular-time";
