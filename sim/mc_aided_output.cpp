@@ -6,6 +6,7 @@
 
 #include "errormodels/stats/special.hpp"
 #include "sim/mc_stats.hpp"
+#include "sim/output.hpp"
 
 namespace sinsim::sim {
 namespace {
@@ -77,7 +78,7 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
   std::fputs("model,t_s,class,runs,nees_mean,nees_lo99,nees_hi99,nis_mean,nis_dof,nis_lo99,"
              "nis_hi99\n", fc);
   for (std::size_t m = 0; m < batch.entries.size(); ++m) {
-    const std::string label = csvText(batch.entries[m].label);
+    const std::string label = csvField(batch.entries[m].label);
     nlohmann::json outages = nlohmann::json::array();
     for (std::size_t w = 0; w < windows.size(); ++w) {
       std::vector<double> mx, sg, ratio;

@@ -14,16 +14,6 @@
 
 namespace sinsim::sim {
 
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string r = "\"";
-  for (char c : s) {
-    if (c == '"') r += '"';
-    r += c;
-  }
-  return r + "\"";
-}
-
 const char* metricName(int metric) {
   static const char* names[kMetrics] = {"horizontal_m", "vertical_m",     "velocity_mps",
                                         "roll_abs_rad", "pitch_abs_rad", "yaw_abs_rad"};

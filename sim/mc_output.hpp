@@ -31,9 +31,6 @@ struct McBatch {
   const McMeasured* measured = nullptr;
 };
 
-/// A CSV field: labels may hold commas (budget variants "x without gyro.x[0].ar"), quoted then.
-std::string csvText(const std::string& s);
-
 /// Percentiles reported everywhere [%].
 inline const std::vector<double>& mcPercentiles() {
   static const std::vector<double> p{50, 68, 95, 99};
