@@ -40,8 +40,23 @@ def start(args, cwd):
                             stderr=subprocess.PIPE, text=True, start_new_session=True)
 
 
+def catches_sigint(pid):
+    """Whether the process has installed a SIGINT handler (bit SIGINT - 1 of SigCgt)."""
+    try:
+        status = pathlib.Path(f"/proc/{pid}/status").read_text()
+    except OSError:
+        return False
+    m = re.search(r"^SigCgt:\s*([0-9a-f]+)$", status, flags=re.M)
+    return bool(m) and bool(int(m.group(1), 16) >> (signal.SIGINT - 1) & 1)
+
+
 def interrupt_like_timeout(proc, after_s):
-    """After `after_s`, SIGINT to the process and to its group (what `timeout -s INT` sends)."""
+    """`after_s` after the command catches SIGINT, SIGINT to the process and to its group (what
+    `timeout -s INT` sends). Waiting for the handler (SigCgt in /proc) rather than for a fixed time
+    keeps a loaded machine's slow start-up from turning the Ctrl-C into a plain kill."""
+    deadline = time.time() + 30
+    while time.time() < deadline and proc.poll() is None and not catches_sigint(proc.pid):
+        time.sleep(0.005)
     time.sleep(after_s)
     assert proc.poll() is None, "the command ended before it could be interrupted"
     os.kill(proc.pid, signal.SIGINT)
@@ -78,10 +93,10 @@ def check_ctrl_c_stops_with_a_message_and_no_output(tmp_path, name):
     (tmp_path / "out").mkdir()
     _, argv, outputs = next(c for c in commands(tmp_path) if c[0] == name)
     proc = start(argv, tmp_path)
-    # Well past start-up (the handler is installed right after the command line is parsed), well
-    # before the end: each takes > 10 s here, but analyze reads and analyses run 1 in about 1 s on
-    # an idle machine, so it is interrupted while it still reads the record.
-    code, out, err = interrupt_like_timeout(proc, 0.3 if name == "analyze" else 1.5)
+    # 0.2 s after the handler is in place (right after the command line is parsed): run and synth
+    # take > 10 s here, but analyze, fit and diagnose read run 1 (10^6 rows of gzip text) for about
+    # 0.5 s before they analyse it, and on an idle machine analyze and fit end within 1-2 s.
+    code, out, err = interrupt_like_timeout(proc, 0.2)
     assert code == 130, err
     assert f"sinsim {name}: interrupted (Ctrl-C); no output was written" in err
     assert "twice" not in err  # the group's copy of the signal counted as the same Ctrl-C

@@ -202,9 +202,9 @@ TEST_CASE("sinsim mc: checkpoints are protected: no silent overwrite, no resume 
 TEST_CASE("sinsim mc: a progress line on a terminal, none when stderr is a file") {
   const fs::path tmp = tempDir("progress");
   const fs::path sc = writeScenario(tmp);
-  // 480 runs on one thread: a few seconds, past the line's first second of silence
-  // (cli/terminal.hpp).
-  const std::string args = "mc '" + sc.string() + "' --runs 480 --threads 1 --model '" + sourceDir() +
+  // 2400 runs on one thread: several seconds even on an idle machine (480 took under 1 s), past
+  // the line's first second of silence (cli/terminal.hpp).
+  const std::string args = "mc '" + sc.string() + "' --runs 2400 --threads 1 --model '" + sourceDir() +
                            "/scenarios/adis16355-gm.yaml'";
   const Result plain = sinsim(args + " -o '" + (tmp / "a").string() + "'", tmp);
   REQUIRE(plain.exitCode == 0);
@@ -216,7 +216,7 @@ TEST_CASE("sinsim mc: a progress line on a terminal, none when stderr is a file"
   REQUIRE(std::system(cmd.c_str()) == 0);
   const std::string out = slurp(tmp / "pty.out");
   CHECK(out.find("sinsim mc: runs ") != std::string::npos);  // runs done
-  CHECK(out.find("/480 (") != std::string::npos);            // of how many
+  CHECK(out.find("/2400 (") != std::string::npos);           // of how many
   CHECK(out.find("/s, ") != std::string::npos);              // rate
   CHECK(out.find("s left") != std::string::npos);            // time left
   fs::remove_all(tmp);
