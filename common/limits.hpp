@@ -11,6 +11,8 @@
 #include <string>
 #include <string_view>
 
+#include "common/constants.hpp"
+
 namespace sinsim::limits {
 
 // ---- YAML files (scenarios, models) ---------------------------------------------------------
@@ -59,6 +61,13 @@ constexpr double kMinHeight = -1.2e4;
 constexpr double kMaxHeight = 1.0e5;
 /// [m/s] Highest speed of a trajectory (above orbital speed).
 constexpr double kMaxSpeed = 1.2e4;
+
+/// [rad/s] Highest angular rate a trajectory segment may reach (10,000 deg/s): 2.5 times the
+/// widest MEMS gyro range (±4000 deg/s); a 1e6 deg turn in 1 s ran at 3.5e6 deg/s with exit 0.
+constexpr double kMaxAngularRate = 1e4 * kRadPerDeg;
+/// [m/s^2] Highest acceleration of a trajectory (about 1000 g): 5 times the widest MEMS
+/// accelerometer range (±200 g); reaching 11 km/s in 1 s asked for 2200 g.
+constexpr double kMaxAcceleration = 1e4;
 
 /// [K] Highest sensor temperature of a scenario's profile (1000 degC; sensors are specified to
 /// ~125 degC): `rate: 1e10 degC/s` reached 2e11 degC and ran.

@@ -91,6 +91,42 @@ std::string planSegment(Segment& seg, PlanCursor& c) {
   return problem;
 }
 
+SegmentPeaks segmentPeaks(const Segment& g) {
+  SegmentPeaks p;
+  const double T = g.duration, d = std::abs(g.change), s = g.speed0;
+  if (!(T > 0.0)) return p;
+  // S'(u) peaks at 2 and S''(u) at 2π (smoothStep); an excursion runs S at twice the pace.
+  switch (g.kind) {
+    case SegmentKind::Static:
+    case SegmentKind::Cruise:
+      break;
+    case SegmentKind::Accelerate:
+      p.acceleration = 2.0 * d / T;
+      break;
+    case SegmentKind::Turn: {
+      const double psidot = 2.0 * d / T;
+      p.acceleration = s * psidot;
+      p.angularRate = psidot;
+      // bank rate |φ̇| ≤ s |ψ̈| / g0 (d atan(x)/dx ≤ 1)
+      if (g.bank == BankMode::Coordinated) p.angularRate += s * kTwoPi * d / (T * T) / kBankGravity;
+      break;
+    }
+    case SegmentKind::Climb: {
+      if (!(s > 0.0)) break;
+      const double hddot = kTwoPi * d / (T * T);
+      const double sinPeak = std::min(2.0 * d / (T * s), std::sin(kMaxPathAngle));
+      p.angularRate = hddot / (s * std::sqrt(1.0 - sinPeak * sinPeak));  // γ̇ = ḧ / (s cos γ)
+      p.acceleration = s * p.angularRate;
+      break;
+    }
+    case SegmentKind::Pitch:
+    case SegmentKind::Roll:
+      p.angularRate = 4.0 * d / T;
+      break;
+  }
+  return p;
+}
+
 MotionProfile::MotionProfile(const MotionStart& start, std::vector<Segment> segments)
     : start_(start), segments_(std::move(segments)) {
   ends_.reserve(segments_.size());

@@ -113,6 +113,16 @@ struct PlanCursor {
 /// steep for the speed, a static segment while moving) for the caller to report with its line.
 std::string planSegment(Segment& segment, PlanCursor& cursor);
 
+/// Largest body angular rate [rad/s] and path acceleration [m/s^2] a planned segment reaches,
+/// from the closed forms of its smooth-step profile (exact for accelerations, flat turns and
+/// excursions; an upper bound for coordinated turns and climbs). Earth and transport rates are
+/// not included: they are bounded by the speed and height limits.
+struct SegmentPeaks {
+  double angularRate = 0.0;
+  double acceleration = 0.0;
+};
+SegmentPeaks segmentPeaks(const Segment& segment);
+
 /// Smooth step S(u) = u − sin(2πu)/(2π) on [0, 1] and its first three derivatives w.r.t. u.
 struct SmoothStep {
   double s, ds, d2s, d3s;

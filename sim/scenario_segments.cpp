@@ -259,6 +259,29 @@ std::string motionOutOfRange(const PlanCursor& c) {
   return "";
 }
 
+// A segment's peak angular rate and acceleration stay inside limits:: (a 1e6 deg turn in 1 s
+// is no vehicle's motion); the message gives a duration that fits.
+std::string tooViolent(const Segment& seg) {
+  const SegmentPeaks p = segmentPeaks(seg);
+  // both peaks scale as 1/T or 1/T² with the duration: the shortest one that fits
+  auto longer = [&](double peak, double limit) {
+    const double f = peak / limit;
+    return seg.duration * (seg.kind == SegmentKind::Climb ? std::sqrt(f) : f);
+  };
+  if (!(p.angularRate <= limits::kMaxAngularRate))
+    return "the " + seg.type + " reaches an angular rate of " +
+           limits::fmt(p.angularRate * kDegPerRad, 3) + " deg/s, above " +
+           limits::fmt(limits::kMaxAngularRate * kDegPerRad, 3) +
+           " deg/s (docs/limits.md); a duration of " +
+           limits::fmt(longer(p.angularRate, limits::kMaxAngularRate), 3) + " s fits";
+  if (!(p.acceleration <= limits::kMaxAcceleration))
+    return "the " + seg.type + " reaches an acceleration of " + limits::fmt(p.acceleration, 3) +
+           " m/s^2, above " + limits::fmt(limits::kMaxAcceleration, 3) +
+           " m/s^2 (docs/limits.md); a duration of " +
+           limits::fmt(longer(p.acceleration, limits::kMaxAcceleration), 3) + " s fits";
+  return "";
+}
+
 // Lays the specs out in time, resolving targets; returns false after the first problem so that
 // one wrong segment does not produce a cascade of follow-up messages.
 bool layout(const std::vector<SegmentSpec>& specs, PlanCursor& c, std::vector<Segment>& out,
@@ -320,6 +343,7 @@ bool layout(const std::vector<SegmentSpec>& specs, PlanCursor& c, std::vector<Se
     }
     std::string problem = planSegment(seg, c);
     if (problem.empty()) problem = motionOutOfRange(c);
+    if (problem.empty()) problem = tooViolent(seg);
     if (!problem.empty()) {
       sp.node.error(problem + note);
       return false;

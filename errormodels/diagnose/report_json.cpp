@@ -51,7 +51,7 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   j["noise_scale"] = a.noiseScale;
   j["fits"] = a.fits(threshold);
   j["chi2_selected"] = a.chi2Selected;
-  j["unexplained"] = a.unexplained ? failJson(*a.unexplained) : nlohmann::json(nullptr);
+  if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained
   if (a.ljungBox)
     j["ljung_box"] = {{"lags", a.ljungBox->lags}, {"dof", a.ljungBox->dof}, {"Q", a.ljungBox->Q},
                       {"p", a.ljungBox->pValue}};

@@ -119,6 +119,60 @@ TEST_CASE("limit: heights and speeds, given or reached, stay in range (no NaN fr
   CHECK(hasDiagnostic(ds, "s.yaml", 3, "segments[0]", "the speed reaches 20000 m/s"));
 }
 
+TEST_CASE("limit: a segment's peak angular rate and acceleration (no 1e6 deg turn in 1 s)") {
+  // A turn of Δψ in T follows ψ = Δψ S(t/T) with S'(u) = 1 − cos 2πu: peak rate 2Δψ/T, so 90 deg
+  // reaches the 10,000 deg/s limit at T = 18 ms exactly.
+  const auto turn = [](const std::string& duration, const std::string& speed = "0 m/s") {
+    return scenarioWith(", speed: " + speed,
+                        "  - {type: turn, heading_change: 90 deg, duration: " + duration + "}\n");
+  };
+  CHECK_NOTHROW(sim::parseScenario(turn("18.1 ms"), "s.yaml", "."));
+  auto ds = scenarioProblems(turn("17.9 ms"));
+  CHECK(hasDiagnostic(ds, "s.yaml", 3, "segments[0]", "the turn reaches an angular rate of 1.01e+04 deg/s"));
+  // Centripetal peak s·2Δψ/T: 100 m/s, 90 deg in 31.4 ms would pull 1e4 m/s² (1000 g).
+  CHECK_NOTHROW(sim::parseScenario(turn("31.5 ms", "100 m/s"), "s.yaml", "."));
+  ds = scenarioProblems(turn("31.3 ms", "100 m/s"));
+  CHECK(hasDiagnostic(ds, "s.yaml", 3, "segments[0]", "the turn reaches an acceleration of 1e+04 m/s^2"));
+  // Along the path: 2Δv/T; 11 km/s in 1 s (the hostile corpus' orbital turn) is 22,000 m/s².
+  ds = scenarioProblems(scenarioWith("", "  - {type: accelerate, duration: 1 s, speed: 11 km/s}\n"));
+  CHECK(hasDiagnostic(ds, "s.yaml", 3, "segments[0]", "acceleration of 2.2e+04 m/s^2"));
+  CHECK(hasDiagnostic(ds, "s.yaml", 3, "segments[0]", "a duration of 2.2 s fits"));
+}
+
+TEST_CASE("limit: segment peaks bound the profile's sampled rates and accelerations") {
+  // The closed forms of sim::segmentPeaks against the motion profile sampled densely: equal (to
+  // the sampling) for accelerations, flat turns and excursions, an upper bound for coordinated
+  // turns and climbs.
+  const std::string text = scenarioWith(", speed: 50 m/s",
+                                        "  - {type: accelerate, duration: 7 s, speed: 80 m/s}\n"
+                                        "  - {type: turn, heading_change: -120 deg, duration: 9 s}\n"
+                                        "  - {type: turn, heading_change: 70 deg, bank: 30 deg}\n"
+                                        "  - {type: climb, height_change: 300 m, duration: 20 s}\n"
+                                        "  - {type: pitch, angle: 10 deg, duration: 3 s}\n"
+                                        "  - {type: roll, angle: -25 deg, duration: 4 s}\n");
+  const sim::Scenario sc = sim::parseScenario(text, "s.yaml", ".");
+  const sim::MotionProfile m = sc.motion();
+  REQUIRE(m.segments().size() == 6);
+  for (const sim::Segment& g : m.segments()) {
+    double rate = 0.0, acc = 0.0;
+    for (int k = 0; k <= 20000; ++k) {
+      const sim::MotionPoint p = m.at(g.t0 + g.duration * k / 20000.0);
+      rate = std::max(rate, p.eulerRate.norm());
+      acc = std::max(acc, p.a_n.norm());
+    }
+    const sim::SegmentPeaks peak = sim::segmentPeaks(g);
+    INFO(g.type);
+    const bool exact = !(g.kind == sim::SegmentKind::Climb ||
+                         (g.kind == sim::SegmentKind::Turn && g.bank == sim::BankMode::Coordinated));
+    CHECK(rate <= peak.angularRate * (1 + 1e-9) + 1e-12);
+    CHECK(acc <= peak.acceleration * (1 + 1e-9) + 1e-12);
+    if (exact) {
+      CHECK(rate == Approx(peak.angularRate).epsilon(1e-6).margin(1e-12));
+      CHECK(acc == Approx(peak.acceleration).epsilon(1e-6).margin(1e-12));
+    }
+  }
+}
+
 TEST_CASE("limit: a value overflowing in SI units, and huge model values") {
   const std::string msg = messageOf([] {
     errormodels::ImuErrorModel::fromString(
