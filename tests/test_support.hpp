@@ -4,8 +4,10 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,6 +15,17 @@
 #include "common/error.hpp"
 
 namespace sinsim::test {
+
+/// The message f() throws, as the user reads it (a ConfigError lists its first 20 problems, then
+/// "... and N more"); "" when f() does not throw.
+inline std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
 
 /// Is there a diagnostic of `file` at `line` for key path `key` whose message contains `fragment`?
 inline bool hasDiagnostic(const std::vector<Diagnostic>& ds, const std::string& file, int line,

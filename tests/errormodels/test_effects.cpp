@@ -6,27 +6,17 @@
 #include "errormodels/effect.hpp"
 #include "errormodels/imu_model.hpp"
 #include "helpers.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 using namespace sinsim::errormodels;
+
+using sinsim::test::messageOf;
 
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kG = 9.80665;
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    std::string all;
-    for (const auto& d : e.diagnostics()) all += d.str() + "\n";
-    return all;
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 ImuSample sample(double t, double dt, Vec3 dth = Vec3::Zero(),
                       Vec3 dv = Vec3::Zero()) {

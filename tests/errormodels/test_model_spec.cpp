@@ -14,9 +14,12 @@
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/model_spec.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 using namespace sinsim::errormodels;
+
+using sinsim::test::messageOf;
 
 namespace {
 
@@ -82,15 +85,6 @@ std::vector<double> realisation(const ImuErrorModel& m, std::uint64_t seed) {
 }
 
 bool closeSpecs(const ErrorModelSpec& a, const ErrorModelSpec& b);
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 

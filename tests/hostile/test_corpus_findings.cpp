@@ -22,23 +22,12 @@ using sinsim::test::runSinsim;
 using sinsim::test::slurp;
 using sinsim::test::writeText;
 
+using sinsim::test::messageOf;
+
 namespace {
 
 fs::path tempDir(const std::string& name) {
   return sinsim::test::freshTempDir("sinsim-corpus-findings-" + name);
-}
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ConfigError& e) {
-    std::string all;
-    for (const auto& d : e.diagnostics()) all += d.str() + "\n";
-    return all;
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 const std::string kStart = "start: {latitude: 45 deg, longitude: 7 deg}\n";

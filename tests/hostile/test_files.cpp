@@ -16,16 +16,9 @@ using namespace sinsim;
 using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
-namespace {
+using sinsim::test::messageOf;
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+namespace {
 
 fs::path tempDir(const std::string& name) { return sinsim::test::freshTempDir("sinsim-hostile-" + name); }
 using sinsim::test::writeText;

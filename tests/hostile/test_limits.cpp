@@ -16,6 +16,8 @@ using namespace sinsim;
 using Catch::Matchers::Contains;
 using sinsim::test::hasDiagnostic;
 
+using sinsim::test::messageOf;
+
 namespace {
 
 // The diagnostics of a scenario text that must be refused.
@@ -33,15 +35,6 @@ std::string scenarioWith(const std::string& start, const std::string& segments,
                          const std::string& extra = "") {
   return "start: {latitude: 45 deg, longitude: 7 deg" + start + "}\n" + extra +
          "segments:\n" + segments;
-}
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace
