@@ -238,7 +238,7 @@ TEST_CASE("the improved model file loads and its JSON carries before and after",
   CHECK(hasWarmup);
   const auto j = dg::toJson(imp);
   for (const char* key : {"\"misfit_before\"", "\"misfit_after\"", "\"findings\"", "\"fails\"",
-                          "\"evidence\"", "\"score\"", "\"drop\"", "\"unexplained\"", "\"size\""})
+                          "\"evidence\"", "\"score\"", "\"drop\"", "\"size\""})
     CHECK(j.find(key) != std::string::npos);
   CHECK(imp.changes.at(0).misfitAfter < imp.changes.at(0).misfitBefore);
   const auto table = dg::summaryTable(imp);
