@@ -72,21 +72,35 @@ fuzz=$build/fuzz
 rm -rf "$fuzz/seeds"
 scripts/fuzz_seeds.sh "$fuzz/seeds"
 targets=(config model scenario record)
-for i in "${!targets[@]}"; do
-  target=${targets[$i]}
+# One target per core at a time (2 cores: two pairs), each for FUZZ_SECONDS.
+jobs=$(nproc)
+fuzz_one() {  # target seconds -> 0, or 1 with the finding's log shown
+  local target=$1 seconds=$2
   mkdir -p "$fuzz/corpus/$target" "$fuzz/findings/$target"
-  seconds=$(( ($(left) - 20) / (${#targets[@]} - i) - 15 ))  # 15 s: start-up and seed replay
-  ((seconds > FUZZ_SECONDS)) && seconds=$FUZZ_SECONDS
-  if ((seconds < 10)); then echo "hardening: fuzz_$target skipped (CI time budget)"; continue; fi
-  echo "hardening: fuzzing $target for ${seconds} s"
   # 64 KB inputs, 1 GB, FUZZ_TIMEOUT s per input: anything beyond is a finding (docs/fuzzing.md).
-  "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=65536 \
-    -rss_limit_mb=1024 -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 \
-    -artifact_prefix="$fuzz/findings/$target/" \
-    "$fuzz/corpus/$target" "$fuzz/seeds/$target" 2>"$fuzz/$target.log" ||
-    { tail -n 60 "$fuzz/$target.log"; echo "hardening: FINDING in fuzz_$target"; exit 1; }
-  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$fuzz/$target.log" | tr '\n' ' '
-  echo "corpus: $(ls "$fuzz/corpus/$target" | wc -l) inputs"
+  if "$build/tests/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=65536 \
+      -rss_limit_mb=1024 -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 \
+      -artifact_prefix="$fuzz/findings/$target/" \
+      "$fuzz/corpus/$target" "$fuzz/seeds/$target" 2>"$fuzz/$target.log"; then
+    echo "hardening: fuzz_$target ${seconds} s:" \
+      "$(grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$fuzz/$target.log" | tr '\n' ' ')" \
+      "corpus: $(ls "$fuzz/corpus/$target" | wc -l) inputs"
+  else
+    tail -n 60 "$fuzz/$target.log"; echo "hardening: FINDING in fuzz_$target"; return 1
+  fi
+}
+rounds=$(( (${#targets[@]} + jobs - 1) / jobs ))
+for ((r = 0; r < rounds; ++r)); do
+  seconds=$(( ($(left) - 20) / (rounds - r) - 15 ))  # 15 s: start-up and seed replay
+  ((seconds > FUZZ_SECONDS)) && seconds=$FUZZ_SECONDS
+  round=("${targets[@]:r*jobs:jobs}")
+  if ((seconds < 10)); then echo "hardening: fuzz_${round[*]} skipped (CI time budget)"; continue; fi
+  echo "hardening: fuzzing ${round[*]} for ${seconds} s each, side by side"
+  pids=()
+  for target in "${round[@]}"; do fuzz_one "$target" "$seconds" & pids+=($!); done
+  failed=0
+  for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+  if ((failed)); then exit 1; fi
 done
 
 # Then the rest (command line, tests) and the whole suite under the sanitizers.
