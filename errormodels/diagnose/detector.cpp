@@ -14,10 +14,9 @@ const std::vector<DetectorType>& detectorTypes() {
   return types;
 }
 
-std::vector<Candidate> buildCandidates(const Record& record, int channel,
-                                       const std::vector<double>& tau, const Setup& setup,
+std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
+                                       double lattice, const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects) {
-  const auto& y = channelData(record, channel);
   const std::size_t N = y.size();
   const double dt = 1.0 / record.rate_hz;
   double mean = 0;
@@ -27,7 +26,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel,
   for (double v : y) var += (v - mean) * (v - mean);
   var /= double(N);
   const DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
-                            mean, var, latticeStep(y), blockMeans(y, dt, 2000), modelEffects,
+                            mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
                             isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration()};
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {

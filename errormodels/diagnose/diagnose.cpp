@@ -96,6 +96,8 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   ChannelWork w;
   w.channel = c;
   w.factors = setup.factors;
+  w.y = &y;
+  w.rate = setup.rate;
   AxisDiagnosis& d = w.d;
   d.channel = kChannels[c];
   d.unit = unitsFor(c).level;
@@ -103,12 +105,17 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
   if (auto a = baseAr(model, c, record.rate_hz)) {
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
-    w.y = &y;
     w.arOrder = a->size() - 1;
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
-  w.cands = buildCandidates(record, c, d.adev.x, setup, effectTypesOn(model, sensor, c % 3));
+  const double lattice = latticeStep(y);
+  w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
+                  const std::vector<double>& series) {
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects);
+  };
+  w.cands = w.propose(y);
   selectFindings(w, o.threshold);
+  w.propose = nullptr;  // it refers to this call's record and setup
   return w;
 }
 
