@@ -3,6 +3,7 @@
 #include "errormodels/diagnose/diagnose.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "common/error.hpp"
@@ -13,6 +14,7 @@
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
+#include "errormodels/diagnose/parallel.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
@@ -146,17 +148,21 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.realisations = o.realisations;
   run.d.threshold = o.threshold;
   run.d.bandLevel = o.bandLevel;
-  for (std::size_t ci = 0; ci < channels.size(); ++ci) {
-    progress::checkpoint(std::string("diagnosing channel ") + kChannels[std::size_t(channels[ci])], ci,
-                         channels.size());
+  // Channels are independent (each its own series, statistics and candidates): on worker
+  // threads, each result in its channel's slot, so the diagnosis is the same for any thread count.
+  run.work.resize(channels.size());
+  std::atomic<std::size_t> done{0};
+  parallelFor<int>(channels.size(), o.threads, [&](std::size_t ci, int&) {
+    const auto name = kChannels[std::size_t(channels[ci])];
+    progress::checkpoint(std::string("diagnosing channel ") + name, done, channels.size());
     try {
-      run.work.push_back(diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o));
+      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o);
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
-      throw InputError(record.source + ": channel " + kChannels[std::size_t(channels[ci])] + ": " +
-                       e.what());
+      throw InputError(record.source + ": channel " + name + ": " + e.what());
     }
-    run.d.axes.push_back(run.work.back().d);
-  }
+    ++done;
+  });
+  for (const auto& w : run.work) run.d.axes.push_back(w.d);
   return run;
 }
 
