@@ -32,14 +32,21 @@ GYRO_SCALE = math.radians(0.005)  # rad/s/sqrt(Hz): a MEMS gyro's white density
 ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
 
 
-def draw_record(rng, max_samples, null=False):
+POOLS = {"all": g.CATALOGUE + g.OUT_OF_CATALOGUE, "catalogue": g.CATALOGUE, "ooc": g.OUT_OF_CATALOGUE}
+
+
+def draw_record(rng, max_samples, null=False, effects=None, pool="all"):
+    """Rate, samples and hidden effect names; `effects` forces their number (studies of one case:
+    --effects 2 --pool catalogue), drawn from POOLS[pool]."""
     fs = float(rng.choice(RATES))
     T = 10 ** rng.uniform(math.log10(1200.0), math.log10(4 * 3600.0))
     n = int(min(T * fs, max_samples))
     n_effects = int(rng.choice([0, 1, 1, 2], p=[0.2, 0.5, 0.1, 0.2]))
     if null:
         n_effects = 0
-    pool = g.CATALOGUE + g.OUT_OF_CATALOGUE
+    elif effects is not None:
+        n_effects = effects
+    pool = POOLS[pool]
     names = list(rng.choice(pool, size=n_effects, replace=False)) if n_effects else []
     return fs, n, names
 
@@ -67,8 +74,8 @@ def axis_key(ch):
     return ("gyro" if ch[0] == "g" else "accel"), ch[1]
 
 
-def make(rng, idx, work, max_samples, bases=BASES, null=False):
-    fs, n, names = draw_record(rng, max_samples, null)
+def make(rng, idx, work, max_samples, bases=BASES, null=False, effects=None, pool="all"):
+    fs, n, names = draw_record(rng, max_samples, null, effects, pool)
     t = np.arange(1, n + 1) / fs
     T = n / fs
     temp = 25.0 + 15.0 * (1.0 - np.exp(-t / (T / 4.0))) + 0.05 * rng.standard_normal(n)
@@ -130,6 +137,8 @@ def diagnose(sinsim, row, opts, add=None):
         cmd += ["--threshold", str(opts.threshold)]
     if add:
         cmd += ["--add", add]
+    if getattr(opts, "hidden_only", False):
+        cmd += ["--channels", row["channel"]]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         return {"error": p.stderr.strip()[-400:]}
@@ -232,7 +241,8 @@ def report(rows):
 def run_one(a, i):
     rng = np.random.default_rng([a.seed, i])
     bases = a.bases.split(",") if a.bases else BASES
-    row = make(rng, i, a.work, a.max_samples, bases, a.null)
+    row = make(rng, i, a.work, a.max_samples, bases, a.null, getattr(a, "effects", None),
+               getattr(a, "pool", "all"))
     row["result"] = diagnose(a.sinsim, row, a)
     if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in g.CATALOGUE:
         res = row["result"].get(row["channel"], {})
@@ -257,6 +267,11 @@ def main():
     ap.add_argument("--threshold", type=float, default=None, help="diagnose --threshold")
     ap.add_argument("--bases", default="", help="comma list of base families (default: all)")
     ap.add_argument("--null", action="store_true", help="no hidden effects (threshold calibration)")
+    ap.add_argument("--effects", type=int, default=None,
+                    help="hidden effects per record (default: 0, 1 or 2 drawn); a study of one case")
+    ap.add_argument("--pool", choices=sorted(POOLS), default="all", help="where hidden effects are drawn from")
+    ap.add_argument("--hidden-only", action="store_true",
+                    help="diagnose only the hidden channel (studies: no clean-channel counts)")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")
     ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",

@@ -64,9 +64,11 @@ struct DetectorType {
 /// score keep it).
 const std::vector<DetectorType>& detectorTypes();
 
-/// The candidates of every detector that is repeatable or whose effect is not among modelEffects.
-std::vector<Candidate> buildCandidates(const Record& record, int channel,
-                                       const std::vector<double>& tau, const Setup& setup,
+/// The candidates of every detector that is repeatable or whose effect is not among modelEffects,
+/// on the series y of the record's channel (the channel's samples, or them without the signals
+/// accepted so far) whose value lattice is `lattice` (latticeStep of the channel as recorded).
+std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
+                                       double lattice, const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects);
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);

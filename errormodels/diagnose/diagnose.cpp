@@ -3,6 +3,7 @@
 #include "errormodels/diagnose/diagnose.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "common/error.hpp"
@@ -13,6 +14,7 @@
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
+#include "errormodels/diagnose/parallel.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
@@ -96,6 +98,8 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   ChannelWork w;
   w.channel = c;
   w.factors = setup.factors;
+  w.y = &y;
+  w.rate = setup.rate;
   AxisDiagnosis& d = w.d;
   d.channel = kChannels[c];
   d.unit = unitsFor(c).level;
@@ -103,12 +107,17 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
   if (auto a = baseAr(model, c, record.rate_hz)) {
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
-    w.y = &y;
     w.arOrder = a->size() - 1;
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
-  w.cands = buildCandidates(record, c, d.adev.x, setup, effectTypesOn(model, sensor, c % 3));
+  const double lattice = latticeStep(y);
+  w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
+                  const std::vector<double>& series) {
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects);
+  };
+  w.cands = w.propose(y);
   selectFindings(w, o.threshold);
+  w.propose = nullptr;  // it refers to this call's record and setup
   return w;
 }
 
@@ -139,17 +148,21 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.realisations = o.realisations;
   run.d.threshold = o.threshold;
   run.d.bandLevel = o.bandLevel;
-  for (std::size_t ci = 0; ci < channels.size(); ++ci) {
-    progress::checkpoint(std::string("diagnosing channel ") + kChannels[std::size_t(channels[ci])], ci,
-                         channels.size());
+  // Channels are independent (each its own series, statistics and candidates): on worker
+  // threads, each result in its channel's slot, so the diagnosis is the same for any thread count.
+  run.work.resize(channels.size());
+  std::atomic<std::size_t> done{0};
+  parallelFor<int>(channels.size(), o.threads, [&](std::size_t ci, int&) {
+    const auto name = kChannels[std::size_t(channels[ci])];
+    progress::checkpoint(std::string("diagnosing channel ") + name, done, channels.size());
     try {
-      run.work.push_back(diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o));
+      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o);
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
-      throw InputError(record.source + ": channel " + kChannels[std::size_t(channels[ci])] + ": " +
-                       e.what());
+      throw InputError(record.source + ": channel " + name + ": " + e.what());
     }
-    run.d.axes.push_back(run.work.back().d);
-  }
+    ++done;
+  });
+  for (const auto& w : run.work) run.d.axes.push_back(w.d);
   return run;
 }
 

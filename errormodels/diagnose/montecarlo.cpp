@@ -1,12 +1,10 @@
 // Realisations of a model and their statistics on worker threads (montecarlo.hpp), and
 // simulateRecord (diagnose.hpp).
 #include "errormodels/diagnose/montecarlo.hpp"
+#include "errormodels/diagnose/parallel.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <thread>
 
 #include "common/error.hpp"
 #include "common/progress.hpp"
@@ -61,33 +59,12 @@ McResult monteCarlo(const ImuErrorModel& model, const Record& record,
   const std::size_t R = o.realisations;
   McResult res;
   res.perChannel.assign(channels.size(), std::vector<SeriesStats>(R));
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::atomic<bool> failed{false};
-  auto worker = [&] {
-    std::array<std::vector<double>, 6> buf;
-    for (;;) {
-      const std::size_t r = next++;
-      if (r >= R || failed) return;
-      try {
-        progress::checkpoint("simulating the model", r, R);
-        simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r,
-                 channels, buf);
-        for (std::size_t i = 0; i < channels.size(); ++i)
-          res.perChannel[i][r] = seriesStats(buf[channels[i]], setup);
-      } catch (...) {
-        if (!failed.exchange(true)) failure = std::current_exception();
-        return;
-      }
-    }
-  };
-  unsigned nt = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-  nt = unsigned(std::min<std::size_t>(nt, R));
-  std::vector<std::thread> pool;
-  for (unsigned i = 1; i < nt; ++i) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  parallelFor<std::array<std::vector<double>, 6>>(R, o.threads, [&](std::size_t r, auto& buf) {
+    progress::checkpoint("simulating the model", r, R);
+    simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r, channels, buf);
+    for (std::size_t i = 0; i < channels.size(); ++i)
+      res.perChannel[i][r] = seriesStats(buf[channels[i]], setup);
+  });
   return res;
 }
 

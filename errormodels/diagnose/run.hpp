@@ -2,6 +2,7 @@
 // problem, the candidates and the accepted ones (not a public API).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "errormodels/diagnose/allan_chi2.hpp"
@@ -17,10 +18,17 @@ struct ChannelWork {
   std::vector<Candidate> cands;
   std::vector<std::size_t> accepted;  // indices into cands, in acceptance order
   AllanSolution sol;                  // the joint fit of the accepted ones
-  /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal
-  /// (selection.cpp): the channel's samples, the AR order (0: no AR base), the accepted signals'
-  /// sum and the closed-form AVAR of the AR refitted on the record without them.
+  /// The channel's samples and rate [Hz]: an accepted signal is taken out of the record and the
+  /// measurement's AVAR recomputed without it (selection.cpp).
   const std::vector<double>* y = nullptr;
+  double rate = 0;
+  /// The detectors' candidates on a series of this channel (during the diagnosis only): proposed
+  /// again on the record without an accepted signal, so that the next effect is fitted and
+  /// tested on what the first leaves (a temperature fit is not bent by spikes).
+  std::function<std::vector<Candidate>(const std::vector<double>& series)> propose;
+  /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal
+  /// (selection.cpp): the AR order (0: no AR base), the accepted signals' sum and the closed-form
+  /// AVAR of the AR refitted on the record without them.
   std::size_t arOrder = 0;
   std::vector<double> removed, baseAvar;
 };

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/significance.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/stats/special.hpp"
@@ -18,6 +19,10 @@ namespace {
 struct Trials {
   std::vector<double> score, drop;
   std::vector<AllanSolution> sol;
+  std::vector<char> refit;  // the trial fitted better with the AR base re-estimated
+  void resize(std::size_t n) {
+    score.assign(n, 0.0), drop.assign(n, 0.0), sol.assign(n, AllanSolution{}), refit.assign(n, 0);
+  }
 };
 
 /// The candidate's own test (lattice, PSD line, one-sign increments, first step, largest
@@ -41,7 +46,9 @@ std::vector<double> refittedBaseAvar(const ChannelWork& w, const std::vector<dou
 /// The problem of a trial: for an AR base and a candidate with a signal, the model's AVAR scaled
 /// by what re-estimating the base on the record without the signal does to it (the base's free
 /// parameters refitted: a base fitted to a record with a ramp is bent by it, and only the refit
-/// shows how much of the misfit the ramp explains); otherwise the current problem.
+/// shows how much of the misfit the ramp explains); otherwise the current problem. The trial
+/// keeps the better of the two fits: a base given as the truth (not fitted to this record) is
+/// not bent, and re-estimating it on the record without spikes would shrink it by their share.
 AllanProblem trialProblem(const ChannelWork& w, const Candidate& c, std::vector<double>* trialAvar) {
   if (w.arOrder == 0 || c.signal.empty()) return w.prob;
   AllanProblem p = w.prob;
@@ -52,13 +59,47 @@ AllanProblem trialProblem(const ChannelWork& w, const Candidate& c, std::vector<
   return p;
 }
 
+/// The accepted candidates the Allan model holds: those without a signal (an accepted signal is
+/// taken out of the record instead, remeasure()).
+std::vector<const Candidate*> allanSet(const ChannelWork& w) {
+  std::vector<const Candidate*> set;
+  for (auto i : w.accepted)
+    if (w.cands[i].signal.empty()) set.push_back(&w.cands[i]);
+  return set;
+}
+
+/// The measurement's ln AVAR recomputed on the record without the accepted signals (w.removed):
+/// what is left for the next effect to explain. A deterministic effect enters the trials as its
+/// Allan term beside the noise (their cross term neglected); once accepted it is subtracted, so
+/// that a second, smaller effect is judged against the record without the first — not against
+/// the first's Allan term, whose own estimation scatter (a sinusoid's or a spike train's at the
+/// long tau) would hide it.
+/// The candidates not accepted are proposed again on the same series (w.propose).
+void remeasure(ChannelWork& w, Trials& t) {
+  std::vector<double> x = *w.y;
+  for (std::size_t k = 0; k < x.size(); ++k) x[k] -= w.removed[k];
+  Setup s;
+  s.rate = w.rate;
+  s.n = x.size();
+  s.factors = w.factors;
+  const auto av = allanVariance(x, s);
+  for (std::size_t k = 0; k < av.size(); ++k) w.prob.L[k] = std::log(std::max(av[k], 1e-300));
+  if (!w.propose) return;
+  std::vector<Candidate> cands;
+  for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
+  for (std::size_t j = 0; j < cands.size(); ++j) w.accepted[j] = j;
+  for (auto& c : w.propose(x)) cands.push_back(std::move(c));
+  w.cands = std::move(cands);
+  t.resize(w.cands.size());
+}
+
 /// Trial of every candidate whose effect is not accepted yet: added to the current set, the
 /// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
 /// parameters. Returns the best, or -1 when none is left.
 std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const std::string& only = "") {
   std::set<std::string> taken;
-  std::vector<const Candidate*> set;
-  for (auto i : w.accepted) taken.insert(w.cands[i].effect), set.push_back(&w.cands[i]);
+  for (auto i : w.accepted) taken.insert(w.cands[i].effect);
+  const auto set = allanSet(w);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
@@ -67,7 +108,12 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
     trial.push_back(&w.cands[i]);
     auto start = w.sol.theta;
     start.push_back(-1.0);
-    t.sol[i] = solveAllan(trialProblem(w, w.cands[i], nullptr), trial, start);
+    t.sol[i] = solveAllan(w.prob, trial, start);
+    t.refit[i] = 0;
+    if (w.arOrder > 0 && !w.cands[i].signal.empty()) {
+      auto refitted = solveAllan(trialProblem(w, w.cands[i], nullptr), trial, start);
+      if (refitted.chi2 < t.sol[i].chi2) t.sol[i] = std::move(refitted), t.refit[i] = 1;
+    }
     t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + ownEvidence(w.cands[i], currentAvar) -
                 penalty * double(w.cands[i].parameters);
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
@@ -141,25 +187,28 @@ double criterionPenalty(std::size_t points) { return std::log(double(std::max<st
 void selectFindings(ChannelWork& w, double threshold) {
   AxisDiagnosis& d = w.d;
   const double penalty = criterionPenalty(w.prob.L.size());
+  const std::vector<double> measured = w.prob.L;
   w.sol = solveAllan(w.prob, {});
   if (w.arOrder > 0) w.baseAvar = refittedBaseAvar(w, {});
   Trials t;
-  t.score.assign(w.cands.size(), 0.0);
-  t.drop.assign(w.cands.size(), 0.0);
-  t.sol.resize(w.cands.size());
-  // With a temperature column the temperature is tried first (issue 12: "regress on it first"):
-  // a thermal drift has the shape of the record's temperature in time, which a warm-up, a ramp or
-  // a random walk can imitate; when the temperature alone passes the threshold it is taken before
-  // them, and they are tried on what it leaves.
-  bool temperatureRound = std::any_of(w.cands.begin(), w.cands.end(),
-                                      [](const Candidate& c) { return c.effect == "temperature"; });
+  t.resize(w.cands.size());
+  // With a temperature column the temperature is tried first in every round (issue 12: "regress
+  // on it first"): a thermal drift has the shape of the record's temperature in time, which a
+  // warm-up, a ramp or a random walk can imitate; when the temperature alone passes the threshold
+  // it is taken before them, and they are tried on what it leaves. A round after an accepted
+  // signal tries it again on the record without that signal (spikes hide a thermal drift).
+  auto temperaturePending = [&w] {
+    for (std::size_t i = 0; i < w.cands.size(); ++i)
+      if (w.cands[i].effect == "temperature" &&
+          std::find(w.accepted.begin(), w.accepted.end(), i) == w.accepted.end())
+        return true;
+    return false;
+  };
   for (;;) {
+    const bool temperatureRound = temperaturePending();
     std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
-    if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold)) {
-      temperatureRound = false;
+    if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold))
       best = trialRound(w, penalty, t);
-    }
-    temperatureRound = false;
     if (best < 0 || t.drop[std::size_t(best)] < threshold * threshold) break;
     Finding f;
     f.effect = w.cands[std::size_t(best)].effect;
@@ -167,30 +216,37 @@ void selectFindings(ChannelWork& w, double threshold) {
     f.drop = t.drop[std::size_t(best)];
     f.reported = true;
     const Candidate& c = w.cands[std::size_t(best)];
-    if (w.arOrder > 0 && !c.signal.empty()) {  // the base refitted without it from now on
-      std::vector<double> av;
-      w.prob = trialProblem(w, c, &av);
-      w.baseAvar = av;
-      w.removed.resize(c.signal.size(), 0.0);
-      for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
-    }
     w.accepted.push_back(std::size_t(best));
     w.sol = t.sol[std::size_t(best)];
+    if (!c.signal.empty()) {  // taken out of the record (and the AR base refitted without it)
+      if (w.arOrder > 0) {
+        std::vector<double> av;
+        const auto refitted = trialProblem(w, c, &av);
+        if (t.refit[std::size_t(best)]) w.prob = refitted;
+        w.baseAvar = av;  // later refits scale the model by their change from this one
+      }
+      w.removed.resize(c.signal.size(), 0.0);
+      for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
+      remeasure(w, t);
+      auto start = w.sol.theta;
+      start.pop_back();
+      w.sol = solveAllan(w.prob, allanSet(w), start);
+    }
     d.findings.push_back(f);
   }
-  // Sizes of the reported ones from the final joint fit.
-  std::vector<const Candidate*> set;
-  for (std::size_t j = 0; j < w.accepted.size(); ++j) {
+  // Sizes of the reported ones from the final joint fit (an accepted signal has its own size).
+  const auto set = allanSet(w);
+  for (std::size_t j = 0, a = 0; j < w.accepted.size(); ++j) {
     const auto& cand = w.cands[w.accepted[j]];
-    set.push_back(&cand);
     Finding& f = d.findings[j];
     f.evidence = cand.evidence;
-    cand.describe(w.sol.theta[j], f);
+    cand.describe(cand.signal.empty() ? w.sol.theta[a++] : 1.0, f);
   }
   d.noiseScale = w.sol.s;
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
+  w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -1,6 +1,9 @@
 // Gaussian-equivalent significance: the common scale of every candidate's score.
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 namespace sinsim::errormodels::diagnose::detail {
 
 /// Scores are capped here (a p-value beyond it underflows and says nothing more).
@@ -12,5 +15,13 @@ double zFromTwoSidedP(double p);
 /// Student-t statistic with nu dof -> Gaussian-equivalent z (Wallace 1959):
 /// z = sqrt(nu ln(1 + t^2/nu)) (8 nu + 1) / (8 nu + 3).
 double zFromStudentT(double t, double nu);
+
+/// A jump in the record: the largest robust z = |D - median D| / (1.4826 MAD) of the window-mean
+/// increments D_j = ybar_{j+1} - ybar_j, over the windows m of `factors` with 32..4096
+/// increments, as a Gaussian-equivalent z corrected for every increment and window tested
+/// (Bonferroni). The increments of a Gaussian process (white, random walk, flicker, Gauss-Markov)
+/// are Gaussian, so none stands out; a bias step, a telegraph switch or a warm-up's first window
+/// puts one far beyond the rest. 0 when no window qualifies.
+double jumpZ(const std::vector<double>& y, const std::vector<std::size_t>& factors);
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -1,5 +1,6 @@
 // Outliers: one-step prediction residuals of an AR(4) fitted to the record itself (whitens the
-// correlated part), robust scale (MAD), isolated samples beyond z_t with 2 N Phi(-z_t) = 1e-3
+// correlated part), each sample's additive-outlier estimate from them (the matched filter of the
+// AR polynomial), robust scale (MAD), isolated samples beyond z_t with 2 N Phi(-z_t) = 1e-3
 // (Bonferroni over the record).
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/significance.hpp"
@@ -14,38 +15,77 @@ namespace sinsim::errormodels::diagnose::detail {
 namespace {
 
 constexpr std::size_t kOrder = 4;  // of the whitening AR
+constexpr std::size_t kNear = 5;   // samples within which two flagged samples are not isolated
 
-/// One-step prediction residuals of a Burg AR(4) of y (0 for the first 4 samples).
-std::vector<double> predictionResiduals(const std::vector<double>& y) {
+/// An additive outlier s at sample k enters the one-step residuals e = A(q)(y - mean) as
+/// s (1, a1, ..., a4) at k..k+4. Its least-squares estimate from them, in units of its own
+/// standard deviation sigma_e / |a| (Chang, Tiao & Chen 1988's lambda_A), and that of the
+/// estimate itself.
+struct AdditiveOutliers {
+  std::vector<double> z;     // per sample, in units of the residual scale
+  std::vector<double> size;  // per sample [SI]
+  std::vector<double> rho;   // correlation of the estimates at lags 0..kOrder
+};
+
+AdditiveOutliers additiveOutliers(const std::vector<double>& y, double& sigma) {
   const auto ar = fit::burg(y, kOrder);
-  std::vector<double> e(y.size(), 0.0);
-  for (std::size_t k = kOrder; k < y.size(); ++k) {
+  const std::size_t N = y.size();
+  std::vector<double> e(N, 0.0);
+  for (std::size_t k = kOrder; k < N; ++k) {
     double v = y[k] - ar.mean;
     for (std::size_t i = 1; i <= kOrder; ++i) v += ar.a[i] * (y[k - i] - ar.mean);
     e[k] = v;
   }
-  return e;
+  std::vector<double> absd(e.begin() + kOrder, e.end());
+  const double med = median(absd);
+  for (double& v : absd) v = std::fabs(v - med);
+  sigma = 1.482602218505602 * median(absd);
+  double norm2 = 0;
+  for (std::size_t i = 0; i <= kOrder; ++i) norm2 += ar.a[i] * ar.a[i];
+  AdditiveOutliers out;
+  out.z.assign(N, 0.0);
+  out.size.assign(N, 0.0);
+  for (std::size_t k = kOrder; k + kOrder < N; ++k) {
+    double v = 0;
+    for (std::size_t i = 0; i <= kOrder; ++i) v += ar.a[i] * (e[k + i] - med);
+    out.size[k] = v / norm2;
+    out.z[k] = sigma > 0 ? v / (sigma * std::sqrt(norm2)) : 0.0;
+  }
+  for (std::size_t l = 0; l <= kOrder; ++l) {
+    double r = 0;
+    for (std::size_t i = 0; i + l <= kOrder; ++i) r += ar.a[i] * ar.a[i + l];
+    out.rho.push_back(r / norm2);
+  }
+  return out;
 }
 
-/// Local peaks of |e - med| / sigma beyond zt (and, on a lattice, beyond 4 LSB: rounding makes
-/// the residual discrete), with no other such sample within 5 samples.
-std::vector<std::size_t> isolatedPeaks(const std::vector<double>& e, double med, double sigma,
-                                       double zt, double lattice) {
-  const std::size_t N = e.size();
+/// Samples whose |z| exceeds zt (and, on a lattice, whose size exceeds 4 LSB: rounding makes the
+/// residual discrete), largest first; one within kNear samples of a larger one is its side lobe
+/// when what is left after the larger one's (z rho) is within zt, and otherwise makes both part of
+/// a burst, not isolated.
+std::vector<std::size_t> isolatedPeaks(const AdditiveOutliers& ao, double zt, double lattice) {
   std::vector<std::size_t> flagged;
-  for (std::size_t k = kOrder; k < N; ++k) {
-    const double z = std::fabs(e[k] - med) / sigma;
-    if (z <= zt || std::fabs(e[k] - med) <= 4 * lattice) continue;
-    const double zl = std::fabs(e[k - 1] - med) / sigma;
-    const double zr = k + 1 < N ? std::fabs(e[k + 1] - med) / sigma : 0;
-    if (z >= zl && z >= zr) flagged.push_back(k);
+  for (std::size_t k = 0; k < ao.z.size(); ++k)
+    if (std::fabs(ao.z[k]) > zt && std::fabs(ao.size[k]) > 4 * lattice) flagged.push_back(k);
+  std::stable_sort(flagged.begin(), flagged.end(),
+                   [&](std::size_t a, std::size_t b) { return std::fabs(ao.z[a]) > std::fabs(ao.z[b]); });
+  std::vector<std::size_t> kept;
+  std::vector<bool> burst;
+  for (auto k : flagged) {
+    bool lobe = false, clash = false;
+    for (std::size_t j = 0; j < kept.size(); ++j) {
+      const std::size_t lag = k > kept[j] ? k - kept[j] : kept[j] - k;
+      if (lag > kNear) continue;
+      const double r = lag <= kOrder ? ao.rho[lag] : 0.0;
+      if (std::fabs(ao.z[k] - r * ao.z[kept[j]]) <= zt) lobe = true;
+      else clash = true, burst[j] = true;
+    }
+    if (clash || !lobe) kept.push_back(k), burst.push_back(clash);
   }
   std::vector<std::size_t> iso;
-  for (std::size_t i = 0; i < flagged.size(); ++i) {
-    const bool left = i > 0 && flagged[i] - flagged[i - 1] <= 5;
-    const bool right = i + 1 < flagged.size() && flagged[i + 1] - flagged[i] <= 5;
-    if (!left && !right) iso.push_back(flagged[i]);
-  }
+  for (std::size_t j = 0; j < kept.size(); ++j)
+    if (!burst[j]) iso.push_back(kept[j]);
+  std::sort(iso.begin(), iso.end());
   return iso;
 }
 
@@ -54,21 +94,18 @@ std::vector<std::size_t> isolatedPeaks(const std::vector<double>& e, double med,
 std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   const std::size_t N = ctx.N;
   if (N < 64) return {};
-  const auto e = predictionResiduals(ctx.y);
-  std::vector<double> absd(e.begin() + kOrder, e.end());
-  const double med = median(absd);
-  for (double& v : absd) v = std::fabs(v - med);
-  const double sigma = 1.482602218505602 * median(absd);
+  double sigma = 0;
+  const auto ao = additiveOutliers(ctx.y, sigma);
   if (!(sigma > 0)) return {};
   const double zt = zFromTwoSidedP(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
-  const auto iso = isolatedPeaks(e, med, sigma, zt, ctx.lattice);
+  const auto iso = isolatedPeaks(ao, zt, ctx.lattice);
   if (iso.empty()) return {};
   double zmax = 0, sumsq = 0;
   std::vector<double> sig(N, 0.0);
   for (auto k : iso) {
-    zmax = std::max(zmax, std::fabs(e[k] - med) / sigma);
-    sumsq += (e[k] - med) * (e[k] - med);
-    sig[k] = e[k] - med;
+    zmax = std::max(zmax, std::fabs(ao.z[k]));
+    sumsq += ao.size[k] * ao.size[k];
+    sig[k] = ao.size[k];
   }
   const double amp = std::sqrt(sumsq / double(iso.size()));
   const double rate = double(iso.size()) / ctx.T;
@@ -82,7 +119,7 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   // p of the largest |z| among N Gaussian residuals (Bonferroni).
   c.zSpecial = zFromTwoSidedP(double(N) * std::erfc(zmax / std::sqrt(2.0)));
   c.evidence = std::to_string(iso.size()) + " isolated samples beyond " + num(zt, 3) +
-               " robust sigma of the one-step prediction residual (largest " + num(zmax, 4) +
+               " robust sigma of their additive-outlier estimate from the one-step prediction residual (largest " + num(zmax, 4) +
                " sigma, sigma " + quantity(sigma, u.level) + ")";
   const Dimension signalDim = ctx.signal;
   c.describe = [rate, amp, u, signalDim](double, Finding& f) {

@@ -1,0 +1,124 @@
+// Selection cases issue 12's challenge exposed (docs/diagnose.md, "Challenge benchmark"): spikes
+// under an oscillatory AR base, a bias step (outside the catalogue), a small effect beside a large
+// deterministic one, and channels on worker threads. The model given is the exact base (as in the
+// challenge: the judge knows the base, the diagnosis must find what was added).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/significance.hpp"
+#include "errormodels/model_io.hpp"
+
+namespace dg = sinsim::errormodels::diagnose;
+using sinsim::errormodels::errorModelFromString;
+using sinsim::errormodels::Record;
+
+namespace {
+
+constexpr double kRate = 100.0;  // [Hz]
+
+dg::DiagnoseOptions gxOnly(std::uint64_t seed) {
+  dg::DiagnoseOptions o;
+  o.channels = {"gx"};
+  o.realisations = 16;
+  o.seed = seed;
+  return o;
+}
+
+Record simulate(const std::string& model, std::size_t n, std::uint64_t seed) {
+  return dg::simulateRecord(errorModelFromString(model, "truth.yaml"), kRate, n, seed, 0,
+                            {0, 0, 0, 0, 0, 0});
+}
+
+std::string reportedList(const dg::AxisDiagnosis& a) {
+  std::string s;
+  for (const auto& f : a.findings)
+    if (f.reported) s += f.effect + " ";
+  return s;
+}
+
+}  // namespace
+
+// A spike s at sample k enters the AR residuals as s (1, a1, a2): with a2 = 0.848 > |a1| = 0.626
+// the residual has a second local peak two samples later, and the old per-residual test dropped
+// both as "not isolated" (challenge record r0000 of seed 7: 5 spikes at 10x named white). The
+// additive-outlier estimate has its peak at k alone. 20 spikes of 1 deg/s against a base of
+// sd ~0.05 deg/s: > 20 sigma each, far beyond the 5.4 sigma Bonferroni limit of 10^5 samples.
+TEST_CASE("spikes under an oscillatory AR base are found as outliers", "[diagnose][selection]") {
+  const std::string base = "gyro:\n  x:\n    - {type: ar, a: [-0.626, 0.848], sigma: 0.02 deg/s, rate: 100 Hz}\n";
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const auto r = simulate(base + "    - {type: outliers, rate: 0.02 Hz, amplitude: 1 deg/s}\n", 100000, seed);
+    const auto d = dg::diagnose(r, errorModelFromString(base, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    REQUIRE_FALSE(d.findings.empty());
+    CHECK(d.findings[0].effect == "outliers");
+    CHECK(d.findings[0].reported);
+    CHECK(d.findings[0].params.at("amplitude") == Approx(1.0 * M_PI / 180).epsilon(0.05));
+  }
+}
+
+// A single bias step has the Allan variance of a random walk (one large increment), and the
+// Gaussian noise candidates would absorb it. Its window-mean increments show one far beyond the
+// rest, so no Gaussian noise may be reported: the step is named by a signal candidate (ramp,
+// warm-up) or left unexplained — issue 12's "physical equivalent or unexplained".
+TEST_CASE("a bias step is not named a Gaussian noise", "[diagnose][selection]") {
+  const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n";
+  for (std::uint64_t seed : {4, 5, 6}) {
+    auto r = simulate(base, 60000, seed);
+    for (std::size_t k = 36000; k < r.rows; ++k) r.gyro[0][k] += 0.05 * M_PI / 180;  // 0.05 deg/s
+    const auto d = dg::diagnose(r, errorModelFromString(base, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    for (const auto& f : d.findings) {
+      if (!f.reported) continue;
+      CHECK(f.effect != "random_walk");
+      CHECK(f.effect != "bias_instability");
+      CHECK(f.effect != "gauss_markov");
+      CHECK(f.effect != "white");
+    }
+    const bool named = !d.findings.empty() && d.findings[0].reported;
+    CHECK((named || d.unexplained.has_value()));
+  }
+}
+
+// The window-mean jump test against its law: on Gaussian white noise and random walk its
+// corrected z exceeds the 0.999 limit (3.29) in about 0.1 % of records; one step of 10 sd of the
+// increments at the coarsest window puts it far beyond.
+TEST_CASE("the jump test is quiet on Gaussian noise and sees a step", "[diagnose][selection]") {
+  using dg::detail::jumpZ;
+  const std::vector<std::size_t> factors = {16, 32, 64, 128, 256};
+  int loud = 0;
+  for (std::uint64_t seed = 10; seed < 30; ++seed) {
+    const auto r = simulate("gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n"
+                            "    - {type: random_walk, K: 0.001 deg/s/sqrt(s)}\n", 40000, seed);
+    loud += jumpZ(r.gyro[0], factors) > 3.29;
+  }
+  // P(>= 2 of 20 above) ~ 2e-4 at the nominal 0.1 %; 1 allowed for the MAD's scatter.
+  CHECK(loud <= 1);
+  std::vector<double> y(40000, 0.0);
+  for (std::size_t k = 0; k < y.size(); ++k) y[k] = std::sin(0.7 * double(k)) * 1e-3 + (k > 20000 ? 1.0 : 0.0);
+  CHECK(jumpZ(y, factors) > 10.0);
+}
+
+// Six channels on worker threads: each channel's result in its own slot, so the JSON is the
+// same byte for byte with one thread or two (realisation r is StreamKey (seed, r) wherever it runs).
+TEST_CASE("channels on worker threads give the same diagnosis as one thread", "[diagnose][selection]") {
+  std::string model = "gyro:\n";
+  for (const char* ax : {"x", "y", "z"})
+    model += std::string("  ") + ax + ":\n    - {type: ar, a: [-0.9], sigma: 0.01 deg/s, rate: 100 Hz}\n";
+  model += "accel:\n";
+  for (const char* ax : {"x", "y", "z"})
+    model += std::string("  ") + ax + ":\n    - {type: white, density: 0.1 mg/sqrt(Hz)}\n";
+  auto r = simulate(model + "", 20000, 9);
+  for (std::size_t k = 0; k < r.rows; ++k) r.accel[1][k] += 2e-3 * std::sin(0.37 * double(k));
+  const auto spec = errorModelFromString(model, "base.yaml");
+  dg::DiagnoseOptions o1;
+  o1.realisations = 8;
+  o1.threads = 1;
+  auto o2 = o1;
+  o2.threads = 2;
+  const auto one = dg::diagnose(r, spec, o1), two = dg::diagnose(r, spec, o2);
+  CHECK(one.axes.size() == 6);
+  CHECK(dg::toJson(one) == dg::toJson(two));
+}
