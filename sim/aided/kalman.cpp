@@ -22,6 +22,12 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition
   Y.topRows<9>().noalias() = Phi.nav * P;
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
+    if (s == 1) {  // one-state blocks (most): a scale, without a product's dispatch
+      const double f = Phi.block[b](0, 0);
+      xn[o] = f * x[o];
+      Y.row(o) = f * P.row(o);
+      continue;
+    }
     xn.segment(o, s).noalias() = Phi.block[b] * x.segment(o, s);
     Y.middleRows(o, s).noalias() = Phi.block[b] * P.middleRows(o, s);
   }
@@ -29,7 +35,10 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition
   P.leftCols<9>().noalias() = Y * Phi.nav.transpose();  // (Φ P Φᵀ) by column blocks
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
-    P.middleCols(o, s).noalias() = Y.middleCols(o, s) * Phi.block[b].transpose();
+    if (s == 1)
+      P.col(o) = Phi.block[b](0, 0) * Y.col(o);
+    else
+      P.middleCols(o, s).noalias() = Y.middleCols(o, s) * Phi.block[b].transpose();
   }
   P += Qd;
   P = 0.5 * (P + P.transpose()).eval();
