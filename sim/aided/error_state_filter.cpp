@@ -28,7 +28,7 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
   for (int axis = 0; axis < 6; ++axis) {
     const SensorAxisModel& m = axis < 3 ? model_.gyro[axis] : model_.accel[axis - 3];
     for (const StateBlock& b : m.blocks) {
-      placed_.push_back({axis, offset, &b});
+      placed_.push_back({axis, offset, b});
       P_.block(offset, offset, b.size, b.size) = b.P0;
       x_.segment(offset, b.size) = b.x0;
       if (!b.discrete) {
@@ -50,8 +50,8 @@ void ErrorStateFilter::refreshSensorEstimates() {
 nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
   nav::Vec3 e = nav::Vec3::Zero();
   for (const Placed& p : placed_)
-    if (!p.block->discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
-      e[p.axis - firstAxis] += p.block->c.dot(x_.segment(p.offset, p.block->size));
+    if (!p.block.discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
+      e[p.axis - firstAxis] += p.block.c.dot(x_.segment(p.offset, p.block.size));
   return e;
 }
 
@@ -73,7 +73,7 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
   Qc.topLeftCorner<9, 9>() =
       Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
   for (const Placed& pl : placed_) {
-    const StateBlock& b = *pl.block;
+    const StateBlock& b = pl.block;
     const auto g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
     if (b.discrete) continue;  // sampled processes: aggregated over the step (propagate)
     F.block(0, pl.offset, 9, b.size) = g * b.c;  // the sensor error c x drives the INS errors
@@ -83,7 +83,7 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
 }
 
 const StepAggregation& ErrorStateFilter::aggregation(std::size_t placedIndex, double T) {
-  const StateBlock& b = *placed_[placedIndex].block;
+  const StateBlock& b = placed_[placedIndex].block;
   const int m = samplesPerStep(b, T);
   std::vector<StepAggregation>& cache = aggregations_[placedIndex];
   for (const StepAggregation& g : cache)
@@ -129,7 +129,7 @@ void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double 
     Phi.block.clear();
     for (const Placed& pl : placed_) {
       Phi.offset.push_back(pl.offset);
-      Phi.block.emplace_back(pl.block->size, pl.block->size);
+      Phi.block.emplace_back(pl.block.size, pl.block.size);
     }
   }
   for (Eigen::MatrixXd& b : Phi.block) b.setIdentity();
@@ -152,7 +152,7 @@ void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double 
   const DiscreteSystem d = discretize(F, Qc, T);
   Phi.nav = d.Phi.topRows<9>();
   for (std::size_t i = 0; i < placed_.size(); ++i) {
-    const int o = placed_[i].offset, sz = placed_[i].block->size;
+    const int o = placed_[i].offset, sz = placed_[i].block.size;
     Phi.block[i] = d.Phi.block(o, o, sz, sz);
   }
   Qd = d.Qd;
@@ -166,7 +166,7 @@ void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::Matr
                                       Eigen::Matrix<double, 9, 1>& navMean) {
   const Placed& pl = placed_[placedIndex];
   const StepAggregation& agg = aggregation(placedIndex, T);
-  const int K = agg.order, o = pl.offset, p = pl.block->size;
+  const int K = agg.order, o = pl.offset, p = pl.block.size;
   const Eigen::Matrix<double, 9, 9> FT = A * T;
   Eigen::Matrix<double, 9, Eigen::Dynamic> U(9, K + 1);  // u_k = (F T)^k g
   U.col(0) = g;
@@ -203,7 +203,7 @@ void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
   nav::Mat9 A;
   for (std::size_t i = 0; i < placed_.size(); ++i) {
     const Placed& pl = placed_[i];
-    if (!pl.block->discrete) continue;
+    if (!pl.block.discrete) continue;
     if (!anyDiscrete)
       A = nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
     anyDiscrete = true;

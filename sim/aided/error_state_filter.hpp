@@ -98,7 +98,9 @@ class ErrorStateFilter {
   const nav::Earth* earth_;
   FilterSensorModel model_;
   FilterOptions options_;
-  struct Placed { int axis; int offset; const StateBlock* block; };  // axis 0-2 gyro, 3-5 accel
+  // Each placed block holds its own copy of the model's block (no pointer into model_: a copied
+  // or moved filter stays valid on its own).
+  struct Placed { int axis; int offset; StateBlock block; };  // axis 0-2 gyro, 3-5 accel
   std::vector<Placed> placed_;
   std::vector<std::vector<StepAggregation>> aggregations_;  // per placed block, per step length
   std::vector<InputBlock> inputs_;         // the continuous placed blocks (g set per step)

@@ -6,7 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <random>
+#include <memory>
+#include <vector>
 
 #include "common/constants.hpp"
 #include "nav/earth.hpp"
@@ -189,4 +190,28 @@ TEST_CASE("block propagation and O(n² m) Joseph update equal the dense forms") 
     INFO("updated P, worst scaled difference " << worstU);
     CHECK(worstU < 1e-10);
   }
+}
+
+TEST_CASE("a copied filter does not depend on the original") {
+  // The filter once held pointers into its own model: a copy pointed into the original's, and
+  // dangled once that was gone. Copy, destroy the original (and reuse its memory), then the copy
+  // must propagate and update exactly as a filter built fresh from the same model.
+  const nav::Earth earth;
+  const FilterSensorModel m = mixedModel(300.0);
+  FilterOptions opt;
+  opt.sigma0 << 3, 3, 5, 0.1, 0.1, 0.1, 5e-3, 5e-3, 3e-2;
+  auto original = std::make_unique<ErrorStateFilter>(earth, m, opt);
+  ErrorStateFilter copy = *original;
+  original.reset();
+  std::vector<FilterSensorModel> clutter(4, mixedModel(1.0));  // likely reuses the freed blocks
+  ErrorStateFilter fresh(earth, m, opt);
+  const nav::InsErrorPoint p = movingTiltedPoint();
+  for (ErrorStateFilter* f : {&copy, &fresh}) {
+    f->propagate(p, 1.0);
+    f->updatePosition(nav::Vec3(0.5, -0.2, 0.1), nav::Vec3(0.4, 0.1, -0.9), nav::Vec3(1, 1, 2));
+    f->propagate(p, 1.0);
+  }
+  CHECK(copy.P() == fresh.P());  // bit for bit: the same model, the same operations
+  CHECK(copy.x() == fresh.x());
+  CHECK(clutter.size() == 4);
 }
