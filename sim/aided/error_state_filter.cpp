@@ -55,6 +55,16 @@ nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
   return e;
 }
 
+// White sensor noise enters the INS errors directly: Q_n = G_g diag(N_g²) G_gᵀ + G_a diag(N_a²) G_aᵀ.
+nav::Mat9 ErrorStateFilter::whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat93& Ga) const {
+  nav::Vec3 Ng2, Na2;
+  for (int i = 0; i < 3; ++i) {
+    Ng2[i] = model_.gyro[i].whiteDensity * model_.gyro[i].whiteDensity;
+    Na2[i] = model_.accel[i].whiteDensity * model_.accel[i].whiteDensity;
+  }
+  return Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
+}
+
 void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F,
                                        Eigen::MatrixXd& Qc) const {
   const int n = size();
@@ -64,14 +74,7 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
       nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
   const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
   const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
-  // White sensor noise enters the INS errors directly: Qc += G diag(N²) Gᵀ.
-  nav::Vec3 Ng2, Na2;
-  for (int i = 0; i < 3; ++i) {
-    Ng2[i] = model_.gyro[i].whiteDensity * model_.gyro[i].whiteDensity;
-    Na2[i] = model_.accel[i].whiteDensity * model_.accel[i].whiteDensity;
-  }
-  Qc.topLeftCorner<9, 9>() =
-      Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
+  Qc.topLeftCorner<9, 9>() = whiteNoiseInput(Gg, Ga);
   for (const Placed& pl : placed_) {
     const StateBlock& b = pl.block;
     const auto g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
@@ -111,13 +114,7 @@ void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double 
   const nav::Mat9 A = nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
   const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
   const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
-  nav::Vec3 Ng2, Na2;
-  for (int i = 0; i < 3; ++i) {
-    Ng2[i] = model_.gyro[i].whiteDensity * model_.gyro[i].whiteDensity;
-    Na2[i] = model_.accel[i].whiteDensity * model_.accel[i].whiteDensity;
-  }
-  const nav::Mat9 Qn =
-      Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
+  const nav::Mat9 Qn = whiteNoiseInput(Gg, Ga);
   for (std::size_t i = 0; i < inputs_.size(); ++i) {
     const int axis = placed_[inputPlaced_[i]].axis;
     inputs_[i].g = axis < 3 ? Gg.col(axis) : Ga.col(axis - 3);

@@ -84,6 +84,7 @@ class ErrorStateFilter {
 
  private:
   nav::Vec3 sensorError(int firstAxis) const;
+  nav::Mat9 whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat93& Ga) const;
   void refreshSensorEstimates();  // after every change of x's sensor part
   const StepAggregation& aggregation(std::size_t placedIndex, double T);
   /// The continuous blocks' own Φ_b, Qd_b over T (constant per model and step: computed once).
