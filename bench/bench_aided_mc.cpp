@@ -9,6 +9,7 @@
 // BM_AidedMcCar: the case, scenarios/car.yaml (34.6 min, 207 800 IMU epochs a run) with
 // the same aiding, sensor model and filter, and a 30 s and a 60 s outage twice each; its
 // cpu_s_per_1000_runs / 2 is the 1000-run time on 2 cores (threads scale 1.9×, docs/benchmarks.md).
+// BM_FreeMcCar: the same drive and IMU errors free-inertially, the reference of the ratio.
 //
 //   cmake --build build --target bench_aided_mc && build/bench/bench_aided_mc
 //   build/bench/bench_aided_mc --benchmark_filter=Full    # the whole 1000 runs (minutes)
@@ -78,9 +79,11 @@ void BM_AidedMc(benchmark::State& s) { runBatch(s, true, std::uint64_t(s.range(0
 void BM_FreeMc(benchmark::State& s) { runBatch(s, false, std::uint64_t(s.range(0))); }
 void BM_AidedMcFull(benchmark::State& s) { runBatch(s, true, 1000); }
 void BM_AidedMcCar(benchmark::State& s) { runBatch(s, true, std::uint64_t(s.range(0)), true); }
+void BM_FreeMcCar(benchmark::State& s) { runBatch(s, false, std::uint64_t(s.range(0)), true); }
 BENCHMARK(BM_AidedMc)->Arg(40)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_FreeMc)->Arg(40)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AidedMcCar)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_FreeMcCar)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(BM_AidedMcFull)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

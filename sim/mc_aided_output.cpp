@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "errormodels/stats/special.hpp"
+#include "sim/aided/aided_output.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
 
@@ -84,9 +85,11 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
       std::vector<double> mx, sg, ratio;
       for (std::uint64_t k = 0; k < batch.runs; ++k) {
         const float* o = batch.errors[m].data() + k * perRun + outageBase + w * kOutageFields;
-        std::fprintf(fo, "%s,%llu,%zu,%.6f,%.6f,%.9g,%.9g\n", label.c_str(),
-                     static_cast<unsigned long long>(k), w, windows[w].start, windows[w].end,
-                     o[kOutageMaxHorizontal], o[kOutageSigmaHorizontal]);
+        std::fprintf(fo, "%s,%llu,%zu,%.6f,%.6f", label.c_str(),
+                     static_cast<unsigned long long>(k), w, windows[w].start, windows[w].end);
+        aided::writeCsvNumber(fo, "%.9g", o[kOutageMaxHorizontal]);  // empty: no filter there
+        aided::writeCsvNumber(fo, "%.9g", o[kOutageSigmaHorizontal]);
+        std::fputc('\n', fo);
         if (!(std::isfinite(o[kOutageMaxHorizontal]) && o[kOutageSigmaHorizontal] > 0.0f))
           continue;  // a window the filter never ran in (before the alignment's end)
         mx.push_back(o[kOutageMaxHorizontal]);
@@ -115,9 +118,11 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
       if (nees.runs == 0) continue;
       const EpochAverage nis = averageAt(batch, m, e, kNis);
       const int c = epochClass(batch, m, e);
-      std::fprintf(fc, "%s,%.6f,%s,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", label.c_str(),
-                   ref.epochTime(e), className(c), nees.runs, nees.mean, nees.lo, nees.hi,
-                   nis.mean, nis.dof, nis.lo, nis.hi);
+      std::fprintf(fc, "%s,%.6f,%s,%zu", label.c_str(), ref.epochTime(e), className(c), nees.runs);
+      // The NIS of an epoch without fixes (an outage) does not exist: empty fields.
+      for (double v : {nees.mean, nees.lo, nees.hi, nis.mean, nis.dof, nis.lo, nis.hi})
+        aided::writeCsvNumber(fc, "%.9g", v);
+      std::fputc('\n', fc);
       ++n[c];
       neesIn[c] += nees.inside() ? 1 : 0;
       neesSum[c] += nees.mean;

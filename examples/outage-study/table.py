@@ -26,6 +26,8 @@ def cell(out, truth, filt):
     by_length = {}
     with open(f"{d}/outages.csv") as f:
         for row in csv.DictReader(f):
+            if not row["max_horizontal_m"]:  # empty: the filter never ran in that window
+                continue
             length = round(float(row["end_s"]) - float(row["start_s"]))
             by_length.setdefault(length, []).append(
                 (float(row["max_horizontal_m"]), float(row["sigma_horizontal_m"])))

@@ -1,6 +1,13 @@
 #include "sim/aided/aided_output.hpp"
 
+#include <cmath>
+
 namespace sinsim::sim::aided {
+
+void writeCsvNumber(std::FILE* f, const char* fmt, double v) {
+  std::fputc(',', f);
+  if (std::isfinite(v)) std::fprintf(f, fmt, v);
+}
 
 void writeFilterHeader(std::FILE* f) {
   std::fputs(
@@ -12,10 +19,11 @@ void writeFilterHeader(std::FILE* f) {
 
 void writeFilterRow(std::FILE* f, const FilterEpoch& fe) {
   std::fprintf(f, "%.6f", fe.t);
-  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.6e", fe.error[i]);
-  for (int i = 0; i < 9; ++i) std::fprintf(f, ",%.6e", fe.sigma[i]);
-  std::fprintf(f, ",%.6e,%.6e,%d,%d,%d\n", fe.nees, fe.nis, fe.nisDof, fe.aiding ? 1 : 0,
-               fe.outage ? 1 : 0);
+  for (int i = 0; i < 9; ++i) writeCsvNumber(f, "%.6e", fe.error[i]);
+  for (int i = 0; i < 9; ++i) writeCsvNumber(f, "%.6e", fe.sigma[i]);
+  writeCsvNumber(f, "%.6e", fe.nees);
+  writeCsvNumber(f, "%.6e", fe.nis);
+  std::fprintf(f, ",%d,%d,%d\n", fe.nisDof, fe.aiding ? 1 : 0, fe.outage ? 1 : 0);
 }
 
 void writeImuHeader(std::FILE* f) {

@@ -1,6 +1,7 @@
 // CSV rows of an aided run (docs/aided.md): filter.csv (the navigation errors beside the filter's
 // 1-sigma, NEES and NIS at every GNSS clock epoch) and imu.csv (ideal and measured IMU, as rates
-// and as increments). Units are in the headers.
+// and as increments). Units are in the headers. A value that does not exist (the NIS of an epoch
+// without a fix) is an empty field, never "nan".
 #pragma once
 
 #include <cstdio>
@@ -10,8 +11,13 @@
 
 namespace sinsim::sim::aided {
 
+/// ",<v in printf format fmt>", or "," alone when v is not finite (no value): no NaN or inf
+/// reaches a CSV file.
+void writeCsvNumber(std::FILE* f, const char* fmt, double v);
+
 void writeFilterHeader(std::FILE* f);
-/// One row per epoch that has a filter view (fe.sigma set: the GNSS clock epochs).
+/// One row per epoch that has a filter view (fe.sigma set: the GNSS clock epochs); nis is empty
+/// (and nis_dof 0) at an epoch without a fix.
 void writeFilterRow(std::FILE* f, const FilterEpoch& fe);
 
 void writeImuHeader(std::FILE* f);

@@ -28,9 +28,13 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
   for (int axis = 0; axis < 6; ++axis) {
     const SensorAxisModel& m = axis < 3 ? model_.gyro[axis] : model_.accel[axis - 3];
     for (const StateBlock& b : m.blocks) {
-      placed_.push_back({axis, offset, &b});
+      placed_.push_back({axis, offset, b});
       P_.block(offset, offset, b.size, b.size) = b.P0;
       x_.segment(offset, b.size) = b.x0;
+      if (!b.discrete) {
+        inputs_.push_back({offset, Eigen::Matrix<double, 9, 1>::Zero(), b.c, b.F, b.Qc});
+        inputPlaced_.push_back(placed_.size() - 1);
+      }
       offset += b.size;
       aggregations_.emplace_back();
     }
@@ -46,9 +50,19 @@ void ErrorStateFilter::refreshSensorEstimates() {
 nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
   nav::Vec3 e = nav::Vec3::Zero();
   for (const Placed& p : placed_)
-    if (!p.block->discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
-      e[p.axis - firstAxis] += p.block->c.dot(x_.segment(p.offset, p.block->size));
+    if (!p.block.discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
+      e[p.axis - firstAxis] += p.block.c.dot(x_.segment(p.offset, p.block.size));
   return e;
+}
+
+// White sensor noise enters the INS errors directly: Q_n = G_g diag(N_g²) G_gᵀ + G_a diag(N_a²) G_aᵀ.
+nav::Mat9 ErrorStateFilter::whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat93& Ga) const {
+  nav::Vec3 Ng2, Na2;
+  for (int i = 0; i < 3; ++i) {
+    Ng2[i] = model_.gyro[i].whiteDensity * model_.gyro[i].whiteDensity;
+    Na2[i] = model_.accel[i].whiteDensity * model_.accel[i].whiteDensity;
+  }
+  return Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
 }
 
 void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F,
@@ -60,16 +74,9 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
       nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
   const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
   const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
-  // White sensor noise enters the INS errors directly: Qc += G diag(N²) Gᵀ.
-  nav::Vec3 Ng2, Na2;
-  for (int i = 0; i < 3; ++i) {
-    Ng2[i] = model_.gyro[i].whiteDensity * model_.gyro[i].whiteDensity;
-    Na2[i] = model_.accel[i].whiteDensity * model_.accel[i].whiteDensity;
-  }
-  Qc.topLeftCorner<9, 9>() =
-      Gg * Ng2.asDiagonal() * Gg.transpose() + Ga * Na2.asDiagonal() * Ga.transpose();
+  Qc.topLeftCorner<9, 9>() = whiteNoiseInput(Gg, Ga);
   for (const Placed& pl : placed_) {
-    const StateBlock& b = *pl.block;
+    const StateBlock& b = pl.block;
     const auto g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
     if (b.discrete) continue;  // sampled processes: aggregated over the step (propagate)
     F.block(0, pl.offset, 9, b.size) = g * b.c;  // the sensor error c x drives the INS errors
@@ -79,7 +86,7 @@ void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::Matri
 }
 
 const StepAggregation& ErrorStateFilter::aggregation(std::size_t placedIndex, double T) {
-  const StateBlock& b = *placed_[placedIndex].block;
+  const StateBlock& b = placed_[placedIndex].block;
   const int m = samplesPerStep(b, T);
   std::vector<StepAggregation>& cache = aggregations_[placedIndex];
   for (const StepAggregation& g : cache)
@@ -88,15 +95,76 @@ const StepAggregation& ErrorStateFilter::aggregation(std::size_t placedIndex, do
   return cache.back();
 }
 
+const std::vector<DiscreteSystem>& ErrorStateFilter::continuousBlocks(double T) {
+  for (const BlockCache& c : blockCache_)
+    if (c.T == T) return c.blocks;
+  // A step length not seen before (the GNSS clock's steps are all equal but the first and any
+  // after an alignment): a few are kept, the oldest replaced.
+  constexpr std::size_t kKept = 4;
+  if (blockCache_.size() == kKept) blockCache_.erase(blockCache_.begin());
+  BlockCache c{T, {}};
+  for (const InputBlock& b : inputs_) c.blocks.push_back(discretize(b.F, b.Qc, T));
+  blockCache_.push_back(std::move(c));
+  return blockCache_.back().blocks;
+}
+
+void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double T,
+                                            BlockTransition& Phi, Eigen::MatrixXd& Qd) {
+  const int n = size();
+  const nav::Mat9 A = nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
+  const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
+  const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
+  const nav::Mat9 Qn = whiteNoiseInput(Gg, Ga);
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    const int axis = placed_[inputPlaced_[i]].axis;
+    inputs_[i].g = axis < 3 ? Gg.col(axis) : Ga.col(axis - 3);
+  }
+  Phi.nav.setZero(9, n);
+  qdN_.setZero(9, n);
+  if (Phi.block.size() != placed_.size()) {
+    Phi.offset.clear();
+    Phi.block.clear();
+    for (const Placed& pl : placed_) {
+      Phi.offset.push_back(pl.offset);
+      Phi.block.emplace_back(pl.block.size, pl.block.size);
+    }
+  }
+  for (Eigen::MatrixXd& b : Phi.block) b.setIdentity();
+  Qd.setZero(n, n);
+  const Eigen::Matrix<double, 9, Eigen::Dynamic>& QdN = qdN_;
+  if (navigationRowSeries(A, Qn, inputs_, n, T, Phi.nav, qdN_)) {
+    const std::vector<DiscreteSystem>& own = continuousBlocks(T);
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+      const int o = inputs_[i].column;
+      Phi.block[inputPlaced_[i]] = own[i].Phi;
+      Qd.block(o, o, own[i].Qd.rows(), own[i].Qd.cols()) = own[i].Qd;
+    }
+    Qd.topRows<9>() = QdN;
+    Qd.leftCols<9>() = QdN.transpose();
+    return;
+  }
+  // A process too fast for one series step: the whole system, halving and doubling.
+  Eigen::MatrixXd F, Qc;
+  continuousModel(p, F, Qc);
+  const DiscreteSystem d = discretize(F, Qc, T);
+  Phi.nav = d.Phi.topRows<9>();
+  for (std::size_t i = 0; i < placed_.size(); ++i) {
+    const int o = placed_[i].offset, sz = placed_[i].block.size;
+    Phi.block[i] = d.Phi.block(o, o, sz, sz);
+  }
+  Qd = d.Qd;
+}
+
 // A discrete block's exact Φ and Qd over T (step_aggregation.hpp): the INS errors see it through
-// T Σ_k (F T)^k g μ_k, g its input column; F is the INS error block of the continuous model.
-void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::MatrixXd& F,
+// T Σ_k (A T)^k g μ_k, g its input column, A the INS error dynamics.
+void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::Matrix<double, 9, 9>& A,
                                       const Eigen::Matrix<double, 9, 1>& g, double T,
-                                      DiscreteSystem& d, Eigen::Matrix<double, 9, 1>& navMean) {
+                                      BlockTransition& Phi, Eigen::MatrixXd& Qd,
+                                      Eigen::Matrix<double, 9, 1>& navMean) {
   const Placed& pl = placed_[placedIndex];
   const StepAggregation& agg = aggregation(placedIndex, T);
-  const int K = agg.order, o = pl.offset, p = pl.block->size;
-  const Eigen::Matrix<double, 9, 9> FT = F.topLeftCorner<9, 9>() * T;
+  const int K = agg.order, o = pl.offset, p = pl.block.size;
+  const Eigen::Matrix<double, 9, 9> FT = A * T;
   Eigen::Matrix<double, 9, Eigen::Dynamic> U(9, K + 1);  // u_k = (F T)^k g
   U.col(0) = g;
   for (int k = 1; k <= K; ++k) U.col(k) = FT * U.col(k - 1);
@@ -112,29 +180,34 @@ void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::Matr
                      "higher GNSS rate");
   const Eigen::MatrixXd PhiNa = T * U * agg.PhiMu;  // 9 × p
   navMean += PhiNa * x_.segment(o, p);
-  d.Phi.block(0, o, 9, p) = PhiNa;
-  d.Phi.block(o, o, p, p) = agg.Phi;
+  Phi.nav.block(0, o, 9, p) = PhiNa;
+  Phi.block[placedIndex] = agg.Phi;
   const Eigen::MatrixXd QNa = T * U * agg.QdMuA;
-  d.Qd.block(0, o, 9, p) = QNa;
-  d.Qd.block(o, 0, p, 9) = QNa.transpose();
-  d.Qd.block(o, o, p, p) = agg.Qd;
-  d.Qd.topLeftCorner<9, 9>() += (T * T) * U * agg.QdMuMu * U.transpose();
+  Qd.block(0, o, 9, p) = QNa;
+  Qd.block(o, 0, p, 9) = QNa.transpose();
+  Qd.block(o, o, p, p) = agg.Qd;
+  Qd.topLeftCorner<9, 9>() += (T * T) * U * agg.QdMuMu * U.transpose();
 }
 
 void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
-  Eigen::MatrixXd F, Qc;
-  continuousModel(p, F, Qc);
-  DiscreteSystem d = discretize(F, Qc, T);
+  BlockTransition& Phi = phi_;
+  Eigen::MatrixXd& Qd = qd_;
+  discretizeContinuous(p, T, Phi, Qd);
   Eigen::Matrix<double, 9, 1> navMean = Eigen::Matrix<double, 9, 1>::Zero();
   const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
   const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
+  bool anyDiscrete = false;
+  nav::Mat9 A;
   for (std::size_t i = 0; i < placed_.size(); ++i) {
     const Placed& pl = placed_[i];
-    if (!pl.block->discrete) continue;
+    if (!pl.block.discrete) continue;
+    if (!anyDiscrete)
+      A = nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
+    anyDiscrete = true;
     const Eigen::Matrix<double, 9, 1> g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
-    spliceDiscrete(i, F, g, T, d, navMean);
+    spliceDiscrete(i, A, g, T, Phi, Qd, navMean);
   }
-  kalmanPredict(x_, P_, d.Phi, d.Qd);
+  kalmanPredict(x_, P_, Phi, Qd);
   // Closed loop: the caller removes the continuous blocks' estimate from the IMU, so the drift
   // Φ_ns x_s the open-loop prediction adds to the navigation errors never happens. A sampled
   // block's estimate decays within its correlation time, far inside the step, and is not

@@ -17,6 +17,7 @@
 
 #include "nav/earth.hpp"
 #include "nav/ins_error_model.hpp"
+#include "sim/aided/block_series.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
 #include "sim/aided/step_aggregation.hpp"
@@ -83,18 +84,37 @@ class ErrorStateFilter {
 
  private:
   nav::Vec3 sensorError(int firstAxis) const;
+  nav::Mat9 whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat93& Ga) const;
   void refreshSensorEstimates();  // after every change of x's sensor part
   const StepAggregation& aggregation(std::size_t placedIndex, double T);
-  void spliceDiscrete(std::size_t placedIndex, const Eigen::MatrixXd& F,
-                      const Eigen::Matrix<double, 9, 1>& g, double T, DiscreteSystem& d,
-                      Eigen::Matrix<double, 9, 1>& navMean);
+  /// The continuous blocks' own Φ_b, Qd_b over T (constant per model and step: computed once).
+  const std::vector<DiscreteSystem>& continuousBlocks(double T);
+  /// Φ's navigation rows and blocks and the whole Qd of the continuous part over T at p.
+  void discretizeContinuous(const nav::InsErrorPoint& p, double T, BlockTransition& Phi,
+                            Eigen::MatrixXd& Qd);
+  void spliceDiscrete(std::size_t placedIndex, const Eigen::Matrix<double, 9, 9>& A,
+                      const Eigen::Matrix<double, 9, 1>& g, double T, BlockTransition& Phi,
+                      Eigen::MatrixXd& Qd, Eigen::Matrix<double, 9, 1>& navMean);
 
   const nav::Earth* earth_;
   FilterSensorModel model_;
   FilterOptions options_;
-  struct Placed { int axis; int offset; const StateBlock* block; };  // axis 0-2 gyro, 3-5 accel
+  // Each placed block holds its own copy of the model's block (no pointer into model_: a copied
+  // or moved filter stays valid on its own).
+  struct Placed { int axis; int offset; StateBlock block; };  // axis 0-2 gyro, 3-5 accel
   std::vector<Placed> placed_;
   std::vector<std::vector<StepAggregation>> aggregations_;  // per placed block, per step length
+  std::vector<InputBlock> inputs_;         // the continuous placed blocks (g set per step)
+  std::vector<std::size_t> inputPlaced_;   // their indices in placed_
+  struct BlockCache {
+    double T;
+    std::vector<DiscreteSystem> blocks;  // per inputs_ entry
+  };
+  std::vector<BlockCache> blockCache_;  // the last few step lengths
+  // propagate's work space, kept between steps so that a step allocates (almost) nothing
+  BlockTransition phi_;
+  Eigen::MatrixXd qd_;
+  Eigen::Matrix<double, 9, Eigen::Dynamic> qdN_;
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
   nav::Vec3 gyroEstimate_ = nav::Vec3::Zero(), accelEstimate_ = nav::Vec3::Zero();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,22 @@ TEST_CASE("mc with the filter: run k is `run` k, and 1 and 2 threads give the sa
     const std::string a = test::slurp(tmp / "t1" / f), b = test::slurp(tmp / "t2" / f);
     CHECK(!a.empty());
     CHECK(a == b);  // no thread count or timing is written to either
+    // No NaN or inf reaches a file (the outage epochs' NIS has no value: an empty field).
+    CHECK(a.find("nan") == std::string::npos);
+    CHECK(a.find("inf,") == std::string::npos);
+  }
+  {  // filter_consistency.csv: an outage epoch's four NIS fields are empty, an aiding epoch's set
+    std::istringstream csv(test::slurp(tmp / "t1" / "filter_consistency.csv"));
+    std::string line;
+    std::getline(csv, line);
+    int outage = 0, aiding = 0;
+    while (std::getline(csv, line)) {
+      const bool emptyNis = line.size() >= 4 && line.compare(line.size() - 4, 4, ",,,,") == 0;
+      if (line.find(",outage,") != std::string::npos) outage += emptyNis ? 1 : -1000;
+      if (line.find(",aiding,") != std::string::npos) aiding += emptyNis ? -1000 : 1;
+    }
+    CHECK(outage == 20);  // the 50-70 s outage at 1 Hz
+    CHECK(aiding > 0);
   }
 
   // Run 5 of the batch against `run` with run index 5 and the batch's seed.

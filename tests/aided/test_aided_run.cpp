@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -92,9 +94,26 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]},
   std::string header, row;
   REQUIRE(std::getline(f, header));
   CHECK(header.rfind("t_s,north_m", 0) == 0);
-  int rows = 0;
-  while (std::getline(f, row)) ++rows;
+  int rows = 0, emptyNis = 0;
+  while (std::getline(f, row)) {
+    ++rows;
+    // No NaN or inf in the file: the NIS of an epoch without a fix is an empty field, with
+    // nis_dof 0 (columns ..., nees, nis, nis_dof, aiding, outage).
+    CHECK(row.find("nan") == std::string::npos);
+    CHECK(row.find("inf") == std::string::npos);
+    std::vector<std::string> fields;
+    std::stringstream ss(row);
+    for (std::string x; std::getline(ss, x, ',');) fields.push_back(x);
+    if (row.back() == ',') fields.push_back("");
+    REQUIRE(fields.size() == 24);
+    const bool outage = fields[23] == "1";
+    CHECK(fields[20].empty() == outage);
+    CHECK((fields[21] == "0") == outage);
+    CHECK(!fields[19].empty());  // the NEES exists at every filter epoch
+    emptyNis += fields[20].empty() ? 1 : 0;
+  }
   CHECK(rows == 120);  // one per GNSS clock second
+  CHECK(emptyNis == 20);  // the 90-110 s outage
   REQUIRE(std::getline(imu, header));
   CHECK(header.find("ideal_wx_radps") != std::string::npos);
   rows = 0;

@@ -1,0 +1,45 @@
+#!/bin/sh
+# Why the matched cells' outage NEES of the outage study (docs/aided.md) sits above 9: per state,
+# the run-averaged e_i^2 / sigma_i^2 beside the NEES, per 10-s phase of the outages, for
+#   ar5    truth = filter = the AR(5) preset (scenarios/adis16355-ar5.yaml)
+#   gm     truth = filter = the Gauss-Markov preset
+#   white  truth = filter = white noise of the GM preset's low-frequency density (continuous)
+#   white10 the same white noise at 1/10 of the density
+# on car.yaml's drive with the study's GNSS and outages, N seeds each (`sinsim run`, filter.csv).
+#
+#   sh bench/outage_nees/run.sh [SINSIM] [N] [OUT]      (defaults: build/sinsim 100 out/outage-nees)
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+sinsim=${1:-$root/build/sinsim}
+n=${2:-100}
+out=${3:-out/outage-nees}
+mkdir -p "$out"
+drive=$(sed -n '/^start:/,$p' "$root/scenarios/car.yaml" | grep -v -e '^errors:' -e '^seed:')
+white=$root/examples/outage-study/filter-white.yaml
+sed 's/density: \([0-9.]*\)/density: \1e-1/' "$white" > "$out/white10.yaml"
+for cell in ar5 gm white white10; do
+  case $cell in
+    ar5|gm) model=$root/scenarios/adis16355-$cell.yaml ;;
+    white) model=$white ;;
+    white10) model=$(cd "$out" && pwd)/white10.yaml ;;
+  esac
+  cat > "$out/$cell.yaml" <<YAML
+name: $cell
+$drive
+errors: $model
+initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {sigma: [0.3 deg, 0.3 deg, 2 deg]}}
+gnss:
+  rate: 1 Hz
+  position_sigma: [1 m, 1 m, 2 m]
+  outages: [{start: 400 s, duration: 30 s}, {start: 800 s, duration: 60 s},
+            {start: 1300 s, duration: 30 s}, {start: 1700 s, duration: 60 s}]
+filter: {model: $model}
+YAML
+  echo "$cell: $n seeds" >&2
+  for s in $(seq 1 "$n"); do
+    "$sinsim" run "$out/$cell.yaml" --seed "$s" -o "$out/$cell/s$s" >/dev/null
+    rm -f "$out/$cell/s$s/truth.csv" "$out/$cell/s$s/nav.csv" "$out/$cell/s$s/errors.csv"
+  done
+  python3 "$here/components.py" "$out/$cell"
+done
