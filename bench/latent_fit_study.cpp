@@ -32,7 +32,9 @@
 
 #include "errormodels/fit/ar_slow_fit.hpp"
 #include "errormodels/fit/latent_fit.hpp"
+#include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/stats/allan.hpp"
+#include "errormodels/stats/special.hpp"
 #include "errormodels/imu_model.hpp"
 #include "common/constants.hpp"
 #include "common/types.hpp"
@@ -154,11 +156,91 @@ int outsideLongTau(const std::vector<double>& x, double rate, const fit::LatentF
   return outside;
 }
 
+/// The generating model of a record from its parameters (fit parameter names, SI).
+fit::LatentModel truthModel(const std::map<std::string, double>& p) {
+  auto get = [&](const std::string& k) { const auto i = p.find(k); return i == p.end() ? 0.0 : i->second; };
+  fit::LatentModel m;
+  m.white = get("white"), m.quantization = get("quantization"), m.flicker = get("flicker");
+  m.randomWalk = get("random_walk"), m.drift = get("drift");
+  for (int g = 1; g <= 2; ++g)
+    if (p.count("gm" + std::to_string(g) + ".tau"))
+      m.gm.push_back({get("gm" + std::to_string(g) + ".sigma"), get("gm" + std::to_string(g) + ".tau")});
+  return m;
+}
+
+/// Detectability of a cell's generating set (--detectability): the fit of the EXACT Allan
+/// variance of the truth (latent_model.hpp) on the record's octave grid, Omega from the truth.
+/// There the truth set has chi^2 ~ 0 and a competing set's chi^2 is the noncentrality lambda of
+/// the test "truth vs competitor": on a record, chi^2(competitor) - chi^2(truth) is about
+/// noncentral chi^2 with (k_truth - k_comp) dof and parameter lambda. For a competitor that lacks
+/// one 1-parameter term the truth beats it when that exceeds the penalty difference c, with
+/// probability P = Phi(sqrt(lambda) - sqrt(c)) + Phi(-sqrt(lambda) - sqrt(c)): the best right-set
+/// rate this criterion can reach against that competitor.
+void printDetectability(const std::string& label, const fit::LatentTermSet& truth,
+                        const std::map<std::string, double>& params, double rate, double duration,
+                        const fit::LatentFitOptions& base) {
+  const double dt = 1.0 / rate;
+  const auto N = static_cast<std::size_t>(std::llround(duration * rate));
+  std::vector<std::size_t> m;
+  for (std::size_t k = 1; 10 * k <= N; k *= 2) m.push_back(k);
+  const fit::LatentModel tm = truthModel(params);
+  fit::LatentFitOptions o = base;
+  o.sampleInterval = dt;
+  const fit::LatentFit f = fit::fitLatentModel(m, fit::latentAllanVariance(tm, dt, m), N, o);
+  double truthScore = NAN;
+  for (const auto& c : f.candidates)
+    if (c.terms == truth) truthScore = c.score;
+  std::printf("%s: detectability (exact Allan variance; truth score %.3g):\n", label.c_str(), truthScore);
+  int shown = 0;
+  for (const auto& c : f.candidates) {
+    if (c.terms == truth || !c.valid || ++shown > 4) continue;
+    const double pen = fit::latentPenalty(truth, o) - fit::latentPenalty(c.terms, o);
+    std::printf("   vs [%s]: lambda %.3g, penalty difference %+.3g", c.terms.name().c_str(), c.chi2, pen);
+    if (truth.parameterCount() == c.terms.parameterCount() + 1 && pen > 0.0)
+      std::printf(", P(truth wins) %.2f",
+                  normalCdf(std::sqrt(c.chi2) - std::sqrt(pen)) + normalCdf(-std::sqrt(c.chi2) - std::sqrt(pen)));
+    std::printf("\n");
+  }
+  // The slowest term's share of the Allan variance at the last point vs that point's relative sd.
+  const std::size_t last = m.size() - 1;
+  fit::LatentModel noRw = tm;
+  noRw.randomWalk = 0.0;
+  const double all = fit::latentAllanVariance(tm, dt, {m[last]})[0];
+  const double rest = fit::latentAllanVariance(noRw, dt, {m[last]})[0];
+  if (tm.randomWalk > 0.0)
+    std::printf("   random walk's share at tau %.4g s (last point): %.2f; that point's relative sd (white EDF) %.2f\n",
+                double(m[last]) * dt, 1.0 - rest / all, std::sqrt(2.0 / fit::edfOverlappingWhite(N, m[last])));
+  std::fflush(stdout);
+}
+
+/// a's terms are a strict subset of b's (GM count <=, every other term of a in b).
+bool strictSubset(const fit::LatentTermSet& a, const fit::LatentTermSet& b) {
+  const bool sub = a.gm <= b.gm && (!a.quantization || b.quantization) && (!a.white || b.white) &&
+                   (!a.flicker || b.flicker) && (!a.randomWalk || b.randomWalk) && (!a.drift || b.drift) &&
+                   (!a.ar || b.ar);
+  return sub && !(a == b);
+}
+
+/// Whether this record carries every generating term detectably for the criterion: the truth
+/// set, fitted to it, scores below every valid strict subset of it (each term's chi^2 drop beats
+/// its penalty). When false the record is explained as well by fewer terms: a miss there is the
+/// data's, not the selection's. When true a miss is a mis-read (a set of other terms won).
+bool truthDetectable(const fit::LatentFit& f, const fit::LatentTermSet& truth) {
+  double truthScore = NAN;
+  for (const auto& c : f.candidates)
+    if (c.terms == truth) truthScore = c.score;
+  if (!std::isfinite(truthScore)) return false;
+  for (const auto& c : f.candidates)
+    if (c.valid && strictSubset(c.terms, truth) && c.score <= truthScore) return false;
+  return true;
+}
+
 /// Right-set and coverage counts of one (case, rate, duration) cell.
 struct Tally {
   std::string label;
   int right = 0, fitted = 0, failed = 0;
   int arOnlyMissed = 0, jointMissed = 0;  ///< AR cases: seeds with a long-tau point outside 99 %
+  int detectable = 0, rightDetectable = 0;  ///< seeds with truthDetectable, and right among them
   std::map<std::string, int> covered, seen, chosen;
   std::vector<std::string> names;  ///< parameters in the case's order
 
@@ -196,6 +278,9 @@ struct Tally {
       std::printf("\n");
     }
     ++chosen[f.terms.name()];
+    const bool det = truthDetectable(f, truth);
+    detectable += det;
+    rightDetectable += det && f.terms == truth;
     if (!(f.terms == truth)) return;
     ++right;
     for (const auto& [name, value] : params) {
@@ -206,8 +291,9 @@ struct Tally {
   }
 
   void print() const {
-    std::printf("%s: right set %d/%d (%.1f %%);", label.c_str(), right, fitted + failed,
-                100.0 * right / std::max(fitted + failed, 1));
+    std::printf("%s: right set %d/%d (%.1f %%), %d/%d where the record carries every term detectably;",
+                label.c_str(), right, fitted + failed, 100.0 * right / std::max(fitted + failed, 1),
+                rightDetectable, detectable);
     for (const auto& name : names) {
       const auto c = covered.find(name), s = seen.find(name);
       std::printf(" %s %d/%d", name.c_str(), c == covered.end() ? 0 : c->second, s == seen.end() ? 0 : s->second);
@@ -250,7 +336,7 @@ std::string cellShortfall(const Tally& t, const Floors& f) {
   return out;
 }
 
-int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
+int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detectability) {
   std::map<std::string, Tally> tallies;
   std::string line;
   while (std::getline(std::cin, line)) {
@@ -273,6 +359,8 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
     std::snprintf(label, sizeof label, "%-20s %6g Hz %6g s", head.at("case").get<std::string>().c_str(), rate,
                   duration);
     Tally& tally = tallies[label];
+    if (detectability && tally.label.empty() && !truth.ar)
+      printDetectability(label, truth, params, rate, duration, base);
     tally.label = label;
     tally.add(truth, params, x, rate, base, head.at("seed").get<int>());
     if ((tally.fitted + tally.failed) % 10 == 0) tally.print();
@@ -308,12 +396,13 @@ int main(int argc, char** argv) {
   int seeds = 200;
   fit::LatentFitOptions base;
   std::string only;
-  bool fromStdin = false;
+  bool fromStdin = false, detectability = false;
   Floors floors;
   std::vector<double> rates{100.0, 1000.0}, durations{1200.0, 7200.0};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--stdin")) { fromStdin = true; continue; }
     if (!std::strcmp(argv[i], "--per-cell")) { floors.perCell = true; continue; }
+    if (!std::strcmp(argv[i], "--detectability")) { detectability = true; continue; }
     if (i + 1 >= argc) break;
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];
@@ -326,7 +415,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};
     else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[++i])};
   }
-  if (fromStdin) return runStdin(base, floors);
+  if (fromStdin) return runStdin(base, floors, detectability);
   for (double rate : rates)
     for (double duration : durations)
       for (const Case& cs : cases(rate, duration)) {
