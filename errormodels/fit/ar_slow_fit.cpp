@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "common/error.hpp"
 #include "errormodels/fit/composite_fit.hpp"
@@ -68,7 +69,12 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
   lo.penaltyPerParameter = options.penaltyPerParameter;
   auto jointWith = [&](const std::vector<double>& series, ArSlowFit& out) {
     out.ar = selectArOrder(series, os);
-    out.arCorrelationTime = arCorrelationTime(out.ar.fit.a, dt);
+    try {
+      out.arCorrelationTime = arCorrelationTime(out.ar.fit.a, dt);
+    } catch (const InputError& e) {
+      throw InputError(std::string("AR + slow terms fit: the Burg AR has a pole at ~1 (") + e.what() +
+                       "): a slow process rides inside the AR; try --kind latent");
+    }
     lo.arPolynomial = out.ar.fit.a;
     lo.minGmTauSamples = std::max(options.slowGmMinTc * out.arCorrelationTime / dt, 0.5);
     out.joint = fitLatentModel(c.m, c.avar, x.size(), lo);
