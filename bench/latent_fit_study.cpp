@@ -9,7 +9,11 @@
 //
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 |
 //       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
-//           [--min-right F --min-coverage F --expect N]   (exit 1 below a floor: the ctest slice)
+//           [--min-right F --min-coverage F --expect N [--per-cell] [--min-ar-miss F]]
+//           (exit 1 below a floor: the ctest slices; --per-cell: in every cell and parameter)
+//   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 100 --case ar2+rw
+//       --case ar2+gm | build/bench/latent_fit_study --stdin
+//           (records with an AR term are fitted by fit/ar_slow_fit.hpp, `fit --kind ar+slow`)
 //   build/bench/latent_fit_study [--seeds N] [--case NAME] [--rate HZ] [--duration S] [--penalty P]
 //
 // Prints one line per (case, rate, duration): the rate of the right term set, and per parameter
@@ -19,13 +23,18 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <string>
 #include <iostream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "errormodels/fit/ar_slow_fit.hpp"
 #include "errormodels/fit/latent_fit.hpp"
+#include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/stats/allan.hpp"
+#include "errormodels/stats/special.hpp"
 #include "errormodels/imu_model.hpp"
 #include "common/constants.hpp"
 #include "common/types.hpp"
@@ -101,10 +110,137 @@ std::vector<double> record(const std::vector<EffectSpec>& effects, double rate, 
   return x;
 }
 
+/// The fit of one record: the composite latent fit, or for records with an AR term
+/// (generate.py's ar2+... cases) the AR + slow terms fit (fit/ar_slow_fit.hpp).
+struct RecordFit {
+  fit::LatentFit fit;
+  std::optional<fit::ArSlowFit> arSlow;
+};
+
+RecordFit fitRecord(const fit::LatentTermSet& truth, const std::vector<double>& x, double rate,
+                    const fit::LatentFitOptions& base) {
+  RecordFit r;
+  if (truth.ar) {
+    fit::ArSlowFitOptions ao;
+    ao.sampleInterval = 1.0 / rate;
+    ao.penaltyPerTerm = base.penaltyPerTerm;
+    ao.penaltyPerParameter = base.penaltyPerParameter;
+    r.arSlow = fit::fitArPlusSlow(x, ao);
+    r.fit = r.arSlow->joint;
+    return r;
+  }
+  fit::LatentFitOptions o = base;
+  o.sampleInterval = 1.0 / rate;
+  r.fit = fit::fitLatentModel(x, o);
+  return r;
+}
+
+/// Points of the longest octaves (tau >= duration / 40: the last three of tau <= duration / 10)
+/// where a model ADEV lies outside the record's 99 % band (Greenhall EDF, stats/allan.hpp).
+int outsideLongTau(const std::vector<double>& x, double rate, const fit::LatentFit& f,
+                   const std::vector<double>& modelAvar) {
+  AllanOptions ao;
+  ao.grid = TauGrid::Octave;
+  ao.confidence = 0.99;
+  const AllanCurve c = allanDeviation(x, rate, AllanVariant::Overlapping, ao);
+  const double duration = double(x.size()) / rate;
+  int outside = 0;
+  for (std::size_t i = 0; i < f.m.size(); ++i) {
+    if (f.tau[i] < duration / 40.0) continue;
+    for (std::size_t j = 0; j < c.m.size(); ++j)
+      if (c.m[j] == f.m[i]) {
+        const double d = std::sqrt(modelAvar[i]);
+        outside += d < c.lo[j] || d > c.hi[j];
+      }
+  }
+  return outside;
+}
+
+/// The generating model of a record from its parameters (fit parameter names, SI).
+fit::LatentModel truthModel(const std::map<std::string, double>& p) {
+  auto get = [&](const std::string& k) { const auto i = p.find(k); return i == p.end() ? 0.0 : i->second; };
+  fit::LatentModel m;
+  m.white = get("white"), m.quantization = get("quantization"), m.flicker = get("flicker");
+  m.randomWalk = get("random_walk"), m.drift = get("drift");
+  for (int g = 1; g <= 2; ++g)
+    if (p.count("gm" + std::to_string(g) + ".tau"))
+      m.gm.push_back({get("gm" + std::to_string(g) + ".sigma"), get("gm" + std::to_string(g) + ".tau")});
+  return m;
+}
+
+/// Detectability of a cell's generating set (--detectability): the fit of the EXACT Allan
+/// variance of the truth (latent_model.hpp) on the record's octave grid, Omega from the truth.
+/// There the truth set has chi^2 ~ 0 and a competing set's chi^2 is the noncentrality lambda of
+/// the test "truth vs competitor": on a record, chi^2(competitor) - chi^2(truth) is about
+/// noncentral chi^2 with (k_truth - k_comp) dof and parameter lambda. For a competitor that lacks
+/// one 1-parameter term the truth beats it when that exceeds the penalty difference c, with
+/// probability P = Phi(sqrt(lambda) - sqrt(c)) + Phi(-sqrt(lambda) - sqrt(c)): the best right-set
+/// rate this criterion can reach against that competitor.
+void printDetectability(const std::string& label, const fit::LatentTermSet& truth,
+                        const std::map<std::string, double>& params, double rate, double duration,
+                        const fit::LatentFitOptions& base) {
+  const double dt = 1.0 / rate;
+  const auto N = static_cast<std::size_t>(std::llround(duration * rate));
+  std::vector<std::size_t> m;
+  for (std::size_t k = 1; 10 * k <= N; k *= 2) m.push_back(k);
+  const fit::LatentModel tm = truthModel(params);
+  fit::LatentFitOptions o = base;
+  o.sampleInterval = dt;
+  const fit::LatentFit f = fit::fitLatentModel(m, fit::latentAllanVariance(tm, dt, m), N, o);
+  double truthScore = NAN;
+  for (const auto& c : f.candidates)
+    if (c.terms == truth) truthScore = c.score;
+  std::printf("%s: detectability (exact Allan variance; truth score %.3g):\n", label.c_str(), truthScore);
+  int shown = 0;
+  for (const auto& c : f.candidates) {
+    if (c.terms == truth || !c.valid || ++shown > 4) continue;
+    const double pen = fit::latentPenalty(truth, o) - fit::latentPenalty(c.terms, o);
+    std::printf("   vs [%s]: lambda %.3g, penalty difference %+.3g", c.terms.name().c_str(), c.chi2, pen);
+    if (truth.parameterCount() == c.terms.parameterCount() + 1 && pen > 0.0)
+      std::printf(", P(truth wins) %.2f",
+                  normalCdf(std::sqrt(c.chi2) - std::sqrt(pen)) + normalCdf(-std::sqrt(c.chi2) - std::sqrt(pen)));
+    std::printf("\n");
+  }
+  // The slowest term's share of the Allan variance at the last point vs that point's relative sd.
+  const std::size_t last = m.size() - 1;
+  fit::LatentModel noRw = tm;
+  noRw.randomWalk = 0.0;
+  const double all = fit::latentAllanVariance(tm, dt, {m[last]})[0];
+  const double rest = fit::latentAllanVariance(noRw, dt, {m[last]})[0];
+  if (tm.randomWalk > 0.0)
+    std::printf("   random walk's share at tau %.4g s (last point): %.2f; that point's relative sd (white EDF) %.2f\n",
+                double(m[last]) * dt, 1.0 - rest / all, std::sqrt(2.0 / fit::edfOverlappingWhite(N, m[last])));
+  std::fflush(stdout);
+}
+
+/// a's terms are a strict subset of b's (GM count <=, every other term of a in b).
+bool strictSubset(const fit::LatentTermSet& a, const fit::LatentTermSet& b) {
+  const bool sub = a.gm <= b.gm && (!a.quantization || b.quantization) && (!a.white || b.white) &&
+                   (!a.flicker || b.flicker) && (!a.randomWalk || b.randomWalk) && (!a.drift || b.drift) &&
+                   (!a.ar || b.ar);
+  return sub && !(a == b);
+}
+
+/// Whether this record carries every generating term detectably for the criterion: the truth
+/// set, fitted to it, scores below every valid strict subset of it (each term's chi^2 drop beats
+/// its penalty). When false the record is explained as well by fewer terms: a miss there is the
+/// data's, not the selection's. When true a miss is a mis-read (a set of other terms won).
+bool truthDetectable(const fit::LatentFit& f, const fit::LatentTermSet& truth) {
+  double truthScore = NAN;
+  for (const auto& c : f.candidates)
+    if (c.terms == truth) truthScore = c.score;
+  if (!std::isfinite(truthScore)) return false;
+  for (const auto& c : f.candidates)
+    if (c.valid && strictSubset(c.terms, truth) && c.score <= truthScore) return false;
+  return true;
+}
+
 /// Right-set and coverage counts of one (case, rate, duration) cell.
 struct Tally {
   std::string label;
   int right = 0, fitted = 0, failed = 0;
+  int arOnlyMissed = 0, jointMissed = 0;  ///< AR cases: seeds with a long-tau point outside 99 %
+  int detectable = 0, rightDetectable = 0;  ///< seeds with truthDetectable, and right among them
   std::map<std::string, int> covered, seen, chosen;
   std::vector<std::string> names;  ///< parameters in the case's order
 
@@ -112,20 +248,28 @@ struct Tally {
            const std::vector<double>& x, double rate, const fit::LatentFitOptions& base, int seed) {
     if (names.empty())
       for (const auto& [n, v] : params) names.push_back(n);
-    fit::LatentFitOptions o = base;
-    o.sampleInterval = 1.0 / rate;
     fit::LatentFit f;
     try {
-      f = fit::fitLatentModel(x, o);
+      const RecordFit r = fitRecord(truth, x, rate, base);
+      f = r.fit;
+      if (r.arSlow) {
+        arOnlyMissed += outsideLongTau(x, rate, f, r.arSlow->arOnlyAvar) > 0;
+        jointMissed += outsideLongTau(x, rate, f, f.modelAvar) > 0;
+      }
     } catch (const std::exception& e) {
       std::printf("  seed %d: %s\n", seed, e.what());
       ++failed;
       return;
     }
     ++fitted;
-    if (std::getenv("STUDY_VERBOSE") && seed < 3) {
+    if (std::getenv("STUDY_VERBOSE") && seed < std::max(3, std::atoi(std::getenv("STUDY_VERBOSE")))) {
       std::printf("  seed %d [%s] chi2 %.3g/%zu, runner-up [%s]:", seed, f.terms.name().c_str(), f.chi2, f.dof,
                   f.runnerUp() ? f.runnerUp()->terms.name().c_str() : "-");
+      if (!f.model.arPolynomial.empty()) {
+        std::printf(" AR[");
+        for (double a : f.model.arPolynomial) std::printf(" %.5g", a);
+        std::printf("]");
+      }
       for (const auto& p : f.parameters) {
         const auto t = params.find(p.name);
         std::printf(" %s %.4g+-%.2g (%.4g)", p.name.c_str(), p.value, p.stdError,
@@ -134,6 +278,9 @@ struct Tally {
       std::printf("\n");
     }
     ++chosen[f.terms.name()];
+    const bool det = truthDetectable(f, truth);
+    detectable += det;
+    rightDetectable += det && f.terms == truth;
     if (!(f.terms == truth)) return;
     ++right;
     for (const auto& [name, value] : params) {
@@ -144,12 +291,16 @@ struct Tally {
   }
 
   void print() const {
-    std::printf("%s: right set %d/%d (%.1f %%);", label.c_str(), right, fitted + failed,
-                100.0 * right / std::max(fitted + failed, 1));
+    std::printf("%s: right set %d/%d (%.1f %%), %d/%d where the record carries every term detectably;",
+                label.c_str(), right, fitted + failed, 100.0 * right / std::max(fitted + failed, 1),
+                rightDetectable, detectable);
     for (const auto& name : names) {
       const auto c = covered.find(name), s = seen.find(name);
       std::printf(" %s %d/%d", name.c_str(), c == covered.end() ? 0 : c->second, s == seen.end() ? 0 : s->second);
     }
+    if (arOnlyMissed + jointMissed > 0)
+      std::printf("\n   a long-tau point (tau >= duration/40) outside the 99 %% band: AR alone %d/%d, AR + slow %d/%d",
+                  arOnlyMissed, fitted, jointMissed, fitted);
     std::printf("\n   chosen:");
     for (const auto& [n, k] : chosen) std::printf(" [%s] %d", n.c_str(), k);
     std::printf("\n");
@@ -161,12 +312,31 @@ struct Tally {
 /// printed every 10 records of a cell (progress) and at the end.
 /// Exit status 1 when fewer than `expect` records arrive, or when the right-set rate or the 2-sigma
 /// coverage pooled over all cells is below its floor (the ctest slice, bench/CMakeLists.txt).
+/// With perCell, the floors hold in every cell and, for coverage, for every parameter of it;
+/// minArMiss: in the AR cells, the share of seeds whose AR alone (Burg) lies outside the 99 % band
+/// at a long tau.
 struct Floors {
-  double minRight = 0.0, minCoverage = 0.0;
+  double minRight = 0.0, minCoverage = 0.0, minArMiss = 0.0;
   int expect = 0;
+  bool perCell = false;
 };
 
-int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
+/// The cell's failures of the per-cell floors (empty: none).
+std::string cellShortfall(const Tally& t, const Floors& f) {
+  const int n = t.fitted + t.failed;
+  std::string out;
+  if (t.right < f.minRight * n) out += " right set " + std::to_string(t.right) + "/" + std::to_string(n) + ";";
+  for (const auto& [name, k] : t.seen) {
+    const auto c = t.covered.find(name);
+    const int cov = c == t.covered.end() ? 0 : c->second;
+    if (cov < f.minCoverage * k) out += " " + name + " " + std::to_string(cov) + "/" + std::to_string(k) + ";";
+  }
+  if (t.arOnlyMissed + t.jointMissed > 0 && t.arOnlyMissed < f.minArMiss * t.fitted)
+    out += " AR alone outside " + std::to_string(t.arOnlyMissed) + "/" + std::to_string(t.fitted) + ";";
+  return out;
+}
+
+int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detectability) {
   std::map<std::string, Tally> tallies;
   std::string line;
   while (std::getline(std::cin, line)) {
@@ -174,8 +344,10 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
     const auto& t = head.at("terms");
     const fit::LatentTermSet truth{t.at("quantization").get<bool>(), t.at("white").get<bool>(), t.at("gm").get<int>(),
                                    t.at("flicker").get<bool>(),      t.at("random_walk").get<bool>(),
-                                   t.at("drift").get<bool>()};
-    const auto params = head.at("params").get<std::map<std::string, double>>();
+                                   t.at("drift").get<bool>(),        t.value("ar", false)};
+    std::map<std::string, double> params;  // the scalar parameters (the AR polynomial is not checked)
+    for (const auto& [name, v] : head.at("params").items())
+      if (v.is_number()) params[name] = v.get<double>();
     const double rate = head.at("rate").get<double>(), duration = head.at("duration").get<double>();
     const std::size_t n = head.at("n").get<std::size_t>();
     std::vector<double> x(n);
@@ -187,6 +359,8 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
     std::snprintf(label, sizeof label, "%-20s %6g Hz %6g s", head.at("case").get<std::string>().c_str(), rate,
                   duration);
     Tally& tally = tallies[label];
+    if (detectability && tally.label.empty() && !truth.ar)
+      printDetectability(label, truth, params, rate, duration, base);
     tally.label = label;
     tally.add(truth, params, x, rate, base, head.at("seed").get<int>());
     if ((tally.fitted + tally.failed) % 10 == 0) tally.print();
@@ -201,8 +375,16 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors) {
     for (const auto& [name, k] : tally.covered) covered += k;
   }
   std::printf("pooled: right set %d/%d, 2-sigma coverage %d/%d\n", right, records, covered, checks);
-  const bool ok = records >= floors.expect && right >= floors.minRight * records &&
-                  covered >= floors.minCoverage * checks;
+  bool ok = records >= floors.expect;
+  if (floors.perCell) {
+    for (const auto& [label, tally] : tallies) {
+      const std::string s = cellShortfall(tally, floors);
+      if (!s.empty()) std::printf("below a floor: %s:%s\n", label.c_str(), s.c_str());
+      ok = ok && s.empty();
+    }
+  } else {
+    ok = ok && right >= floors.minRight * records && covered >= floors.minCoverage * checks;
+  }
   if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g)\n", floors.expect,
                        floors.minRight, floors.minCoverage);
   return ok ? 0 : 1;
@@ -214,11 +396,13 @@ int main(int argc, char** argv) {
   int seeds = 200;
   fit::LatentFitOptions base;
   std::string only;
-  bool fromStdin = false;
+  bool fromStdin = false, detectability = false;
   Floors floors;
   std::vector<double> rates{100.0, 1000.0}, durations{1200.0, 7200.0};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--stdin")) { fromStdin = true; continue; }
+    if (!std::strcmp(argv[i], "--per-cell")) { floors.perCell = true; continue; }
+    if (!std::strcmp(argv[i], "--detectability")) { detectability = true; continue; }
     if (i + 1 >= argc) break;
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];
@@ -226,11 +410,12 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--min-right")) floors.minRight = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--min-coverage")) floors.minCoverage = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--expect")) floors.expect = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--min-ar-miss")) floors.minArMiss = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--penalty-per-parameter")) base.penaltyPerParameter = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};
     else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[++i])};
   }
-  if (fromStdin) return runStdin(base, floors);
+  if (fromStdin) return runStdin(base, floors, detectability);
   for (double rate : rates)
     for (double duration : durations)
       for (const Case& cs : cases(rate, duration)) {

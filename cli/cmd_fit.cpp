@@ -66,6 +66,7 @@ void printSummary(const errormodels::Identification& id) {
     }
     if (a.written.gaussMarkov)
       std::printf(", GM tau %.4g s", a.written.gaussMarkov->tau);
+    if (a.arSlow) std::printf(", AR(%zu) + slow terms", a.arSlow->ar.fit.order);
     if (a.written.latent) {
       const auto& f = *a.written.latent;
       std::printf(": %s (chi2 %.3g / %zu dof, p %.2g", f.terms.name().c_str(), f.chi2, f.dof, f.pValue);
@@ -143,7 +144,7 @@ void addFitCommand(CLI::App& app, Action& action) {
       ->required();
   c->add_option("-o,--output", a->output, "model file to write (YAML)")->required();
   c->add_option("--axes", a->axes, "channels to fit, e.g. gx,gy,gz (default: all in the record)");
-  c->add_option("--kind", a->kind, "ar | gm | allan | latent | auto (default auto: see README; gm and latent: docs/fitting.md)");
+  c->add_option("--kind", a->kind, "ar | gm | allan | latent | ar+slow | auto (default auto: see README; gm, latent and ar+slow: docs/fitting.md)");
   c->add_option("--order", a->order, "AR order P or auto (default auto: by --criterion)");
   c->add_option("--criterion", a->criterion, "order criterion: mdl (default) | bic | aic | fpe | paper");
   c->add_option("--max-order", a->max_order, "largest AR order tried (default 20)");

@@ -34,6 +34,20 @@ std::string friendly(double si, fit::SensorSignal s) {
   return significant(si / kStandardGravity * 1e3) + " mg";
 }
 
+/// The AR part of an AR + slow fit, for the model comments: order and how it was chosen, the
+/// coefficients with their 1-sigma, Burg's driving sigma beside the jointly refitted one.
+std::string describeArSlow(const fit::ArSlowFit& f, fit::SensorSignal s) {
+  const fit::ArFit& a = f.ar.fit;
+  std::string t = "AR(" + std::to_string(a.order) + ") by Burg, order by " + fit::toString(f.ar.selectedBy) +
+                  " (AIC " + std::to_string(f.ar.aicOrder) + ", MDL " + std::to_string(f.ar.mdlOrder) +
+                  "), T_c " + significant(f.arCorrelationTime * 1e3, 4) + " ms; a =";
+  for (std::size_t i = 1; i < a.a.size(); ++i)
+    t += " " + significant(a.a[i], 6) + " +- " + significant(a.stdError[i - 1], 2);
+  t += "; driving sigma: Burg " + friendly(std::sqrt(a.drivingVariance), s) + ", refitted jointly " +
+       friendly(std::sqrt(f.joint.model.arVariance), s);
+  return t;
+}
+
 fit::SensorSignal signalOf(Sensor s) {
   return s == Sensor::gyro ? fit::SensorSignal::Gyro : fit::SensorSignal::Accel;
 }
@@ -47,6 +61,7 @@ std::string toString(IdentifyKind kind) {
     case IdentifyKind::Allan: return "allan";
     case IdentifyKind::Auto: return "auto";
     case IdentifyKind::Latent: return "latent";
+    case IdentifyKind::ArSlow: return "ar+slow";
   }
   return "?";
 }
@@ -57,7 +72,8 @@ IdentifyKind identifyKindByName(const std::string& name) {
   if (name == "allan") return IdentifyKind::Allan;
   if (name == "auto") return IdentifyKind::Auto;
   if (name == "latent") return IdentifyKind::Latent;
-  throw InputError("--kind: unknown model kind \"" + name + "\" (known: ar, gm, allan, auto, latent)");
+  if (name == "ar+slow") return IdentifyKind::ArSlow;
+  throw InputError("--kind: unknown model kind \"" + name + "\" (known: ar, gm, allan, auto, latent, ar+slow)");
 }
 
 fit::OrderCriterion orderCriterionByName(const std::string& name) {
@@ -132,7 +148,7 @@ std::string Identification::method() const {
                                              (o.denoiseOptions.mode == ThresholdMode::Soft ? ", soft" : ", hard") +
                                              ") before the ACF"
                                        : ", no denoising";
-  if (o.kind == IdentifyKind::Ar || o.kind == IdentifyKind::Auto) {
+  if (o.kind == IdentifyKind::Ar || o.kind == IdentifyKind::Auto || o.kind == IdentifyKind::ArSlow) {
     m += ", Burg AR on the " + std::string(o.arOnDenoised ? "DENOISED" : "raw") + " record, order ";
     m += o.order ? std::to_string(*o.order) + " (forced)"
                  : "by " + fit::toString(o.criterion) + " over 0.." + std::to_string(o.maxOrder);
@@ -144,6 +160,9 @@ std::string Identification::method() const {
     m += ", composite latent-process GLS fit (" +
          std::string(o.kind == IdentifyKind::Gm ? "white + GM (+ random walk)" : "all term sets") +
          ", BIC; docs/fitting.md)";
+  if (o.kind == IdentifyKind::ArSlow)
+    m += ", slow terms (GM, random walk, flicker) beside the AR by the composite GLS fit, the AR's "
+         "driving variance refitted (docs/fitting.md)";
   return m;
 }
 
@@ -368,6 +387,19 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.latent = fit::fitLatentModel(x, lo);
         ax.kind = opt.kind;
         ax.written.latent = ax.latent;
+        for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
+        break;
+      }
+      case IdentifyKind::ArSlow: {
+        fit::ArSlowFitOptions so;
+        so.sampleInterval = dt;
+        so.order = os;
+        so.scanStart = true;
+        ax.arSlow = fit::fitArPlusSlow(x, so);
+        ax.latent = ax.arSlow->joint;
+        ax.kind = IdentifyKind::ArSlow;
+        ax.written.latent = ax.latent;
+        ax.written.notes.push_back(describeArSlow(*ax.arSlow, sensor));
         for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
         break;
       }

@@ -12,6 +12,9 @@
 //          comparison (AxisIdentification::gaussMarkov), not written.
 //   Latent the composite latent-process fit over all 48 term sets (white, quantization, 0-2 GM,
 //          flicker, random walk, drift), chosen by BIC; docs/fitting.md.
+//   ArSlow Burg AR(p) for the short tau plus slow terms (GM, random walk, flicker) selected and
+//          fitted beside it on the Allan variance, the AR's driving variance refitted jointly
+//          (fit/ar_slow_fit.hpp); written as an `ar` effect plus the slow terms' effects.
 //   Allan  IEEE 952 five-term fit (Q, N, B, K, R) of the Allan variance, correlated-point GLS;
 //          only detected terms are written.
 //   Auto   what the data ask for (the rule is stated in identify_auto.cpp, above chooseAuto, and
@@ -41,6 +44,7 @@
 #include <vector>
 
 #include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/ar_slow_fit.hpp"
 #include "errormodels/fit/composite_fit.hpp"
 #include "errormodels/fit/gauss_markov_fit.hpp"
 #include "errormodels/fit/model_writer.hpp"
@@ -51,8 +55,8 @@
 
 namespace sinsim::errormodels {
 
-enum class IdentifyKind { Ar, Gm, Allan, Auto, Latent };
-std::string toString(IdentifyKind kind);  ///< "ar", "gm", "allan", "auto", "latent"
+enum class IdentifyKind { Ar, Gm, Allan, Auto, Latent, ArSlow };
+std::string toString(IdentifyKind kind);  ///< "ar", "gm", "allan", "auto", "latent", "ar+slow"
 IdentifyKind identifyKindByName(const std::string& name);   ///< InputError listing the known ones
 /// "mdl" | "bic" | "aic" | "fpe" | "paper" -> criterion; InputError otherwise.
 fit::OrderCriterion orderCriterionByName(const std::string& name);
@@ -107,7 +111,8 @@ struct AxisIdentification {
   std::optional<fit::OrderSelection> arDenoised;   ///< AR on the denoised signal (denoise = Db5)
   std::optional<fit::ArRandomWalkFit> composite;   ///< AR + random walk (Auto)
   std::optional<fit::GaussMarkovFit> gaussMarkov;
-  std::optional<fit::LatentFit> latent;            ///< composite latent fit (Gm, Latent)
+  std::optional<fit::LatentFit> latent;            ///< composite latent fit (Gm, Latent, ArSlow)
+  std::optional<fit::ArSlowFit> arSlow;            ///< AR + slow terms (ArSlow)
   std::optional<fit::AllanFit> allanFit;           ///< five-term fit of the whole curve
   /// Allan terms fitted beside an AR on the long-tau part (Auto); the AR carries N and Q.
   std::optional<fit::AllanFit> allanLongTau;

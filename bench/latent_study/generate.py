@@ -6,6 +6,9 @@ Issue 11's five cases at a given rate and length, one gyro-like channel per reco
   white+2gm           white + two GMs, taus a decade apart
   white+flicker+rw    white + 1/f flicker + random walk
   quantization+white  white noise whose increments are output-quantized with carry
+and, only when asked by --case (the `--kind ar+slow` study, fit/ar_slow_fit.hpp):
+  ar2+rw              AR(2) + random walk
+  ar2+gm              AR(2) + a slow first-order GM
 
 How each process is made (on purpose not the way the fit models it, where there is a choice):
   white        N / sqrt(dt) * normal samples
@@ -19,6 +22,8 @@ How each process is made (on purpose not the way the fit models it, where there 
                B^2 in IEEE 952's convention) over an FFT twice the record's length, first half kept.
                No sum of GMs, no AR: nothing the fit is built from.
   quantization the angle (cumulative increment) rounded to an LSB, the rate = difference / dt
+  AR(2)        scipy.signal.lfilter of normal driving noise through 1 / A(z), after a burn-in of
+               20 x the slower pole's time constant (the fit uses Burg and closed forms)
 
 Output (stdout): per record one JSON line (case, rate, duration, seed, term set, true parameters
 in SI with the fit's parameter names, n) followed by n little-endian float64 samples. Read by
@@ -35,6 +40,7 @@ import sys
 import numpy as np
 
 CASES = ["white+gm", "white+gm+rw", "white+2gm", "white+flicker+rw", "quantization+white"]
+AR_CASES = ["ar2+rw", "ar2+gm"]
 DEG = math.pi / 180.0
 
 
@@ -50,7 +56,7 @@ def parameters(case, rate, duration):
     Kf = 2.0 * K                          # the random walk beside the flicker
     Q = N * math.sqrt(1.0 / rate) / math.sqrt(12.0)  # LSB = per-sample white increment sd
     terms = {"quantization": False, "white": True, "gm": 0, "flicker": False,
-             "random_walk": False, "drift": False}
+             "random_walk": False, "drift": False, "ar": False}
     if case == "white+gm":
         terms["gm"] = 1
         p = {"white": N, "gm1.sigma": s1, "gm1.tau": T1}
@@ -66,9 +72,34 @@ def parameters(case, rate, duration):
     elif case == "quantization+white":
         terms["quantization"] = True
         p = {"white": N, "quantization": Q}
+    elif case in AR_CASES:
+        # AR(2) with real poles 0.9^(100 Hz / rate) and 0.5^(100 Hz / rate) (slower pole: 95 ms),
+        # driving variance E set so that its long-tau white density is N (E = N^2 A(1)^2 / dt).
+        r1, r2 = 0.9 ** (100.0 / rate), 0.5 ** (100.0 / rate)
+        a = [-(r1 + r2), r1 * r2]
+        E = N * N * (1.0 + a[0] + a[1]) ** 2 * rate
+        terms.update(white=False, ar=True)
+        p = {"ar.a": a, "ar.sigma": math.sqrt(E)}
+        if case == "ar2+rw":
+            # K = 600 N / duration: the walk crosses the AR's white level at tau = sqrt(3) N / K
+            # = duration / 346, so it dominates the last ~5 octaves of tau <= duration / 10.
+            terms["random_walk"] = True
+            p["random_walk"] = 3.0 * K
+        else:
+            # GM tau duration / 60 (20 s at 20 min), sigma 0.002 deg/s: its hump (~0.4 sigma^2
+            # near 2 tau) is ~5x the AR's white level there.
+            terms["gm"] = 1
+            p.update({"gm1.sigma": 0.002 * DEG, "gm1.tau": duration / 60.0})
     else:
-        raise SystemExit(f"unknown case {case!r}; known: {', '.join(CASES)}")
+        raise SystemExit(f"unknown case {case!r}; known: {', '.join(CASES + AR_CASES)}")
     return terms, p
+
+
+def ar_process(rng, n, a, sigma):
+    from scipy.signal import lfilter
+    burn = int(20.0 / (1.0 - max(abs(r) for r in np.roots([1.0] + a)))) + 10
+    e = sigma * rng.standard_normal(n + burn)
+    return lfilter([1.0], [1.0] + a, e)[burn:]
 
 
 def gauss_markov(rng, n, dt, sigma, tau):
@@ -100,8 +131,11 @@ def record(case, rate, duration, seed):
     terms, p = parameters(case, rate, duration)
     dt = 1.0 / rate
     n = int(round(duration * rate))
-    rng = np.random.default_rng([seed, CASES.index(case), int(rate), int(duration)])
-    x = p["white"] / math.sqrt(dt) * rng.standard_normal(n)
+    rng = np.random.default_rng([seed, (CASES + AR_CASES).index(case), int(rate), int(duration)])
+    if "ar.a" in p:
+        x = ar_process(rng, n, p["ar.a"], p["ar.sigma"])
+    else:
+        x = p["white"] / math.sqrt(dt) * rng.standard_normal(n)
     for g in (1, 2):
         if f"gm{g}.sigma" in p:
             x += gauss_markov(rng, n, dt, p[f"gm{g}.sigma"], p[f"gm{g}.tau"])
@@ -120,7 +154,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rate", type=float, action="append", help="Hz (repeatable; default 100 and 1000)")
     ap.add_argument("--duration", type=float, action="append", help="s (repeatable; default 1200 and 7200)")
-    ap.add_argument("--case", action="append", help="(repeatable; default all five)")
+    ap.add_argument("--case", action="append", help="(repeatable; default the five latent cases)")
     ap.add_argument("--seeds", type=int, default=200)
     ap.add_argument("--first-seed", type=int, default=0)
     a = ap.parse_args()

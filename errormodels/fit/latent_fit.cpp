@@ -10,6 +10,7 @@
 #include "common/number_text.hpp"
 #include "common/progress.hpp"
 #include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/special.hpp"
@@ -18,25 +19,25 @@ namespace sinsim::errormodels::fit {
 
 std::size_t LatentTermSet::parameterCount() const {
   return std::size_t(quantization) + std::size_t(white) + 2 * std::size_t(gm) + std::size_t(flicker) +
-         std::size_t(randomWalk) + std::size_t(drift);
+         std::size_t(randomWalk) + std::size_t(drift) + std::size_t(ar);
 }
 
 std::size_t LatentTermSet::termCount() const {
   return std::size_t(quantization) + std::size_t(white) + std::size_t(gm) + std::size_t(flicker) +
-         std::size_t(randomWalk) + std::size_t(drift);
+         std::size_t(randomWalk) + std::size_t(drift) + std::size_t(ar);
 }
 
 std::string LatentTermSet::name() const {
   LatentModel m;
   m.quantization = quantization, m.white = white, m.flicker = flicker;
-  m.randomWalk = randomWalk, m.drift = drift;
+  m.randomWalk = randomWalk, m.drift = drift, m.arVariance = ar;
   m.gm.resize(static_cast<std::size_t>(gm));
   return m.termNames();
 }
 
 bool LatentTermSet::operator==(const LatentTermSet& o) const {
   return quantization == o.quantization && white == o.white && gm == o.gm && flicker == o.flicker &&
-         randomWalk == o.randomWalk && drift == o.drift;
+         randomWalk == o.randomWalk && drift == o.drift && ar == o.ar;
 }
 
 std::vector<LatentTermSet> latentCandidateSets(bool quantization, int maxGm, bool flicker,
@@ -86,6 +87,8 @@ struct Problem {
   /// The five non-GM Allan basis columns at the points (allanColumn), computed once: they do not
   /// depend on the GM taus the search varies.
   std::array<Eigen::VectorXd, kAllanTermCount> basis;
+  std::vector<double> arPolynomial;  ///< of the AR term (LatentFitOptions::arPolynomial)
+  Eigen::VectorXd arColumn;          ///< its Allan variance at unit driving variance
 };
 
 /// Column of a five-term Allan basis function (index in AllanTermKind order) at the points.
@@ -98,7 +101,7 @@ Eigen::VectorXd allanColumn(const Problem& p, std::size_t kind) {
   return c;
 }
 
-/// A fit of one term set: the variance coefficients in design order (Q, N, gm..., B, K, R).
+/// A fit of one term set: the variance coefficients in design order (Q, N, AR, gm..., B, K, R).
 struct SetFit {
   LatentTermSet set;
   std::vector<double> T;      ///< GM correlation times [s]
@@ -107,14 +110,15 @@ struct SetFit {
   bool allPositive = false;
 };
 
-/// The design matrix of a set: one column per variance coefficient, in the order Q, N, gm..., B,
-/// K, R (parameterCount() - gm columns: a GM's tau is not a column).
+/// The design matrix of a set: one column per variance coefficient, in the order Q, N, AR, gm...,
+/// B, K, R (parameterCount() - gm columns: a GM's tau is not a column).
 Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
   const auto n = static_cast<Eigen::Index>(p.m.size());
   Eigen::MatrixXd X(n, static_cast<Eigen::Index>(s.parameterCount() - T.size()));
   Eigen::Index j = 0;
   if (s.quantization) X.col(j++) = p.basis[0];
   if (s.white) X.col(j++) = p.basis[1];
+  if (s.ar) X.col(j++) = p.arColumn;
   for (double t : T) {
     for (Eigen::Index i = 0; i < n; ++i) X(i, j) = gmDiscreteAllanVariance(1.0, t, p.dt, p.m[std::size_t(i)]);
     ++j;
@@ -190,12 +194,16 @@ SetFit fitSet(const Problem& p, const LatentTermSet& s) {
   return best;
 }
 
-LatentModel modelOf(const SetFit& f) {
+LatentModel modelOf(const Problem& p, const SetFit& f) {
   LatentModel m;
   Eigen::Index j = 0;
   auto next = [&]() { return std::sqrt(std::max(f.theta(j++), 0.0)); };
   if (f.set.quantization) m.quantization = next();
   if (f.set.white) m.white = next();
+  if (f.set.ar) {
+    m.arPolynomial = p.arPolynomial;
+    m.arVariance = f.theta(j++);
+  }
   for (double t : f.T) m.gm.push_back({next(), t});
   if (f.set.flicker) m.flicker = next();
   if (f.set.randomWalk) m.randomWalk = next();
@@ -246,7 +254,7 @@ std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<Latent
     SetFit f = fitSet(p, s);
     LatentCandidate c;
     c.terms = s;
-    c.model = modelOf(f);
+    c.model = modelOf(p, f);
     c.chi2 = f.chi2;
     c.score = f.chi2 + latentPenalty(s, penalty);
     c.valid = f.allPositive && std::isfinite(f.chi2);
@@ -278,12 +286,12 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
     p.W = W0;
     SetFit f = fitSet(p, s);
     for (int it = 0; it < 2 && f.allPositive; ++it) {
-      p.W = diagonalWhitening(p, modelLevels(p, modelOf(f)));
+      p.W = diagonalWhitening(p, modelLevels(p, modelOf(p, f)));
       f = fitSet(p, s);
     }
     if (!f.allPositive) continue;
     const double score = f.chi2 + latentPenalty(s, penalty);
-    if (!best || score < best->score) best = LatentCandidate{s, modelOf(f), f.chi2, score, true};
+    if (!best || score < best->score) best = LatentCandidate{s, modelOf(p, f), f.chi2, score, true};
   }
   if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
   return best->model;
@@ -298,6 +306,7 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
   auto var = [&](const std::string& name) { pars.push_back({name, std::log(f.theta(j++)), true}); };
   if (f.set.quantization) var("quantization");
   if (f.set.white) var("white");
+  if (f.set.ar) var("ar.sigma");
   for (std::size_t g = 0; g < f.T.size(); ++g) {
     const std::string gn = "gm" + std::to_string(g + 1);
     var(gn + ".sigma");
@@ -384,6 +393,13 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   for (std::size_t kind = 0; kind < kAllanTermCount; ++kind) p.basis[kind] = allanColumn(p, kind);
   const std::vector<LatentTermSet> sets =
       options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
+  if (std::any_of(sets.begin(), sets.end(), [](const LatentTermSet& s) { return s.ar; })) {
+    if (options.arPolynomial.size() < 2 || options.arPolynomial.front() != 1.0)
+      throw InputError("latent fit: a set with an AR term needs its polynomial [1, a1..ap] (p >= 1)");
+    p.arPolynomial = options.arPolynomial;
+    const std::vector<double> col = arAllanVariance(p.arPolynomial, 1.0, p.m);
+    p.arColumn = Eigen::Map<const Eigen::VectorXd>(col.data(), Eigen::Index(col.size()));
+  }
   std::size_t minPar = 1000;
   for (const auto& s : sets) minPar = std::min(minPar, s.parameterCount());
   if (p.m.size() < minPar + 1)
@@ -415,7 +431,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
 
   LatentFit out;
   out.terms = best.set;
-  out.model = modelOf(best);
+  out.model = modelOf(p, best);
   out.chi2 = best.chi2;
   out.dof = p.m.size() - best.set.parameterCount();
   out.pValue = out.dof > 0 ? 1.0 - chiSquareCdf(out.chi2, double(out.dof)) : 1.0;
@@ -458,18 +474,23 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
   return best;
 }
 
-LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options) {
-  if (!(std::isfinite(options.sampleInterval) && options.sampleInterval > 0.0))
+LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleInterval) {
+  if (!(std::isfinite(sampleInterval) && sampleInterval > 0.0))
     throw InputError("latent fit: sample interval must be > 0");
   if (x.size() < 40) throw InputError("latent fit: need at least 40 samples, got " + std::to_string(x.size()));
   AllanOptions ao;
   ao.grid = TauGrid::Octave;
   ao.max_factor = x.size() / 10;
   ao.confidence_intervals = false;
-  const AllanCurve c = allanDeviation(x, 1.0 / options.sampleInterval, AllanVariant::Overlapping, ao);
-  std::vector<double> avar(c.dev.size());
-  for (std::size_t i = 0; i < avar.size(); ++i) avar[i] = c.dev[i] * c.dev[i];
-  return fitLatentModel(c.m, avar, x.size(), options);
+  const AllanCurve c = allanDeviation(x, 1.0 / sampleInterval, AllanVariant::Overlapping, ao);
+  LatentAllanPoints p{c.m, c.tau, std::vector<double>(c.dev.size()), c.dev};
+  for (std::size_t i = 0; i < p.avar.size(); ++i) p.avar[i] = c.dev[i] * c.dev[i];
+  return p;
+}
+
+LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options) {
+  const LatentAllanPoints c = latentAllanPoints(x, options.sampleInterval);
+  return fitLatentModel(c.m, c.avar, x.size(), options);
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -55,6 +55,9 @@ struct LatentTermSet {
   bool flicker = false;
   bool randomWalk = false;
   bool drift = false;
+  /// AR(p) term with the polynomial LatentFitOptions::arPolynomial held fixed and its driving
+  /// variance fitted (counts 1 parameter; fit/ar_slow_fit.hpp).
+  bool ar = false;
 
   std::size_t parameterCount() const;  ///< GM counts 2
   std::size_t termCount() const;       ///< GM counts 1
@@ -73,6 +76,9 @@ struct LatentFitOptions {
   std::vector<LatentTermSet> candidates;
   double tauMin = 0.0;  ///< [s] Allan points outside [tauMin, tauMax] are not used
   double tauMax = std::numeric_limits<double>::infinity();
+  /// [1, a1..ap] of the AR term of sets with `ar` (required by them): the shape is fixed, the
+  /// driving variance is fitted with the other variance coefficients.
+  std::vector<double> arPolynomial;
   /// Shortest GM correlation time searched, in sample intervals (`sinsim fit --kind gm` uses 2:
   /// a GM faster than that is white noise to a navigation filter at this rate).
   double minGmTauSamples = 0.5;
@@ -129,6 +135,14 @@ struct LatentFit {
   const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
   const LatentCandidate* runnerUp() const;  ///< second valid candidate, nullptr if none
 };
+
+/// The octave overlapping Allan variance the fit uses (m = 1, 2, 4, ... <= N / 10).
+struct LatentAllanPoints {
+  std::vector<std::size_t> m;
+  std::vector<double> tau, avar, dev;  ///< [s], [U^2], [U]
+};
+/// Throws InputError for dt <= 0, fewer than 40 samples or non-finite samples.
+LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleInterval);
 
 /// Fits the record x [U] (any mean; sampled at options.sampleInterval). Throws InputError for bad
 /// options, non-finite samples, or too few Allan points for the smallest candidate.

@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "errormodels/fit/allan_fit.hpp"
+#include "errormodels/fit/ar_fit.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -26,6 +27,7 @@ std::string LatentModel::termNames() const {
   };
   add(quantization > 0.0, "quantization");
   add(white > 0.0, "white");
+  add(arVariance > 0.0, "ar");
   for (std::size_t i = 0; i < gm.size(); ++i) add(true, "gm");
   add(flicker > 0.0, "flicker");
   add(randomWalk > 0.0, "random_walk");
@@ -67,6 +69,10 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
     avar[i] *= avar[i];
     for (const GmTerm& g : model.gm) avar[i] += gmDiscreteAllanVariance(g.sigma * g.sigma, g.tau, dt, m[i]);
   }
+  if (model.arVariance > 0.0) {
+    const std::vector<double> ar = arAllanVariance(model.arPolynomial, model.arVariance, m);
+    for (std::size_t i = 0; i < m.size(); ++i) avar[i] += ar[i];
+  }
   return avar;
 }
 
@@ -78,6 +84,15 @@ double latentPsd(const LatentModel& model, double dt, double w) {
     // AR(1): sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2
     const double phi = std::exp(-dt / g.tau);
     S += g.sigma * g.sigma * (1.0 - phi * phi) / (1.0 - 2.0 * phi * std::cos(w) + phi * phi);
+  }
+  if (model.arVariance > 0.0) {
+    // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k
+    double re = 0.0, im = 0.0;
+    for (std::size_t k = 0; k < model.arPolynomial.size(); ++k) {
+      re += model.arPolynomial[k] * std::cos(double(k) * w);
+      im -= model.arPolynomial[k] * std::sin(double(k) * w);
+    }
+    S += model.arVariance / (re * re + im * im);
   }
   return S;
 }

@@ -21,6 +21,11 @@
 // 2 sigma^2 T / tau [1 - T (3 - 4 e^{-tau/T} + e^{-2 tau/T}) / (2 tau)]). The fitted GM is written
 // with `rate:` = the record's rate, so the simulator draws exactly this AR(1).
 //
+// An AR(p) term (sinsim fit --kind ar+slow, fit/ar_slow_fit.hpp): the polynomial
+// A(z) = 1 + a1 z^-1 + ... + ap z^-p of a Burg fit held fixed, its driving variance E a variance
+// coefficient like the others; its Allan variance is ar::allanVariance (exact at the record's
+// interval), its PSD E / |A(e^{iw})|^2.
+//
 // Units: U is the channel's SI unit (rad/s, m/s^2). Q [U s], N [U sqrt(s)], B [U], K [U/sqrt(s)],
 // R [U/s], sigma [U], T [s].
 #pragma once
@@ -45,8 +50,12 @@ struct LatentModel {
   double randomWalk = 0.0;    ///< K [U / sqrt(s)]
   double drift = 0.0;         ///< R [U / s]
   std::vector<GmTerm> gm;     ///< first-order GM terms, in increasing tau
+  /// AR(p) term: [1, a1..ap] (empty: none) and its driving variance E [U^2] (0: absent).
+  std::vector<double> arPolynomial;
+  double arVariance = 0.0;
 
-  /// "white + gm + random_walk": the terms present, in the order above.
+  /// "ar + gm + random_walk": the terms present, in the order quantization, white, ar, gm,
+  /// flicker, random_walk, drift.
   std::string termNames() const;
 };
 

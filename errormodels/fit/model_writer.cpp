@@ -183,6 +183,17 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
                                                                    signal * time.sqrt()),
                                                {sd("white")})}));
   }
+  if (m.arVariance > 0.0) {
+    // The AR term (fit/ar_slow_fit.hpp): Burg's polynomial, its driving sigma = sqrt(E) refitted
+    // with the other terms; `rate:` the record's, the rate the polynomial belongs to.
+    b.line << "ar: AR(" << m.arPolynomial.size() - 1 << "), driving sigma +- " << q(sd("ar.sigma"), u.level)
+           << " (1 sigma, from the joint fit; the polynomial is Burg's)";
+    b.endComment();
+    b.add(EffectSpec::make(
+        "ar", {ParamSpec::numbers("a", std::vector<double>(m.arPolynomial.begin() + 1, m.arPolynomial.end())),
+               withSigma(ParamSpec::quantity("sigma", std::sqrt(m.arVariance), signal), {sd("ar.sigma")}),
+               ParamSpec::quantity("rate", rate, Dimension::frequency())}));
+  }
   for (std::size_t g = 0; g < m.gm.size(); ++g) {
     const std::string n = "gm" + std::to_string(g + 1);
     b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << ", tau +- "

@@ -136,3 +136,50 @@ TEST_CASE("latent fit round trip, seeded slice of the study: set and 2-sigma cov
   CHECK(right >= 13);
   CHECK(covered >= 0.9 * checks);
 }
+
+TEST_CASE("latent fit with an AR term recovers AR + slow terms from their exact Allan variance",
+          "[fit][latent][ar]") {
+  const double dt = 0.01;
+  const std::size_t N = 120000;  // 20 min at 100 Hz
+  const auto m = octaves(N);
+  // The seed paper's gx AR(5) polynomial, E such that the long-tau white density is 5.8e-5.
+  const std::vector<double> a{1.0, -1.0327, -0.34341, 0.037895, 0.19732, 0.14724};
+  double a1 = 0.0;
+  for (double v : a) a1 += v;
+  LatentModel base;
+  base.arPolynomial = a;
+  base.arVariance = 5.8e-5 * 5.8e-5 * a1 * a1 / dt;
+  LatentModel rw = base;
+  rw.randomWalk = 2.9e-5;
+  LatentModel gm = base;
+  gm.gm = {{3.5e-5, 20.0}};
+  LatentModel fl = base;
+  fl.flicker = 1.5e-5;
+  LatentFitOptions o;
+  o.sampleInterval = dt;
+  o.arPolynomial = a;
+  for (const auto& truth : {rw, gm, fl, base}) {
+    INFO(truth.termNames());
+    o.candidates.clear();
+    for (int g = 0; g <= 1; ++g)
+      for (int k = 0; k <= 1; ++k)
+        for (int b = 0; b <= 1; ++b) {
+          LatentTermSet s{false, false, g, b == 1, k == 1, false};
+          s.ar = true;
+          o.candidates.push_back(s);
+        }
+    o.minGmTauSamples = 100.0;  // slow GMs only (fit/ar_slow_fit.hpp: 10 T_c)
+    const LatentFit f = fitLatentModel(m, latentAllanVariance(truth, dt, m), N, o);
+    CHECK(f.model.termNames() == truth.termNames());
+    // Exact data: golden-section tolerance on tau and NNLS round-off only (as above).
+    CHECK(f.model.arVariance == Approx(truth.arVariance).epsilon(1e-4));
+    CHECK(f.model.randomWalk == Approx(truth.randomWalk).epsilon(1e-4).margin(1e-12));
+    CHECK(f.model.flicker == Approx(truth.flicker).epsilon(1e-4).margin(1e-12));
+    REQUIRE(f.model.gm.size() == truth.gm.size());
+    if (!truth.gm.empty()) CHECK(f.model.gm[0].tau == Approx(truth.gm[0].tau).epsilon(1e-4));
+    CHECK(f.chi2 < 1e-6);
+    CHECK(f.parameter("ar.sigma").value == Approx(std::sqrt(truth.arVariance)).epsilon(1e-4));
+  }
+  o.arPolynomial.clear();  // a set with an AR term needs its polynomial
+  CHECK_THROWS_AS(fitLatentModel(m, latentAllanVariance(base, dt, m), N, o), sinsim::InputError);
+}

@@ -116,3 +116,22 @@ TEST_CASE("flicker floor: closed form within the simulated effect's stated flatn
     CHECK(std::fabs(mean[i] - avar[i]) <= 0.05 * avar[i] + 4.0 * se[i]);
   }
 }
+
+TEST_CASE("AR term of the composite model: AR(1) equals the discrete GM, in Allan variance and PSD",
+          "[fit][latent][ar]") {
+  // Two closed forms from different derivations: ar::allanVariance (autocovariance sum) for the
+  // AR term and the GM's own closed form; an AR(1) with E = sigma^2 (1 - phi^2) is that GM.
+  const double dt = 0.01, s2 = 4e-8, T = 0.3, phi = std::exp(-dt / T);
+  LatentModel ar;
+  ar.arPolynomial = {1.0, -phi};
+  ar.arVariance = s2 * (1.0 - phi * phi);
+  LatentModel gm;
+  gm.gm = {{std::sqrt(s2), T}};
+  std::vector<std::size_t> m;
+  for (std::size_t k = 1; k <= 4096; k *= 2) m.push_back(k);
+  const auto a = latentAllanVariance(ar, dt, m), g = latentAllanVariance(gm, dt, m);
+  // double-precision sums of ~T/dt = 30 terms: 1e-12 relative is far above their round-off
+  for (std::size_t i = 0; i < m.size(); ++i) CHECK(a[i] == Approx(g[i]).epsilon(1e-12));
+  for (double w : {1e-4, 0.1, 1.0, 3.0}) CHECK(latentPsd(ar, dt, w) == Approx(latentPsd(gm, dt, w)).epsilon(1e-12));
+  CHECK(ar.termNames() == "ar");
+}
