@@ -15,7 +15,7 @@ sinsim=${1:-$root/build/sinsim}
 n=${2:-100}
 out=${3:-out/outage-nees}
 mkdir -p "$out"
-drive=$(sed -n '/^start:/,$p' "$root/scenarios/car.yaml" | grep -v -e '^errors:' -e '^seed:')
+. "$root/examples/outage-study/study_scenario.sh"
 white=$root/examples/outage-study/filter-white.yaml
 sed 's/density: \([0-9.]*\)/density: \1e-1/' "$white" > "$out/white10.yaml"
 for cell in ar5 gm white white10; do
@@ -24,18 +24,7 @@ for cell in ar5 gm white white10; do
     white) model=$white ;;
     white10) model=$(cd "$out" && pwd)/white10.yaml ;;
   esac
-  cat > "$out/$cell.yaml" <<YAML
-name: $cell
-$drive
-errors: $model
-initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {sigma: [0.3 deg, 0.3 deg, 2 deg]}}
-gnss:
-  rate: 1 Hz
-  position_sigma: [1 m, 1 m, 2 m]
-  outages: [{start: 400 s, duration: 30 s}, {start: 800 s, duration: 60 s},
-            {start: 1300 s, duration: 30 s}, {start: 1700 s, duration: 60 s}]
-filter: {model: $model}
-YAML
+  study_scenario "$cell" "$model" "$model" > "$out/$cell.yaml"
   echo "$cell: $n seeds" >&2
   for s in $(seq 1 "$n"); do
     "$sinsim" run "$out/$cell.yaml" --seed "$s" -o "$out/$cell/s$s" >/dev/null

@@ -16,8 +16,7 @@ sinsim=${1:-$root/build/sinsim}
 runs=${2:-200}
 out=${3:-out/outage-study}
 mkdir -p "$out"
-# car.yaml's drive without its own error model and seed
-drive=$(sed -n '/^start:/,$p' "$root/scenarios/car.yaml" | grep -v -e '^errors:' -e '^seed:')
+. "$here/study_scenario.sh"
 for truth in ar5 gm; do
   for filter in ar5 gm white; do
     case $filter in
@@ -25,18 +24,7 @@ for truth in ar5 gm; do
       *) fmodel=$root/scenarios/adis16355-$filter.yaml ;;
     esac
     cell=truth-$truth-filter-$filter
-    cat > "$out/$cell.yaml" <<YAML
-name: $cell
-$drive
-errors: $root/scenarios/adis16355-$truth.yaml
-initial_errors: {position: {sigma: 3 m}, velocity: {sigma: 0.1 m/s}, attitude: {sigma: [0.3 deg, 0.3 deg, 2 deg]}}
-gnss:
-  rate: 1 Hz
-  position_sigma: [1 m, 1 m, 2 m]
-  outages: [{start: 400 s, duration: 30 s}, {start: 800 s, duration: 60 s},
-            {start: 1300 s, duration: 30 s}, {start: 1700 s, duration: 60 s}]
-filter: {model: $fmodel}
-YAML
+    study_scenario "$cell" "$root/scenarios/adis16355-$truth.yaml" "$fmodel" > "$out/$cell.yaml"
     echo "$cell: $runs runs" >&2
     "$sinsim" mc "$out/$cell.yaml" --runs "$runs" --seed 1 --no-progress -o "$out/$cell" >/dev/null
   done
