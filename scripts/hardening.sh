@@ -58,8 +58,10 @@ start=$(date +%s)
 # traces keep file:line.
 # No MPI, no benchmarks and no Python module here (an ASan extension needs libasan preloaded into
 # python3): the plain build tests those.
+# SINSIM_UNITY: the libraries as unity units: UBSan's checks make every Eigen instantiation
+# expensive, and a unit compiles each one once (docs/fuzzing.md has the numbers).
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
-  -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_CXX_COMPILER=clang++ -DSINSIM_UNITY=ON \
   -DSINSIM_SANITIZE=ON -DSINSIM_FUZZ=ON -DSINSIM_MPI=OFF -DSINSIM_BUILD_BENCH=OFF -DSINSIM_PYTHON=OFF >/dev/null
 # Fuzz targets first (the libraries and four small programs), so that the fuzzing always fits.
 budgeted 60 "sanitizer build of the fuzz targets" \
