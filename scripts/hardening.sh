@@ -96,7 +96,7 @@ for ((r = 0; r < rounds; ++r)); do
   seconds=$(( ($(left) - 20) / (rounds - r) - 15 ))  # 15 s: start-up and seed replay
   ((seconds > FUZZ_SECONDS)) && seconds=$FUZZ_SECONDS
   round=("${targets[@]:r*jobs:jobs}")
-  if ((seconds < 10)); then echo "hardening: fuzz_${round[*]} skipped (CI time budget)"; continue; fi
+  if ((seconds < 10)); then echo "hardening: fuzzing ${round[*]} skipped (CI time budget)"; continue; fi
   echo "hardening: fuzzing ${round[*]} for ${seconds} s each, side by side"
   pids=()
   for target in "${round[@]}"; do fuzz_one "$target" "$seconds" & pids+=($!); done
