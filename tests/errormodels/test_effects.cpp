@@ -171,6 +171,40 @@ accel:
   CHECK((s.dv_b - 1.0002 * dv).norm() < 1e-15);
 }
 
+TEST_CASE("scale_factor with a sigma: a per-axis turn-on scale error, N(value, sigma²) per run") {
+  // Over R runs each axis's drawn scale error has mean `value` and variance sigma²: the sample
+  // mean within 4 sigma/sqrt(R) (failure ~6e-5 per axis for a right draw), the sample variance
+  // within 4 sqrt(2/R) relative (normal approximation of χ²(R−1)/(R−1)); the axes uncorrelated
+  // (|r| < 4/sqrt(R)). The same run twice: the same numbers, bit for bit.
+  const auto m = ImuErrorModel::fromString(R"(
+accel:
+  triad:
+    - {type: scale_factor, diagonal: [100 ppm, 0, -300 ppm], sigma: 2000 ppm}
+)", "sf.yaml");
+  const int R = 4000;
+  const Vec3 mean(100e-6, 0, -300e-6);
+  const double sigma = 2000e-6;
+  Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
+  double sumXY = 0.0;
+  for (int r = 0; r < R; ++r) {
+    const StreamKey key{3, std::uint64_t(r)};
+    auto s = sample(0.01, 0.01, Vec3::Zero(), Vec3::Ones());
+    m.instantiate(100, key)->corrupt(s, NAN);
+    const Vec3 e = s.dv_b - Vec3::Ones() - mean;
+    auto again = sample(0.01, 0.01, Vec3::Zero(), Vec3::Ones());
+    m.instantiate(100, key)->corrupt(again, NAN);
+    REQUIRE(again.dv_b == s.dv_b);
+    sum += e;
+    sum2 += e.cwiseProduct(e);
+    sumXY += e.x() * e.y();
+  }
+  for (int i = 0; i < 3; ++i) {
+    CHECK(std::abs(sum[i] / R) < 4.0 * sigma / std::sqrt(double(R)));
+    CHECK(std::abs(sum2[i] / R / (sigma * sigma) - 1.0) < 4.0 * std::sqrt(2.0 / R));
+  }
+  CHECK(std::abs(sumXY / R) / (sigma * sigma) < 4.0 / std::sqrt(double(R)));
+}
+
 TEST_CASE("sinusoid, ramp, warmup: increments are the exact integrals; temperature needs T") {
   auto m = ImuErrorModel::fromString(R"(
 gyro:
