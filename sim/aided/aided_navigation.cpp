@@ -133,20 +133,31 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::N
   }
   if (!config_.filter.enabled) return out;
 
-  // Sensor-error compensation of this interval (first order in dt).
+  // Sensor-error compensation of this interval (first order in dt and in the scale errors): the
+  // increments' errors b dt + diag(s) u of the measured u.
   const nav::Mat3 C = sd.state().q_nb.toRotationMatrix();
   const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
+  nav::Vec3 sg = nav::Vec3::Zero(), sa = nav::Vec3::Zero();  // ŝ ∘ u [rad], [m/s]
+  if (filter_.hasScaleStates()) {
+    sg = filter_.gyroScale().cwiseProduct(m.dtheta_b);
+    sa = filter_.accelScale().cwiseProduct(m.dv_b);
+  }
   // Nothing estimated, nothing touched: a filter without fixes (and zero prior means) leaves the
   // navigation bit-identical to the free-inertial run (correct() renormalises q_nb).
-  if (!(bg.isZero() && ba.isZero())) sd.correct(nav::Vec3::Zero(), C * ba * m.dt, -C * bg * m.dt);
+  if (!(bg.isZero() && ba.isZero() && sg.isZero() && sa.isZero()))
+    sd.correct(nav::Vec3::Zero(), C * ba * m.dt + C * sa, -C * bg * m.dt - C * sg);
 
   // Means of the linearisation point over the propagation step.
   const nav::NavState& s = sd.state();
   sum_.lat += s.lat * m.dt;
   sum_.h += s.h * m.dt;
   sum_.v_n += s.v_n * m.dt;
-  sum_.f_n += C * (m.dv_b - ba * m.dt);
+  sum_.f_n += C * (m.dv_b - ba * m.dt - sa);
   sum_.C_nb += C * m.dt;
+  if (filter_.hasScaleStates()) {  // Σ C_nb diag(u), u compensated: the scale states' inputs
+    sumScale_.C_omega += C * (m.dtheta_b - bg * m.dt - sg).asDiagonal();
+    sumScale_.C_f += C * (m.dv_b - ba * m.dt - sa).asDiagonal();
+  }
   stepTime_ += m.dt;
 
   const GnssConfig& g = config_.gnss;
@@ -160,13 +171,17 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::N
   p.f_n = sum_.f_n / stepTime_;
   p.C_nb = sum_.C_nb / stepTime_;
   filter_.setVerticalGains(sd.dampingGainK1(), sd.dampingGainK2());
-  filter_.propagate(p, stepTime_);
+  ScaleInput scale;
+  scale.C_omega = sumScale_.C_omega / stepTime_;
+  scale.C_f = sumScale_.C_f / stepTime_;
+  filter_.propagate(p, stepTime_, scale);
   // The sampled (ar) blocks' predicted effect over the step (zero without them, or without fixes).
   const Vec9 drift = filter_.takeNavCorrection();
   if (!drift.isZero()) sd.correct(drift.segment<3>(0), drift.segment<3>(3), drift.segment<3>(6));
   sum_ = nav::InsErrorPoint();
   sum_.f_n.setZero();
   sum_.C_nb.setZero();
+  sumScale_ = ScaleInput();
   stepTime_ = 0.0;
 
   out.outage = g.inOutage(truth.t);

@@ -4,7 +4,8 @@
 // integrated the measured sample; what it leaves in the strapdown is the navigation solution.
 //
 // Closed loop: the filter's sensor-error estimate is removed from each interval's effect on the
-// strapdown (first order in dt: δv −= C_nb b̂_a dt, ψ −= −C_nb b̂_g dt), and each update's δr, δv,
+// strapdown (first order in dt: δv −= C_nb (b̂_a dt + ŝ_a ∘ dv_b), ψ −= −C_nb (b̂_g dt + ŝ_g ∘ dθ_b),
+// ŝ the scale-factor estimates), and each update's δr, δv,
 // ψ are fed back through Strapdown::correct and zeroed in the filter.
 //
 // Random streams (errormodels/random.hpp), keyed by (seed, run): stream id (2, 0) the initial
@@ -81,6 +82,7 @@ class AidedNavigation {
   nav::NavState alignAnchor_;  // position and velocity held during alignment
   // linearisation point accumulated since the last propagation (means over the step)
   nav::InsErrorPoint sum_;
+  ScaleInput sumScale_;  // Σ C_nb diag(dθ_b), Σ C_nb diag(dv_b) (with scale-factor states only)
   double stepTime_ = 0.0;
   long long fixIndex_ = 0;  // next GNSS epoch number (t = k / rate)
   std::vector<OutageResult> outages_;

@@ -29,6 +29,7 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
     const SensorAxisModel& m = axis < 3 ? model_.gyro[axis] : model_.accel[axis - 3];
     for (const StateBlock& b : m.blocks) {
       placed_.push_back({axis, offset, b});
+      hasScale_ = hasScale_ || b.scale;
       P_.block(offset, offset, b.size, b.size) = b.P0;
       x_.segment(offset, b.size) = b.x0;
       if (!b.discrete) {
@@ -43,16 +44,37 @@ ErrorStateFilter::ErrorStateFilter(const nav::Earth& earth, FilterSensorModel mo
 }
 
 void ErrorStateFilter::refreshSensorEstimates() {
-  gyroEstimate_ = sensorError(0);
-  accelEstimate_ = sensorError(3);
+  gyroEstimate_ = sensorError(0, false);
+  accelEstimate_ = sensorError(3, false);
+  if (!hasScale_) return;
+  gyroScaleEstimate_ = sensorError(0, true);
+  accelScaleEstimate_ = sensorError(3, true);
 }
 
-nav::Vec3 ErrorStateFilter::sensorError(int firstAxis) const {
+// The continuous blocks' estimate of the axes firstAxis..firstAxis+2: the additive error (scale
+// false) or the scale factor (scale true).
+nav::Vec3 ErrorStateFilter::sensorError(int firstAxis, bool scale) const {
   nav::Vec3 e = nav::Vec3::Zero();
   for (const Placed& p : placed_)
-    if (!p.block.discrete && p.axis >= firstAxis && p.axis < firstAxis + 3)
+    if (!p.block.discrete && p.block.scale == scale && p.axis >= firstAxis && p.axis < firstAxis + 3)
       e[p.axis - firstAxis] += p.block.c.dot(x_.segment(p.offset, p.block.size));
   return e;
+}
+
+ErrorStateFilter::AxisInputs ErrorStateFilter::axisInputsAt(const nav::InsErrorPoint& p,
+                                                            const ScaleInput& s) const {
+  AxisInputs in;
+  in.Gg = nav::gyroErrorInput(p.C_nb);
+  in.Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
+  // A scale error s_i is the bias ω_i s_i (f_i s_i): the same input with C_nb diag(u) for C_nb.
+  in.Sg = nav::gyroErrorInput(s.C_omega);
+  in.Sa = nav::accelErrorInput(s.C_f, options_.vertical);
+  return in;
+}
+
+Eigen::Matrix<double, 9, 1> ErrorStateFilter::AxisInputs::column(const Placed& pl) const {
+  if (pl.block.scale) return pl.axis < 3 ? Sg.col(pl.axis) : Sa.col(pl.axis - 3);
+  return pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
 }
 
 // White sensor noise enters the INS errors directly: Q_n = G_g diag(N_g²) G_gᵀ + G_a diag(N_a²) G_aᵀ.
@@ -66,18 +88,17 @@ nav::Mat9 ErrorStateFilter::whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat
 }
 
 void ErrorStateFilter::continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F,
-                                       Eigen::MatrixXd& Qc) const {
+                                       Eigen::MatrixXd& Qc, const ScaleInput& s) const {
   const int n = size();
   F = Eigen::MatrixXd::Zero(n, n);
   Qc = Eigen::MatrixXd::Zero(n, n);
   F.topLeftCorner<9, 9>() =
       nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
-  const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
-  const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
-  Qc.topLeftCorner<9, 9>() = whiteNoiseInput(Gg, Ga);
+  const AxisInputs in = axisInputsAt(p, s);
+  Qc.topLeftCorner<9, 9>() = whiteNoiseInput(in.Gg, in.Ga);
   for (const Placed& pl : placed_) {
     const StateBlock& b = pl.block;
-    const auto g = pl.axis < 3 ? Gg.col(pl.axis) : Ga.col(pl.axis - 3);
+    const Eigen::Matrix<double, 9, 1> g = in.column(pl);
     if (b.discrete) continue;  // sampled processes: aggregated over the step (propagate)
     F.block(0, pl.offset, 9, b.size) = g * b.c;  // the sensor error c x drives the INS errors
     F.block(pl.offset, pl.offset, b.size, b.size) = b.F;
@@ -108,17 +129,13 @@ const std::vector<DiscreteSystem>& ErrorStateFilter::continuousBlocks(double T) 
   return blockCache_.back().blocks;
 }
 
-void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double T,
-                                            BlockTransition& Phi, Eigen::MatrixXd& Qd) {
+void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, const ScaleInput& s,
+                                            double T, BlockTransition& Phi, Eigen::MatrixXd& Qd) {
   const int n = size();
   const nav::Mat9 A = nav::insErrorDynamics(*earth_, p, options_.vertical, options_.k1, options_.k2);
-  const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
-  const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);
-  const nav::Mat9 Qn = whiteNoiseInput(Gg, Ga);
-  for (std::size_t i = 0; i < inputs_.size(); ++i) {
-    const int axis = placed_[inputPlaced_[i]].axis;
-    inputs_[i].g = axis < 3 ? Gg.col(axis) : Ga.col(axis - 3);
-  }
+  const AxisInputs in = axisInputsAt(p, s);
+  const nav::Mat9 Qn = whiteNoiseInput(in.Gg, in.Ga);
+  for (std::size_t i = 0; i < inputs_.size(); ++i) inputs_[i].g = in.column(placed_[inputPlaced_[i]]);
   Phi.nav.setZero(9, n);
   qdN_.setZero(9, n);
   if (Phi.block.size() != placed_.size()) {
@@ -145,7 +162,7 @@ void ErrorStateFilter::discretizeContinuous(const nav::InsErrorPoint& p, double 
   }
   // A process too fast for one series step: the whole system, halving and doubling.
   Eigen::MatrixXd F, Qc;
-  continuousModel(p, F, Qc);
+  continuousModel(p, F, Qc, s);
   const DiscreteSystem d = discretize(F, Qc, T);
   Phi.nav = d.Phi.topRows<9>();
   for (std::size_t i = 0; i < placed_.size(); ++i) {
@@ -189,10 +206,10 @@ void ErrorStateFilter::spliceDiscrete(std::size_t placedIndex, const Eigen::Matr
   Qd.topLeftCorner<9, 9>() += (T * T) * U * agg.QdMuMu * U.transpose();
 }
 
-void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T) {
+void ErrorStateFilter::propagate(const nav::InsErrorPoint& p, double T, const ScaleInput& s) {
   BlockTransition& Phi = phi_;
   Eigen::MatrixXd& Qd = qd_;
-  discretizeContinuous(p, T, Phi, Qd);
+  discretizeContinuous(p, s, T, Phi, Qd);
   Eigen::Matrix<double, 9, 1> navMean = Eigen::Matrix<double, 9, 1>::Zero();
   const nav::Mat93 Gg = nav::gyroErrorInput(p.C_nb);
   const nav::Mat93 Ga = nav::accelErrorInput(p.C_nb, options_.vertical);

@@ -36,6 +36,18 @@ struct FilterSensorModel {
   int stateCount() const;
 };
 
+/// How the scale-factor states enter over a step: the means over the step of C_nb diag(ω_ib_b)
+/// [rad/s] and C_nb diag(f_b) [m/s^2] from the measured (compensated) signals, so that a gyro
+/// scale error s_i enters ψ through −(column i) s_i and an accelerometer one δv through
+/// (column i) s_i, as a bias enters through C_nb's column (Titterton & Weston 2004, §12.3.3:
+/// δω_ib_b = diag(ω_ib_b) s_g, δf_b = diag(f_b) s_a). The mean of the product over the step is
+/// the exact average input of a constant s (the rest of the linearisation is held at the step's
+/// means likewise). Zero (no rotation, no force) when the filter has no scale-factor states.
+struct ScaleInput {
+  nav::Mat3 C_omega = nav::Mat3::Zero();  // [rad/s]
+  nav::Mat3 C_f = nav::Mat3::Zero();      // [m/s^2]
+};
+
 struct FilterOptions {
   nav::VerticalChannel vertical = nav::VerticalChannel::Free;
   double k1 = 0.0, k2 = 0.0;  // damped vertical channel gains [1/s], [1/s^2]
@@ -57,6 +69,12 @@ class ErrorStateFilter {
   /// is left in x's navigation part by propagate.
   const nav::Vec3& gyroError() const { return gyroEstimate_; }
   const nav::Vec3& accelError() const { return accelEstimate_; }
+  /// Current scale-factor estimates per body axis [-] (zero without scale-factor states): the
+  /// caller removes s_i u_i from each measured increment u_i as it removes the biases.
+  const nav::Vec3& gyroScale() const { return gyroScaleEstimate_; }
+  const nav::Vec3& accelScale() const { return accelScaleEstimate_; }
+  /// Whether the model has scale-factor states (and propagate needs a ScaleInput).
+  bool hasScaleStates() const { return hasScale_; }
 
   /// The damped vertical channel's gains as the strapdown runs them [1/s], [1/s^2].
   void setVerticalGains(double k1, double k2) {
@@ -67,9 +85,11 @@ class ErrorStateFilter {
   /// navigation part of x is the predicted effect of the sampled blocks' estimates only (zero
   /// without them); the caller compensates the IMU with gyroError/accelError for the rest and
   /// feeds the navigation part back with takeNavCorrection.
-  void propagate(const nav::InsErrorPoint& p, double T);
-  /// Continuous system (F, Qc) at p, for tests and for callers that discretise themselves.
-  void continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F, Eigen::MatrixXd& Qc) const;
+  /// s: the step's scale-factor inputs (ignored without scale-factor states).
+  void propagate(const nav::InsErrorPoint& p, double T, const ScaleInput& s = ScaleInput());
+  /// Continuous system (F, Qc) at p (and s), for tests and for callers that discretise themselves.
+  void continuousModel(const nav::InsErrorPoint& p, Eigen::MatrixXd& F, Eigen::MatrixXd& Qc,
+                       const ScaleInput& s = ScaleInput()) const;
 
   /// Position fix: dz = (INS antenna position − GNSS position) in NED [m]; leverArm_n = C_nb l_b
   /// [m] (the antenna seen from the IMU, NED); sigma [m] per axis.
@@ -83,15 +103,25 @@ class ErrorStateFilter {
   Eigen::Matrix<double, 9, 1> takeNavCorrection();
 
  private:
-  nav::Vec3 sensorError(int firstAxis) const;
+  // Each placed block holds its own copy of the model's block (no pointer into model_: a copied
+  // or moved filter stays valid on its own).
+  struct Placed { int axis; int offset; StateBlock block; };  // axis 0-2 gyro, 3-5 accel
+  nav::Vec3 sensorError(int firstAxis, bool scale) const;
+  /// Input columns of each body axis: rows 0-2 of the gyro's, 3-5 of the accelerometer's errors
+  /// into the INS errors; for a scale block the ScaleInput's columns.
+  struct AxisInputs {
+    nav::Mat93 Gg, Ga, Sg, Sa;
+    Eigen::Matrix<double, 9, 1> column(const Placed& pl) const;
+  };
+  AxisInputs axisInputsAt(const nav::InsErrorPoint& p, const ScaleInput& s) const;
   nav::Mat9 whiteNoiseInput(const nav::Mat93& Gg, const nav::Mat93& Ga) const;
   void refreshSensorEstimates();  // after every change of x's sensor part
   const StepAggregation& aggregation(std::size_t placedIndex, double T);
   /// The continuous blocks' own Φ_b, Qd_b over T (constant per model and step: computed once).
   const std::vector<DiscreteSystem>& continuousBlocks(double T);
   /// Φ's navigation rows and blocks and the whole Qd of the continuous part over T at p.
-  void discretizeContinuous(const nav::InsErrorPoint& p, double T, BlockTransition& Phi,
-                            Eigen::MatrixXd& Qd);
+  void discretizeContinuous(const nav::InsErrorPoint& p, const ScaleInput& s, double T,
+                            BlockTransition& Phi, Eigen::MatrixXd& Qd);
   void spliceDiscrete(std::size_t placedIndex, const Eigen::Matrix<double, 9, 9>& A,
                       const Eigen::Matrix<double, 9, 1>& g, double T, BlockTransition& Phi,
                       Eigen::MatrixXd& Qd, Eigen::Matrix<double, 9, 1>& navMean);
@@ -99,9 +129,6 @@ class ErrorStateFilter {
   const nav::Earth* earth_;
   FilterSensorModel model_;
   FilterOptions options_;
-  // Each placed block holds its own copy of the model's block (no pointer into model_: a copied
-  // or moved filter stays valid on its own).
-  struct Placed { int axis; int offset; StateBlock block; };  // axis 0-2 gyro, 3-5 accel
   std::vector<Placed> placed_;
   std::vector<std::vector<StepAggregation>> aggregations_;  // per placed block, per step length
   std::vector<InputBlock> inputs_;         // the continuous placed blocks (g set per step)
@@ -118,6 +145,8 @@ class ErrorStateFilter {
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
   nav::Vec3 gyroEstimate_ = nav::Vec3::Zero(), accelEstimate_ = nav::Vec3::Zero();
+  nav::Vec3 gyroScaleEstimate_ = nav::Vec3::Zero(), accelScaleEstimate_ = nav::Vec3::Zero();
+  bool hasScale_ = false;
 };
 
 }  // namespace sinsim::sim::aided

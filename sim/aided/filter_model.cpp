@@ -12,7 +12,7 @@ using errormodels::EffectList;
 using errormodels::EffectSpec;
 using errormodels::Sensor;
 
-const char* kSupported = "white, bias, random_walk, gauss_markov, ar";
+const char* kSupported = "white, bias, random_walk, gauss_markov, ar; scale_factor on the triad";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
@@ -51,6 +51,34 @@ void addEffect(const EffectSpec& e, SensorAxisModel& axis, std::vector<Diagnosti
   }
 }
 
+// A triad's scale_factor effects as one constant state per axis (several add: their means and
+// variances, first order in the scale errors); misalignment and g-sensitivity have no states.
+// Returns the prior mean and variance per axis; an axis with neither gets no state.
+void addScaleFactors(const errormodels::SensorSpec& ss, Eigen::Vector3d& mean, Eigen::Vector3d& var,
+                     std::vector<Diagnostic>& problems) {
+  mean.setZero();
+  var.setZero();
+  for (const EffectSpec& e : ss.triad) {
+    if (!e.enabled) continue;
+    if (e.type != "scale_factor") {
+      problem(problems, e,
+              "the GNSS/INS filter has no states for this triad effect (it carries scale_factor "
+              "with a diagonal); leave it out of the filter's model or set enabled: no");
+      continue;
+    }
+    const Eigen::Matrix3d S = errormodels::matrix3Of(e);
+    if (!(S - Eigen::Matrix3d(S.diagonal().asDiagonal())).isZero(0.0)) {
+      problem(problems, e,
+              "off-diagonal entries are a misalignment, which the GNSS/INS filter has no states "
+              "for; give value or diagonal");
+      continue;
+    }
+    const double sigma = errormodels::valueOr(e, "sigma", 0.0);
+    mean += S.diagonal();
+    var += Eigen::Vector3d::Constant(sigma * sigma);
+  }
+}
+
 }  // namespace
 
 FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
@@ -58,17 +86,19 @@ FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
   FilterSensorModel m;
   for (Sensor s : {Sensor::gyro, Sensor::accel}) {
     const errormodels::SensorSpec& ss = spec.sensor(s);
-    for (const EffectSpec& e : ss.triad)
-      if (e.enabled)
-        problem(problems, e,
-                "the GNSS/INS filter has no triad states (scale factor, misalignment, "
-                "g-sensitivity); leave it out of the filter's model or set enabled: no");
+    Eigen::Vector3d scaleMean, scaleVar;
+    addScaleFactors(ss, scaleMean, scaleVar, problems);
     for (int axis = 0; axis < 3; ++axis) {
       SensorAxisModel& am = s == Sensor::gyro ? m.gyro[axis] : m.accel[axis];
       std::vector<Diagnostic> repeated;  // an `all` effect's problem is reported once, at x
       for (EffectList l : {EffectList::all, errormodels::axisList(axis)})
         for (const EffectSpec& e : ss.list(l))
           if (e.enabled) addEffect(e, am, axis > 0 && l == EffectList::all ? repeated : problems);
+      if (scaleMean[axis] != 0.0 || scaleVar[axis] != 0.0) {  // after the axis's own states
+        StateBlock b = scaleFactorState(std::sqrt(scaleVar[axis]));
+        b.x0(0) = scaleMean[axis];
+        am.blocks.push_back(std::move(b));
+      }
     }
   }
   return m;
@@ -85,7 +115,7 @@ bool operator==(const StateBlock& a, const StateBlock& b) {
   auto same = [](const auto& x, const auto& y) {
     return x.rows() == y.rows() && x.cols() == y.cols() && x == y;
   };
-  return a.name == b.name && a.size == b.size && a.discrete == b.discrete &&
+  return a.name == b.name && a.size == b.size && a.discrete == b.discrete && a.scale == b.scale &&
          a.period == b.period && same(a.F, b.F) && same(a.Qc, b.Qc) && same(a.A, b.A) &&
          same(a.Qs, b.Qs) && same(a.c, b.c) && same(a.P0, b.P0) && same(a.x0, b.x0);
 }

@@ -9,9 +9,13 @@
 //   gauss_markov   → 1 state σ, τ (with a `rate`: the held discrete GM, φ = exp(−h/τ), exactly,
 //                    as an AR(1) at that rate)
 //   ar             → p companion states at the model's own rate
-// Disabled effects (`enabled: no`) are skipped. Every other effect (triad scale factor,
-// misalignment, g-sensitivity; bias_instability, ramp, sinusoid, temperature, warmup, outliers,
-// quantization) has no filter state here and is refused, naming the model file, line and key.
+//   scale_factor   → (triad, `value` or `diagonal`, optional `sigma`) 1 constant state per axis
+//                    with a mean or a sigma, prior mean the diagonal entry, prior sigma `sigma`;
+//                    after the axis's other states (several scale_factor effects add)
+// Disabled effects (`enabled: no`) are skipped. Every other effect (a scale_factor `matrix` with
+// off-diagonal entries, misalignment, g-sensitivity; bias_instability, ramp, sinusoid,
+// temperature, warmup, outliers, quantization) has no filter state here and is refused, naming
+// the model file, line and key.
 #pragma once
 
 #include <vector>

@@ -34,6 +34,14 @@ StateBlock biasState(double sigma) {
   return scalarBlock("bias", 0.0, 0.0, sigma * sigma);
 }
 
+StateBlock scaleFactorState(double sigma) {
+  if (!(std::isfinite(sigma) && sigma >= 0.0))
+    throw InputError("filter sensor state: scale-factor sigma must be >= 0");
+  StateBlock b = scalarBlock("scale_factor", 0.0, 0.0, sigma * sigma);
+  b.scale = true;
+  return b;
+}
+
 StateBlock randomWalkState(double K, double sigma0) {
   requirePositive(K, "random-walk coefficient K");
   if (!(std::isfinite(sigma0) && sigma0 >= 0.0))

@@ -7,6 +7,9 @@
 //     with a rate f      1 state   the held discrete GM, an AR(1) at f (below)
 //   ar a1..ap, σ_e, f    p states  companion form at its own rate f (below), held between samples
 //   white (density N)    no state: enters the INS errors directly with spectral density N²
+//   scale_factor σ       1 state   ẋ = 0, P0 = σ²; the sensor error is x times the axis's measured
+//                                  signal (δω = ω_i s, δf = f_i s): its input column changes with
+//                                  the motion (error_state_filter.hpp, ScaleInput)
 // The AR(p) companion state is x[n] = (y[n], y[n−1], …, y[n−p+1]):
 //   x[n+1] = A x[n] + e[n],  A = [[−a1 … −ap], [I_{p−1} 0]],  E[e eᵀ] = σ_e² e1 e1ᵀ,
 // so over m samples Φ = A^m and Qd = Σ_{j<m} A^j Q A^jᵀ (exact); P0 is the stationary Toeplitz
@@ -36,12 +39,17 @@ struct StateBlock {
   Eigen::RowVectorXd c;  // sensor error = c x
   Eigen::MatrixXd P0;    // initial covariance (stationary where the process has one)
   Eigen::VectorXd x0;    // prior mean (zero unless the model states a known value)
+  // A scale-factor block: the sensor error is (c x) times the axis's measured signal [rad/s or
+  // m/s^2], c x dimensionless; otherwise c x is the sensor error itself.
+  bool scale = false;
 };
 
 /// Constant bias with turn-on standard deviation sigma [signal] (>= 0; 0: a known value).
 StateBlock biasState(double sigma);
 /// Random walk b' = K w, K [signal/sqrt(s)] > 0, starting at 0 with standard deviation sigma0.
 StateBlock randomWalkState(double K, double sigma0 = 0.0);
+/// Constant scale-factor error of one axis with turn-on standard deviation sigma [-] (>= 0).
+StateBlock scaleFactorState(double sigma);
 /// First-order Gauss-Markov, stationary sigma [signal] > 0, correlation time tau [s] > 0.
 StateBlock gaussMarkovState(double sigma, double tau);
 /// A Gauss-Markov sampled at `rate` [Hz] and held (the model's `rate:`): exactly the AR(1)

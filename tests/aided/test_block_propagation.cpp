@@ -215,3 +215,101 @@ TEST_CASE("a copied filter does not depend on the original") {
   CHECK(copy.x() == fresh.x());
   CHECK(clutter.size() == 4);
 }
+
+TEST_CASE("scale-factor states: their input columns, and propagate equals Van Loan of the whole "
+          "system at a moving point") {
+  // A gyro scale error s enters as the rate error diag(ω_ib_b) s and an accelerometer one as
+  // diag(f_b) s (Titterton & Weston 2004, §12.3.3), so through the bias inputs with C_nb replaced
+  // by the step's mean C_nb diag(u): ψ̇ ∋ −C_nb ω_i s_gi, δv̇ ∋ C_nb f_i s_ai. The columns are
+  // built here from that formula, the propagation (block series with the scale blocks as scalar
+  // inputs, the bias / GM / random-walk blocks beside them) compared with Φ P Φᵀ + Qd from Van
+  // Loan's exponential of the whole continuous system, at T = 1 s and 0.2 s; and with a 3 ms GM
+  // (the filter's whole-system path) against discretize of the whole system.
+  const nav::Earth earth;
+  const nav::InsErrorPoint p = movingTiltedPoint();
+  const nav::Vec3 omega_b(0.05, -0.12, 0.35);          // [rad/s] a turning, rolling vehicle
+  const nav::Vec3 f_b = p.C_nb.transpose() * p.f_n;     // [m/s^2]
+  ScaleInput in;
+  in.C_omega = p.C_nb * omega_b.asDiagonal();
+  in.C_f = p.C_nb * f_b.asDiagonal();
+  for (double fastTau : {300.0, 0.003}) {
+    FilterSensorModel m = mixedModel(fastTau);
+    m.gyro[2].blocks.pop_back();  // no sampled block (as above)
+    for (int i = 0; i < 3; ++i) {
+      m.gyro[i].blocks.push_back(scaleFactorState(3000e-6));
+      m.accel[i].blocks.push_back(scaleFactorState(1000e-6 * (i + 1)));
+    }
+    FilterOptions opt;
+    opt.sigma0 << 3, 3, 5, 0.1, 0.1, 0.1, 5e-3, 5e-3, 3e-2;
+    ErrorStateFilter filter(earth, m, opt);
+    REQUIRE(filter.hasScaleStates());
+    const int n = filter.size();
+    Eigen::MatrixXd F, Qc;
+    filter.continuousModel(p, F, Qc, in);
+    // The scale states' columns: the last state of each axis's list, in axis order.
+    int offset = 9, checked = 0;
+    for (int axis = 0; axis < 6; ++axis) {
+      const SensorAxisModel& am = axis < 3 ? m.gyro[axis] : m.accel[axis - 3];
+      for (const StateBlock& b : am.blocks) {
+        if (b.scale) {
+          Eigen::Matrix<double, 9, 1> col = Eigen::Matrix<double, 9, 1>::Zero();
+          if (axis < 3) col.segment<3>(6) = -p.C_nb.col(axis) * omega_b[axis];
+          else col.segment<3>(3) = p.C_nb.col(axis - 3) * f_b[axis - 3];
+          CHECK((F.block(0, offset, 9, 1) - col).norm() <= 1e-15 * col.norm());
+          CHECK(F.row(offset).isZero());  // a constant
+          CHECK(Qc.row(offset).isZero());
+          ++checked;
+        }
+        offset += b.size;
+      }
+    }
+    REQUIRE(checked == 6);
+    for (double T : {1.0, 0.2}) {
+      for (int k = 0; k < 5; ++k) {  // a full, correlated prior first
+        filter.propagate(p, T, in);
+        filter.updatePosition(nav::Vec3(0.5, -0.2, 0.1), nav::Vec3(0.4, 0.1, -0.9),
+                              nav::Vec3(1, 1, 2));
+        filter.takeNavCorrection();
+      }
+      Eigen::VectorXd x = filter.x();
+      Eigen::MatrixXd P = filter.P();
+      // Van Loan's exp(−F T) block overflows for the 3 ms GM (e^300): there the reference is
+      // discretize's halving and doubling, checked against the closed form in test_filter_math.
+      const DiscreteSystem d = fastTau > 1.0 ? vanLoan(F, Qc, T) : discretize(F, Qc, T);
+      kalmanPredict(x, P, d.Phi, d.Qd);
+      filter.propagate(p, T, in);
+      const Eigen::VectorXd scale = P.diagonal().cwiseSqrt();
+      // Van Loan's Padé forward error ~1e-12 of the largest entries, each entry compared in its
+      // states' own scale as in the block-series test above: 1e-9.
+      const double worstP = scaledWorst(filter.P(), P, scale, false);
+      INFO("tau = " << fastTau << ", T = " << T << ": predicted P, worst scaled difference "
+                    << worstP);
+      CHECK(worstP < 1e-9);
+      for (int i = 9; i < n; ++i) CHECK(std::abs(filter.x()(i) - x(i)) <= 1e-9 * scale(i));
+    }
+  }
+}
+
+TEST_CASE("scale-factor states without motion: no input, the prior kept") {
+  // Zero rate and force (a ScaleInput of zeros, as without motion) couple nothing: the scale
+  // states' variance stays at its prior and their covariance with the navigation stays zero.
+  const nav::Earth earth;
+  FilterSensorModel m;
+  for (int i = 0; i < 3; ++i) {
+    m.gyro[i].blocks = {biasState(1e-5), scaleFactorState(2000e-6)};
+    m.accel[i].blocks = {scaleFactorState(500e-6)};
+  }
+  FilterOptions opt;
+  opt.sigma0 << 3, 3, 5, 0.1, 0.1, 0.1, 5e-3, 5e-3, 3e-2;
+  ErrorStateFilter filter(earth, m, opt);
+  for (int k = 0; k < 3; ++k) {
+    filter.propagate(movingTiltedPoint(), 1.0);
+    filter.updatePosition(nav::Vec3(0.5, -0.2, 0.1), nav::Vec3::Zero(), nav::Vec3(1, 1, 2));
+  }
+  // layout: gyro x bias 9, scale 10; y 11, 12; z 13, 14; accel scale 15, 16, 17
+  for (int i : {10, 12, 14, 15, 16, 17}) {
+    CHECK(filter.P()(i, i) == (i <= 14 ? 2000e-6 * 2000e-6 : 500e-6 * 500e-6));
+    CHECK(filter.P().row(i).head<9>().isZero());
+  }
+  CHECK(filter.gyroScale().isZero());
+}

@@ -29,8 +29,11 @@ gnss: {rate: 1 Hz, position_sigma: 1 m}
 
 // Every supported effect: white (density and sigma at a rate), bias (value + sigma), random walk,
 // Gauss-Markov (continuous, and sampled at a rate: an AR(1)), AR(1) by output sigma; `all` and
-// an axis's own list; a disabled unsupported effect.
+// an axis's own list; a disabled unsupported effect; triad scale factors (a diagonal with a
+// sigma, a purely random one given in %).
 const char* kModel = R"(gyro:
+  triad:
+    - {type: scale_factor, diagonal: [100 ppm, 0, -50 ppm], sigma: 1000 ppm}
   all:
     - {type: white, density: 0.15 deg/sqrt(h)}
     - {type: gauss_markov, sigma: 20 deg/h, tau: 200 s}
@@ -41,6 +44,8 @@ const char* kModel = R"(gyro:
     - {type: gauss_markov, sigma: 0.6 deg/s, tau: 20 ms, rate: 1 kHz}
     - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s], enabled: no}
 accel:
+  triad:
+    - {type: scale_factor, value: 0, sigma: 0.2 %}
   all:
     - {type: bias, value: 1 mg, sigma: 2 mg}
     - {type: random_walk, K: 0.05 m/s/h/sqrt(h)}
@@ -68,6 +73,14 @@ FilterSensorModel byHand() {
   StateBlock gm = arState({-phi}, 0.6 * deg * std::sqrt(1.0 - phi * phi), 1000.0);
   gm.name = "gauss_markov";
   m.gyro[1].blocks.push_back(gm);
+  // Scale factors last on each axis: ppm = 1e-6, % = 1e-2.
+  const double sfMean[3] = {100e-6, 0.0, -50e-6};
+  for (int i = 0; i < 3; ++i) {
+    StateBlock sf = scaleFactorState(1000e-6);
+    sf.x0(0) = sfMean[i];
+    m.gyro[i].blocks.push_back(sf);
+    m.accel[i].blocks.push_back(scaleFactorState(0.2e-2));
+  }
   return m;
 }
 
@@ -93,6 +106,7 @@ void requireClose(const FilterSensorModel& a, const FilterSensorModel& b) {
       INFO("block " << k << " " << q.name);
       CHECK(p.name == q.name);
       CHECK(p.discrete == q.discrete);
+      CHECK(p.scale == q.scale);
       CHECK(p.period == q.period);
       for (auto [u, v] : {std::pair(&p.F, &q.F), {&p.Qc, &q.Qc}, {&p.A, &q.A}, {&p.Qs, &q.Qs},
                           {&p.P0, &q.P0}})
@@ -124,8 +138,8 @@ TEST_CASE("filter model file: equal to the same model inline and to the states b
   CHECK(fromFile.aiding.filter.sensors == inl.aiding.filter.sensors);  // bit for bit
 
   const FilterSensorModel& m = fromFile.aiding.filter.sensors;
-  // GM per gyro axis, AR(1) on x, the sampled GM on y, bias + RW per accel
-  CHECK(m.stateCount() == 3 * 1 + 1 + 1 + 3 * 2);
+  // GM per gyro axis, AR(1) on x, the sampled GM on y, bias + RW per accel, a scale factor per axis
+  CHECK(m.stateCount() == 3 * 1 + 1 + 1 + 3 * 2 + 6);
   requireClose(m, byHand());
 }
 
@@ -133,7 +147,7 @@ TEST_CASE("filter model file: effects without filter states are refused with fil
   const auto dir = test::freshTempDir("sinsim-filter-model-bad");
   test::writeText(dir / "bad.yaml", R"(gyro:
   triad:
-    - {type: scale_factor, value: 100 ppm}
+    - {type: scale_factor, matrix: [[100 ppm, 10 ppm, 0], [0, 100 ppm, 0], [0, 0, 100 ppm]]}
   all:
     - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s]}
 accel:
@@ -151,7 +165,8 @@ accel:
     // The scenario's key and, inside the message, the model file's line and key of each effect.
     CHECK(m.find("fm.yaml:") != std::string::npos);
     CHECK(m.find("filter.model") != std::string::npos);
-    CHECK(m.find("bad.yaml:3: gyro.triad[0]: scale_factor:") != std::string::npos);
+    // a scale factor with off-diagonal (misalignment) entries: no states for those
+    CHECK(m.find("bad.yaml:3: gyro.triad[0]: scale_factor: off-diagonal") != std::string::npos);
     CHECK(m.find("bad.yaml:5: gyro.all[0]: bias_instability:") != std::string::npos);
     CHECK(m.find("bad.yaml:8: accel.y[0]: ramp:") != std::string::npos);
     CHECK(m.find("accel.y[1]") == std::string::npos);  // the supported white is not blamed
