@@ -2,6 +2,7 @@
 // (bias, Gauss-Markov and random walk on each of the 6 sensor axes), 100 Hz IMU, 1 Hz GNSS
 // position fixes. items_processed = IMU epochs (the brief asks >= 200 k/s per core). BM_FreeRun,
 // the reference of the ratio: the same samples through the strapdown alone (free-inertial).
+// BM_AidedRunScale: the same with a scale-factor state per axis as well (9 + 24 states).
 //
 // Input: an ideal drive (static, accelerate, turn, cruise; 300 s) precomputed before timing,
 // replayed through the aiding; each benchmark iteration is one whole run.
@@ -79,7 +80,17 @@ void BM_FreeRun(benchmark::State& state) {
 }
 BENCHMARK(BM_FreeRun)->Unit(benchmark::kMillisecond);
 
-void BM_AidedRun(benchmark::State& state) {
+// model18 plus a scale-factor state per axis (3000 ppm prior), last on each axis.
+FilterSensorModel model24() {
+  FilterSensorModel m = model18();
+  for (int i = 0; i < 3; ++i) {
+    m.gyro[i].blocks.push_back(scaleFactorState(3000e-6));
+    m.accel[i].blocks.push_back(scaleFactorState(3000e-6));
+  }
+  return m;
+}
+
+void aidedRun(benchmark::State& state, const FilterSensorModel& fm) {
   const nav::Earth earth;
   const Drive drive(earth);
   const sim::Scenario& sc = drive.sc;
@@ -90,7 +101,6 @@ void BM_AidedRun(benchmark::State& state) {
   cfg.initialErrors.position.value = nav::Vec3(2, -1, 1);
   cfg.gnss.enabled = true;
   cfg.filter.enabled = true;
-  const FilterSensorModel fm = model18();
   for (auto _ : state) {
     AidedNavigation aided(earth, cfg, fm, sc.strapdown, {1, 0});
     nav::Strapdown sd(earth, aided.initialState(start), sc.strapdown);
@@ -103,7 +113,11 @@ void BM_AidedRun(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<long long>(samples.size()));
   state.counters["states"] = 9 + fm.stateCount();
 }
+void BM_AidedRun(benchmark::State& state) { aidedRun(state, model18()); }
 BENCHMARK(BM_AidedRun)->Unit(benchmark::kMillisecond);
+
+void BM_AidedRunScale(benchmark::State& state) { aidedRun(state, model24()); }
+BENCHMARK(BM_AidedRunScale)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
