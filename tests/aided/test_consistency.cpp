@@ -13,6 +13,7 @@
 
 #include "common/constants.hpp"
 #include "errormodels/imu_model.hpp"
+#include "consistency_support.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/ideal_imu.hpp"
 #include "sim/scenario.hpp"
@@ -67,12 +68,6 @@ FilterSensorModel filterModel() {
   return m;
 }
 
-struct Ideal {
-  std::vector<nav::ImuSample> samples;
-  std::vector<nav::NavState> truth;  // truth[k] at the end of samples[k]
-  nav::NavState start;
-};
-
 // Band of the mean of R independent χ²(d) / d·d values: d ± z sqrt(2d/R).
 bool inBand(double mean, int dof, int runs) {
   const double z = 2.5758;  // two-sided 99 %
@@ -92,29 +87,9 @@ Averages consistencyRuns(const char* truthModel, const FilterSensorModel& filter
                          std::uint64_t seed) {
   const sim::Scenario sc = sim::parseScenario(kScenario, "consistency.yaml");
   const nav::Earth earth;
-  const sim::Trajectory traj(earth, sc.motion());
-  sim::IdealImu imu(traj, sc.imuRate);
-  Ideal ideal;
-  ideal.start = imu.truth();
-  while (!imu.done()) {
-    ideal.samples.push_back(imu.next());
-    ideal.truth.push_back(imu.truth());
-  }
+  const test::IdealDrive ideal = test::idealDrive(sc, earth);
   const auto model = errormodels::ImuErrorModel::fromString(truthModel, "truth.yaml");
-
-  AidingConfig cfg;
-  cfg.initialErrors.position.random = true;
-  cfg.initialErrors.position.sigma = nav::Vec3(2, 2, 3);
-  cfg.initialErrors.velocity.random = true;
-  cfg.initialErrors.velocity.sigma = nav::Vec3::Constant(0.05);
-  cfg.initialErrors.attitude.random = true;
-  cfg.initialErrors.attitude.sigma = nav::Vec3(0.3, 0.3, 2.0) * kRadPerDeg;
-  cfg.gnss.enabled = true;
-  cfg.gnss.rate = 1.0;
-  cfg.gnss.positionSigma = nav::Vec3(1.0, 1.0, 2.0);
-  cfg.gnss.leverArm_b = nav::Vec3(0.5, -0.2, -1.0);
-  cfg.gnss.outages = {{100.0, 130.0}};
-  cfg.filter.enabled = true;
+  const AidingConfig cfg = test::consistencyAiding(100.0, 130.0);
 
   const double tAiding = 99.0, tOutage = 129.0;  // last aided epoch, last epoch in the outage
   Averages avg;

@@ -13,14 +13,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "common/constants.hpp"
+#include "consistency_support.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/aided/filter_model.hpp"
-#include "sim/ideal_imu.hpp"
 #include "sim/scenario.hpp"
-#include "sim/trajectory.hpp"
 
 using namespace sinsim;
 using namespace sinsim::sim::aided;
@@ -106,15 +104,9 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
           "factors observed") {
   const sim::Scenario sc = sim::parseScenario(kScenario, "sf.yaml");
   const nav::Earth earth;
-  const sim::Trajectory traj(earth, sc.motion());
-  sim::IdealImu imu(traj, sc.imuRate);
-  const nav::NavState start = imu.truth();
-  std::vector<nav::ImuSample> samples;
-  std::vector<nav::NavState> truth;
-  while (!imu.done()) {
-    samples.push_back(imu.next());
-    truth.push_back(imu.truth());
-  }
+  const test::IdealDrive drive = test::idealDrive(sc, earth);
+  const std::vector<nav::ImuSample>& samples = drive.samples;
+  const std::vector<nav::NavState>& truth = drive.truth;
   const auto model = errormodels::ImuErrorModel::fromString(kModel, "truth.yaml");
   const auto scaleOnly = errormodels::ImuErrorModel::fromString(kScale, "scale.yaml");
   // The filter's model is the truth's, through the one converter.
@@ -130,20 +122,8 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
     }
   }
 
-  AidingConfig cfg;
-  cfg.initialErrors.position.random = true;
-  cfg.initialErrors.position.sigma = nav::Vec3(2, 2, 3);
-  cfg.initialErrors.velocity.random = true;
-  cfg.initialErrors.velocity.sigma = nav::Vec3::Constant(0.05);
-  cfg.initialErrors.attitude.random = true;
-  cfg.initialErrors.attitude.sigma = nav::Vec3(0.3, 0.3, 2.0) * kRadPerDeg;
-  cfg.gnss.enabled = true;
-  cfg.gnss.rate = 1.0;
-  cfg.gnss.positionSigma = nav::Vec3(1.0, 1.0, 2.0);
-  cfg.gnss.leverArm_b = nav::Vec3(0.5, -0.2, -1.0);
-  cfg.gnss.velocitySigma = nav::Vec3::Constant(0.05);
-  cfg.gnss.outages = {{120.0, 150.0}};
-  cfg.filter.enabled = true;
+  AidingConfig cfg = test::consistencyAiding(120.0, 150.0);
+  cfg.gnss.velocitySigma = nav::Vec3::Constant(0.05);  // velocity fixes as well
 
   const int runs = 200;
   const double tLastFix = 119.0;
@@ -155,7 +135,7 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
     const errormodels::StreamKey key{5, static_cast<std::uint64_t>(r)};
     auto corruptor = model.instantiate(sc.imuRate, key);
     AidedNavigation aided(earth, cfg, fm, sc.strapdown, key);
-    nav::Strapdown sd(earth, aided.initialState(start), sc.strapdown);
+    nav::Strapdown sd(earth, aided.initialState(drive.start), sc.strapdown);
     std::size_t epoch = 0;
     for (std::size_t k = 0; k < samples.size(); ++k) {
       nav::ImuSample m = samples[k];
