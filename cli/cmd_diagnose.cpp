@@ -89,7 +89,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
     std::cout << dg::summaryTable(d);
     if (nav) std::cout << sim::navVerdictText(*nav);
     if (!a.json.empty()) writeFileAtomic(a.json, sim::diagnoseJsonWithNav(d, nav ? &*nav : nullptr));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, d, nullptr, &command);
+    if (!a.html.empty()) writeDiagnoseReport(a.html, d, nullptr, &command, nav ? &*nav : nullptr);
   } else {
     const auto imp = adds.empty() ? dg::compareModels(record, model, errormodels::loadErrorModel(a.edited), o)
                                   : dg::improve(record, model, adds, o);
@@ -105,7 +105,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
       std::cout << "wrote the improved model " << out << "\n";
     }
     if (!a.json.empty()) writeFileAtomic(a.json, sim::diagnoseJsonWithNav(imp, nav ? &*nav : nullptr));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command);
+    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command, nav ? &*nav : nullptr);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fprintf(stderr, "diagnose: %.2f s wall\n", s);

@@ -111,6 +111,11 @@ NavVerdict navigationVerdict(const errormodels::Record& record,
                              const errormodels::ErrorModelSpec* improved, const Scenario& scenario,
                              const NavVerdictOptions& options = {});
 
+/// NavVerdict::warning: empty unless improved / model median drift leaves [1/r, r]; then the
+/// groups whose mean square moved most that way, and a hint when their drift is deterministic
+/// (more than half of its mean square is the mean over the runs).
+std::string navWarningText(const NavVerdict& v);
+
 /// The verdict as lines for the terminal (after the diagnosis table).
 std::string navVerdictText(const NavVerdict& v);
 

@@ -2,6 +2,7 @@
 // (diagnose_nav.hpp).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/number_text.hpp"
@@ -114,7 +115,44 @@ nlohmann::json verdictJson(const NavVerdict& v) {
   return j;
 }
 
+const TermShare* findTerm(const std::vector<TermShare>& terms, const TermShare& t) {
+  for (const auto& u : terms)
+    if (u.sensor == t.sensor && u.effect == t.effect) return &u;
+  return nullptr;
+}
+
 }  // namespace
+
+std::string navWarningText(const NavVerdict& v) {
+  if (!v.improved || !(v.ratio > v.warnRatio || v.ratio < 1.0 / v.warnRatio)) return "";
+  const bool up = v.ratio > 1.0;
+  std::vector<std::pair<double, const TermShare*>> moved;  // change of mean square [m²]
+  for (const auto& t : v.improved->terms) {
+    const TermShare* was = findTerm(v.model.terms, t);
+    const double change = t.meanSquare - (was ? was->meanSquare : 0.0);
+    if (up ? change > 0 : change < 0) moved.emplace_back(std::fabs(change), &t);
+  }
+  std::sort(moved.begin(), moved.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string s = "the improved model predicts " + significant(v.ratio, 3) +
+                  "x the horizontal drift of the model along " + v.scenario + " (median " +
+                  lengthText(v.improved->scenario.endP50(), 3) + " vs " +
+                  lengthText(v.model.scenario.endP50(), 3) + " at the end)";
+  bool deterministic = false;
+  for (std::size_t i = 0; i < moved.size() && i < 3; ++i) {
+    const TermShare& t = *moved[i].second;
+    s += std::string(i == 0 ? "; it comes from " : ", ") + t.sensor + " " + t.effect + " (" +
+         pct(t.share) + " of the improved model's mean-square drift, " + pct(t.deterministic) +
+         " of it deterministic)";
+    deterministic = deterministic || (up && t.deterministic > 0.5);
+  }
+  s += ".";
+  if (deterministic)
+    s += " A deterministic term (warm-up, ramp, a fixed bias) acts the same in every run from "
+         "t = 0, like an uncalibrated bias; a navigation start that calibrates the bias "
+         "(alignment, a longer --bias-window in mc) removes most of it: check that before using "
+         "the improved model for navigation.";
+  return s;
+}
 
 std::string navVerdictText(const NavVerdict& v) {
   std::string s = "\nNavigation verdict along " + v.scenario + " (" + minutes(v.duration) + ", " +
