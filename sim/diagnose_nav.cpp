@@ -311,12 +311,12 @@ NavVerdict navigationVerdict(const errormodels::Record& record,
                              const NavVerdictOptions& o) {
   if (o.runs < 8 || o.termRuns < 4)
     throw InputError("the navigation verdict needs at least 8 runs (4 per term)");
-  Setting s;
-  s.scenario = buildReference(scenario);
-  if (!s.scenario.aiding.inert())
+  if (!scenario.aiding.inert())
     throw InputError("navigation verdict: the scenario " + scenario.name + " has aiding keys "
                      "(initial_errors, alignment, gnss, filter); the verdict is free-inertial, as "
                      "the record's replay (mc --measured): give a scenario without them");
+  Setting s;
+  s.scenario = buildReference(scenario);
   // The record at rest where the scenario starts, for as long as the scenario lasts (at most). With
   // the bias window the assumed place and heading only change a constant, which the window removes.
   MeasuredOptions mo;
