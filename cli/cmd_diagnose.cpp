@@ -12,6 +12,7 @@
 #include "cli/terminal.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/units.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/record.hpp"
@@ -29,6 +30,7 @@ struct DiagnoseArgs {
   bool nav = false;       // --nav given
   std::string scenario;   // --nav SCENARIO (empty: the README's car)
   std::size_t navRuns = sim::NavVerdictOptions{}.runs;
+  std::string navBiasWindow;  // empty: min(60 s, 10 % of the replay)
   std::vector<std::string> add, channels;
   RecordArgs record;
   std::size_t realisations = 32;
@@ -49,6 +51,7 @@ std::optional<sim::NavVerdict> verdict(const DiagnoseArgs& a, const errormodels:
   o.termRuns = std::max<std::size_t>(4, a.navRuns / 2);
   o.seed = a.seed;
   o.threads = a.threads;
+  if (!a.navBiasWindow.empty()) o.biasWindow = parseDuration(a.navBiasWindow, "--nav-bias-window");
   const sim::Scenario sc = sim::loadScenario(a.scenario.empty() ? "scenarios/car.yaml" : a.scenario);
   return sim::navigationVerdict(record, model, imp ? &imp->model : nullptr, sc, o);
 }
@@ -142,6 +145,9 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
                             "the predicted drift > 2x (adds a Monte Carlo: tens of seconds)")
                   ->expected(0, 1);
   c->add_option("--nav-runs", a->navRuns, "Monte Carlo runs per model of the verdict (default 32)");
+  c->add_option("--nav-bias-window", a->navBiasWindow,
+                "initial-bias removal of the verdict's runs and replay, e.g. \"60 s\" (default "
+                "min(60 s, 10 % of the replay); 0: none, as mc SCENARIO by default)");
   c->add_option("--threshold", a->threshold, "reporting threshold on the score (default: calibrated on null channels, docs/diagnose.md)");
   c->callback([a, nav, &action] {
     a->nav = nav->count() > 0;
