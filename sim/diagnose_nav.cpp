@@ -266,7 +266,6 @@ void placeRecord(ModelDrift& d, const Job& replay, const std::vector<float>& rec
   d.direction = directionOf(d.recordPercentile);
 }
 
-
 // One model: jobs appended (scenario, replay, then each group alone); finish() reads them back.
 struct ModelRuns {
   std::string label;
