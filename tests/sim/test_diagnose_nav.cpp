@@ -146,3 +146,16 @@ TEST_CASE("nav verdict: paired before/after, and the warning for a deterministic
   // Text and JSON carry it.
   CHECK(sim::navVerdictText(v).find("WARNING") != std::string::npos);
 }
+
+TEST_CASE("nav verdict: the same seed gives the same verdict, bit for bit, on 1 and 2 threads") {
+  const auto spec = errorModelFromString(kWhite, "white.yaml");
+  const auto record = recordFrom(kWhite, 4);
+  auto o = options(16);
+  o.threads = 1;
+  const auto one = sim::navigationVerdict(record, spec, &spec, restScenario(), o);
+  o.threads = 2;
+  const auto two = sim::navigationVerdict(record, spec, &spec, restScenario(), o);
+  errormodels::diagnose::Diagnosis empty;
+  CHECK(sim::diagnoseJsonWithNav(empty, &one) == sim::diagnoseJsonWithNav(empty, &two));
+  CHECK(sim::navVerdictText(one) == sim::navVerdictText(two));
+}
