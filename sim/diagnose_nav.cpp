@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "common/error.hpp"
 #include "common/progress.hpp"
@@ -203,6 +204,9 @@ BandVerdict bandVerdict(const std::vector<std::vector<std::array<double, 2>>>& r
   b.modelP50 = mcstats::percentileSorted(model, 50);
   b.modelP95 = mcstats::percentileSorted(model, 95);
   b.recordDrift = inBand(record);
+  const auto all = std::accumulate(record.begin(), record.end(), std::array<double, 2>{0.0, 0.0},
+                                   [](auto a, const auto& r) { return std::array<double, 2>{a[0] + r[0], a[1] + r[1]}; });
+  b.recordLinear = std::hypot(all[0], all[1]);
   b.percentile = mcstats::percentileOf(model, b.recordDrift);
   b.direction = directionOf(b.percentile);
   return b;

@@ -73,6 +73,9 @@ struct BandVerdict {
   double recordDrift = 0.0;        ///< the record's drift from [from, to] [m]
   double percentile = 50.0;        ///< of recordDrift among the model's runs [%]
   std::string direction;           ///< as ModelDrift::direction
+  /// The record's drift from all bands together (the linearised model's whole answer) [m], to
+  /// compare with the navigated drift (NavVerdict::record): they agree while errors stay small.
+  double recordLinear = 0.0;
 };
 
 struct ModelDrift {

@@ -78,7 +78,8 @@ nlohmann::json modelJson(const ModelDrift& d) {
                              {"driving_model_p95_m", b.modelP95},
                              {"driving_record_m", b.recordDrift},
                              {"driving_record_percentile", b.percentile},
-                             {"driving_direction", b.direction}};
+                             {"driving_direction", b.direction},
+                             {"record_linear_m", b.recordLinear}};
   return {{"model", d.label},
           {"scenario_drift", curveJson(d.scenario)},
           {"replay_drift", curveJson(d.replay)},

@@ -89,6 +89,10 @@ TEST_CASE("nav verdict: the dominant term by closed form is named first") {
   CHECK(v.model.terms[0].share > 0.9);
   CHECK(v.model.terms[0].deterministic < 0.3);  // zero-mean noise: the mean of 16 runs is ~1/16
   CHECK(!v.model.bands.tau.empty());
+  // The linearised kernel (sim/drift_bands) against the navigated replay of the same record (the
+  // strapdown, nav/): tilts ~1e-3 rad, so the neglected couplings are Earth rate × T ≈ 0.9 % and
+X
+  CHECK(v.model.bands.recordLinear == Approx(v.record.endP50()).epsilon(0.05));
   CHECK(v.model.bands.from <= v.model.bands.to);
 }
 
