@@ -91,8 +91,8 @@ TEST_CASE("nav verdict: the dominant term by closed form is named first") {
   CHECK(!v.model.bands.tau.empty());
   // The linearised kernel (sim/drift_bands) against the navigated replay of the same record (the
   // strapdown, nav/): tilts ~1e-3 rad, so the neglected couplings are Earth rate × T ≈ 0.9 % and
-X
-  CHECK(v.model.bands.recordLinear == Approx(v.record.endP50()).epsilon(0.05));
+  // second-order terms ≪ 1 %: 2 %. (Measured: 42.77 m linear, 42.79 m navigated.)
+  CHECK(v.model.bands.recordLinear == Approx(v.record.endP50()).epsilon(0.02));
   CHECK(v.model.bands.from <= v.model.bands.to);
 }
 
