@@ -5,16 +5,20 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
 #include "common/atomic_file.hpp"
 #include "common/error.hpp"
+#include "common/units.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/record.hpp"
+#include "sim/diagnose_nav.hpp"
 #include "sim/diagnose_report.hpp"
+#include "sim/scenario.hpp"
 
 namespace sinsim::cli {
 namespace {
@@ -23,6 +27,10 @@ namespace dg = errormodels::diagnose;
 
 struct DiagnoseArgs {
   std::string data, model, edited, json, html, output;
+  bool nav = false;       // --nav given
+  std::string scenario;   // --nav SCENARIO (empty: the README's car)
+  std::size_t navRuns = sim::NavVerdictOptions{}.runs;
+  std::string navBiasWindow;  // empty: min(60 s, 10 % of the replay)
   std::vector<std::string> add, channels;
   RecordArgs record;
   std::size_t realisations = 32;
@@ -32,6 +40,21 @@ struct DiagnoseArgs {
 };
 
 int diagnoseAndWrite(const DiagnoseArgs& a);
+
+// --nav: the verdict of the diagnosed (and improved) model along the scenario (sim/diagnose_nav).
+std::optional<sim::NavVerdict> verdict(const DiagnoseArgs& a, const errormodels::Record& record,
+                                       const errormodels::ErrorModelSpec& model,
+                                       const dg::Improvement* imp) {
+  if (!a.nav) return std::nullopt;
+  sim::NavVerdictOptions o;
+  o.runs = a.navRuns;
+  o.termRuns = std::max<std::size_t>(4, a.navRuns / 2);
+  o.seed = a.seed;
+  o.threads = a.threads;
+  if (!a.navBiasWindow.empty()) o.biasWindow = parseDuration(a.navBiasWindow, "--nav-bias-window");
+  const sim::Scenario sc = sim::loadScenario(a.scenario.empty() ? "scenarios/car.yaml" : a.scenario);
+  return sim::navigationVerdict(record, model, imp ? &imp->model : nullptr, sc, o);
+}
 
 std::string defaultOutput(const std::string& model) {
   auto dot = model.rfind('.');
@@ -64,15 +87,19 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   command.model = a.model;
   if (adds.empty() && a.edited.empty()) {
     const auto d = dg::diagnose(record, model, o);
+    const auto nav = verdict(a, record, model, nullptr);
     endProgressLine();
     std::cout << dg::summaryTable(d);
-    if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(d));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, d, nullptr, &command);
+    if (nav) std::cout << sim::navVerdictText(*nav);
+    if (!a.json.empty()) writeFileAtomic(a.json, sim::diagnoseJsonWithNav(d, nav ? &*nav : nullptr));
+    if (!a.html.empty()) writeDiagnoseReport(a.html, d, nullptr, &command, nav ? &*nav : nullptr);
   } else {
     const auto imp = adds.empty() ? dg::compareModels(record, model, errormodels::loadErrorModel(a.edited), o)
                                   : dg::improve(record, model, adds, o);
+    const auto nav = verdict(a, record, model, &imp);
     endProgressLine();
     std::cout << dg::summaryTable(imp);
+    if (nav) std::cout << sim::navVerdictText(*nav);
     if (!a.edited.empty()) command.improvedModel = a.edited;
     if (!adds.empty()) {
       const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
@@ -80,8 +107,8 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
       command.improvedModel = out;
       std::cout << "wrote the improved model " << out << "\n";
     }
-    if (!a.json.empty()) writeFileAtomic(a.json, dg::toJson(imp));
-    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command);
+    if (!a.json.empty()) writeFileAtomic(a.json, sim::diagnoseJsonWithNav(imp, nav ? &*nav : nullptr));
+    if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command, nav ? &*nav : nullptr);
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::fprintf(stderr, "diagnose: %.2f s wall\n", s);
@@ -111,8 +138,21 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
   c->add_option("--seed", a->seed, "seed of the realisations");
   c->add_option("--threads", a->threads, "worker threads (default: all cores)");
+  auto* nav = c->add_option("--nav", a->scenario,
+                            "navigation verdict along a scenario (default scenarios/car.yaml): "
+                            "which term and tau band drive its drift, whether the model under- or "
+                            "over-predicts the record's own drift, a warning when --add changes "
+                            "the predicted drift > 2x (adds a Monte Carlo: tens of seconds)")
+                  ->expected(0, 1);
+  c->add_option("--nav-runs", a->navRuns, "Monte Carlo runs per model of the verdict (default 32)");
+  c->add_option("--nav-bias-window", a->navBiasWindow,
+                "initial-bias removal of the verdict's runs and replay, e.g. \"60 s\" (default "
+                "min(60 s, 10 % of the replay); 0: none, as mc SCENARIO by default)");
   c->add_option("--threshold", a->threshold, "reporting threshold on the score (default: calibrated on null channels, docs/diagnose.md)");
-  c->callback([a, &action] { action = [a] { return runDiagnose(*a); }; });
+  c->callback([a, nav, &action] {
+    a->nav = nav->count() > 0;
+    action = [a] { return runDiagnose(*a); };
+  });
 }
 
 }  // namespace sinsim::cli

@@ -153,10 +153,30 @@ void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* im
                       " --kind latent -o latent.yaml"));
 }
 
+// The navigation verdict: its lines, the warning, and the drift at rest (record against the
+// models' median and 95 %) and along the scenario.
+void navSection(HtmlPage& page, const sim::NavVerdict& v) {
+  page.heading("Navigation verdict along " + v.scenario, 2);
+  if (!v.warning.empty()) page.paragraph("Warning: " + v.warning);
+  page.preformatted(sim::navVerdictText(v).substr(1));
+  Plot rest("Horizontal drift at rest: the record against the model", "time [s]", "horizontal error [m]");
+  Plot along("Predicted horizontal drift along " + v.scenario, "time [s]", "horizontal error [m]");
+  rest.add(Series("record", v.record.t, v.record.p50, kMeas, false, 1.6));
+  auto add = [&](const sim::ModelDrift& m, const char* colour, const std::string& name) {
+    rest.add(Series(name + " median", m.replay.t, m.replay.p50, colour));
+    rest.add(Series(name + " 95 %", m.replay.t, m.replay.p95, colour, true));
+    along.add(Series(name + " median", m.scenario.t, m.scenario.p50, colour));
+    along.add(Series(name + " 95 %", m.scenario.t, m.scenario.p95, colour, true));
+  };
+  add(v.model, kModel, "model");
+  if (v.improved) add(*v.improved, kAfter, "improved");
+  page.plotRow({rest, along});
+}
+
 }  // namespace
 
 std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* imp,
-                               const DiagnoseCommand* command) {
+                               const DiagnoseCommand* command, const sim::NavVerdict* nav) {
   HtmlPage page("Diagnosis: " + d.model + " against " + d.data);
   page.paragraph(std::to_string(d.samples) + " samples at " + fmt(d.rate, 6) + " Hz; model bands from " +
                  std::to_string(d.realisations) + " Monte Carlo realisations of the model at the record's length and rate (" +
@@ -190,6 +210,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
     page.table(t);
     for (const auto& n : imp->notes) page.paragraph("Note: " + n);
   }
+  if (nav) navSection(page, *nav);
   if (command) nextSteps(page, d, imp, *command);
   for (const auto& a : d.axes) {
     page.heading(a.channel + " — " + verdict(a, d.threshold) + " (misfit " + fmt(a.misfit) + ")", 2);
@@ -220,8 +241,8 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
 }
 
 void writeDiagnoseReport(const std::string& path, const dg::Diagnosis& d, const dg::Improvement* imp,
-                         const DiagnoseCommand* command) {
-  const std::string html = diagnoseReportHtml(d, imp, command);
+                         const DiagnoseCommand* command, const sim::NavVerdict* nav) {
+  const std::string html = diagnoseReportHtml(d, imp, command, nav);
   writeFileAtomic(path, html);
 }
 

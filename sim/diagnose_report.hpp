@@ -6,6 +6,7 @@
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
+#include "sim/diagnose_nav.hpp"
 
 namespace sinsim {
 
@@ -16,14 +17,17 @@ struct DiagnoseCommand {
   std::string improvedModel;  ///< the improved model written (--add), else empty
 };
 
-/// The page's HTML text. Values are shown in deg/s (gyro) and mg (accelerometer).
+/// The page's HTML text. Values are shown in deg/s (gyro) and mg (accelerometer). With `nav`
+/// (diagnose --nav) a section shows the navigation verdict and the drift curves.
 std::string diagnoseReportHtml(const errormodels::diagnose::Diagnosis& d,
                                const errormodels::diagnose::Improvement* improvement = nullptr,
-                               const DiagnoseCommand* command = nullptr);
+                               const DiagnoseCommand* command = nullptr,
+                               const sim::NavVerdict* nav = nullptr);
 
 /// Writes it atomically (report::HtmlPage::write).
 void writeDiagnoseReport(const std::string& path, const errormodels::diagnose::Diagnosis& d,
                          const errormodels::diagnose::Improvement* improvement = nullptr,
-                         const DiagnoseCommand* command = nullptr);
+                         const DiagnoseCommand* command = nullptr,
+                         const sim::NavVerdict* nav = nullptr);
 
 }  // namespace sinsim

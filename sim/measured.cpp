@@ -92,17 +92,21 @@ std::string identityText(const Scenario& sc) {
 }  // namespace
 
 MeasuredSetup prepareMeasured(const MeasuredOptions& o) {
+  return measuredSetup(errormodels::loadRecord(o.path, o.record), o);
+}
+
+MeasuredSetup measuredSetup(errormodels::Record record, const MeasuredOptions& o) {
   MeasuredSetup m;
-  m.record = errormodels::loadRecord(o.path, o.record);
+  m.record = std::move(record);
   errormodels::Record& rec = m.record;
   for (int ax = 0; ax < 3; ++ax)
     if (!rec.hasGyro(ax) || !rec.hasAccel(ax))
-      throw InputError(o.path + ": the record needs the columns gx, gy, gz, ax, ay, az");
+      throw InputError(rec.source + ": the record needs the columns gx, gy, gz, ax, ay, az");
   const double rate = rec.rate_hz;
   if (o.skip != 0.0) {  // drop a warm-up: the navigation starts after it
     const auto k = std::size_t(std::llround(std::max(0.0, o.skip) * rate));
     if (k >= rec.size())
-      throw InputError("--skip " + std::to_string(o.skip) + " s leaves nothing of " + o.path);
+      throw InputError("--skip " + std::to_string(o.skip) + " s leaves nothing of " + rec.source);
     dropHead(rec, k);
   }
   std::size_t n = rec.size();
@@ -113,9 +117,9 @@ MeasuredSetup prepareMeasured(const MeasuredOptions& o) {
   if (!(std::isfinite(o.outputRate) && o.outputRate > 0))
     throw InputError("--output-rate must be positive");
   const auto perOut = std::llround(rate / o.outputRate);
-  if (perOut < 1) throw InputError(o.path + ": the output rate exceeds the record's rate");
+  if (perOut < 1) throw InputError(rec.source + ": the output rate exceeds the record's rate");
   n -= n % std::size_t(perOut);  // whole output epochs
-  if (n == 0) throw InputError(o.path + ": the record is shorter than one output epoch");
+  if (n == 0) throw InputError(rec.source + ": the record is shorter than one output epoch");
   m.biasWindow = o.biasWindow ? *o.biasWindow : std::min(60.0, 0.1 * double(n) / rate);
 
   MotionStart start;
@@ -129,7 +133,7 @@ MeasuredSetup prepareMeasured(const MeasuredOptions& o) {
   start.roll = rpy.x();
   start.pitch = rpy.y();
   start.heading = rpy.z();
-  const std::string name = "measured-" + std::filesystem::path(o.path).stem().stem().string();
+  const std::string name = "measured-" + std::filesystem::path(rec.source).stem().stem().string();
   m.scenario = staticScenario(name, start, rate, o.outputRate, o.strapdown, double(n) / rate);
   m.identity = identityText(m.scenario);
   return m;

@@ -52,6 +52,10 @@ struct MeasuredSetup {
 /// that leaves nothing, a record shorter than one output epoch, or an invalid place.
 MeasuredSetup prepareMeasured(const MeasuredOptions& options);
 
+/// The same for a record already loaded (options.path and options.record unused; messages name
+/// record.source): `sinsim diagnose --nav` replays the record it diagnosed.
+MeasuredSetup measuredSetup(errormodels::Record record, const MeasuredOptions& options);
+
 /// A vehicle at rest at start (lat, lon, h, roll, pitch, heading) for `duration` [s], IMU at
 /// imuRate, statistics at outputRate [Hz]. Throws InputError for values a scenario file could
 /// not hold (latitude beyond ±89°, rates that do not divide, non-positive duration).

@@ -43,6 +43,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "errormodels/model_spec.hpp"
 #include "errormodels/stats/record.hpp"
 
@@ -193,6 +195,10 @@ Record simulateRecord(const ErrorModelSpec& model, double rate, std::size_t samp
 /// findings best first, curves) and, for an improvement, misfit_before / misfit_after.
 std::string toJson(const Diagnosis& d);
 std::string toJson(const Improvement& imp);
+/// The same as JSON values, for a caller that adds members (sim's navigation verdict);
+/// toJson(x) == toJsonValue(x).dump(1) + "\n".
+nlohmann::json toJsonValue(const Diagnosis& d);
+nlohmann::json toJsonValue(const Improvement& imp);
 
 /// The terminal table.
 std::string summaryTable(const Diagnosis& d);

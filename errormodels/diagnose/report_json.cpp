@@ -81,9 +81,13 @@ nlohmann::json diagnosisJson(const Diagnosis& d) {
 
 }  // namespace
 
-std::string toJson(const Diagnosis& d) { return diagnosisJson(d).dump(1) + "\n"; }
+std::string toJson(const Diagnosis& d) { return toJsonValue(d).dump(1) + "\n"; }
 
-std::string toJson(const Improvement& imp) {
+std::string toJson(const Improvement& imp) { return toJsonValue(imp).dump(1) + "\n"; }
+
+nlohmann::json toJsonValue(const Diagnosis& d) { return diagnosisJson(d); }
+
+nlohmann::json toJsonValue(const Improvement& imp) {
   nlohmann::json j;
   j["model_written"] = imp.model.source;
   j["notes"] = imp.notes;
@@ -103,7 +107,7 @@ std::string toJson(const Improvement& imp) {
   }
   j["before"] = {{"model", imp.before.model}, {"data", imp.before.data},
                  {"realisations", imp.before.realisations}};
-  return j.dump(1) + "\n";
+  return j;
 }
 
 }  // namespace sinsim::errormodels::diagnose

@@ -139,3 +139,41 @@ TEST_CASE("sinsim run --html: a report with the track, the errors and the attitu
   CHECK_FALSE(fs::exists(tmp / "b"));
   fs::remove_all(tmp);
 }
+
+TEST_CASE("sinsim diagnose --nav: the verdict on the terminal, in the JSON and the page; refused "
+          "for an aided scenario with no output written") {
+  const fs::path tmp = tempDir("diagnose_nav");
+  {
+    std::ofstream m(tmp / "m.yaml");
+    m << "gyro:\n  all: [{type: white, density: 1e-4 rad/sqrt(s)}]\n"
+         "accel:\n  all: [{type: white, density: 0.002 m/s/sqrt(s)}]\n";
+    std::ofstream s(tmp / "rest.yaml");
+    s << "name: rest\nstart: {latitude: 45 deg, longitude: 7 deg, height: 250 m, heading: 0 deg}\n"
+         "imu_rate: 50 Hz\noutput_rate: 1 Hz\nvertical: held\n"
+         "segments:\n  - {type: static, duration: 120 s}\n";
+  }
+  Result r = sinsim("synth m.yaml --rate 50 --duration \"3 min\" --seed 5 -o rec.csv", tmp, tmp.string());
+  REQUIRE(r.exitCode == 0);
+  r = sinsim("diagnose rec.csv --model m.yaml --nav rest.yaml --nav-runs 16 --json d.json --html d.html",
+             tmp, tmp.string());
+  INFO("stdout: " << r.out << "\nstderr: " << r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.out.find("Navigation verdict along rest") != std::string::npos);
+  CHECK(r.out.find("driven by gyro white") != std::string::npos);
+  CHECK(slurp(tmp / "d.json").find("\"navigation\"") != std::string::npos);
+  CHECK(slurp(tmp / "d.html").find("Navigation verdict along rest") != std::string::npos);
+
+  // Without --nav the JSON has no verdict (and the diagnosis runs no navigation).
+  r = sinsim("diagnose rec.csv --model m.yaml --json plain.json", tmp, tmp.string());
+  REQUIRE(r.exitCode == 0);
+  CHECK(slurp(tmp / "plain.json").find("\"navigation\"") == std::string::npos);
+
+  // An aided scenario: exit 1, the scenario named, no JSON written.
+  r = sinsim("diagnose rec.csv --model m.yaml --nav '" + std::string(SINSIM_SOURCE_DIR) +
+                 "/scenarios/car-10min-aided.yaml' --json aided.json",
+             tmp, tmp.string());
+  CHECK(r.exitCode == 1);
+  CHECK(r.err.find("aiding keys") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "aided.json"));
+  fs::remove_all(tmp);
+}
