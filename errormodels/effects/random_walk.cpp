@@ -18,9 +18,14 @@ class ContinuousWalk final : public AxisErrorState {
   ContinuousWalk(int axis, double K, NormalStream s) : AxisErrorState(axis), k_(K), s_(s) {}
   double integral(const Interval& iv) override {
     const double w1 = s_.next(), w2 = s_.next();
-    const double sdt = std::sqrt(iv.dt);
-    const double I = b_ * iv.dt + k_ * iv.dt * sdt * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
-    b_ += k_ * sdt * w1;
+    if (iv.dt != dt_) {  // the factors of dt once per interval length (the IMU's are all equal)
+      dt_ = iv.dt;
+      const double sdt = std::sqrt(dt_);
+      kDtSqrtDt_ = k_ * dt_ * sdt;
+      kSqrtDt_ = k_ * sdt;
+    }
+    const double I = b_ * iv.dt + kDtSqrtDt_ * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
+    b_ += kSqrtDt_ * w1;
     return I;
   }
 
@@ -28,6 +33,7 @@ class ContinuousWalk final : public AxisErrorState {
   double k_;  // [signal/sqrt(s)]
   NormalStream s_;
   double b_ = 0.0;
+  double dt_ = -1.0, kDtSqrtDt_ = 0.0, kSqrtDt_ = 0.0;  // [s], K dt^1.5, K dt^0.5
 };
 
 class DiscreteWalk final : public HeldProcessState {

@@ -18,11 +18,18 @@ class ContinuousWhite final : public AxisErrorState {
  public:
   ContinuousWhite(int axis, double density, NormalStream s)
       : AxisErrorState(axis), n_(density), s_(s) {}
-  double integral(const Interval& iv) override { return n_ * std::sqrt(iv.dt) * s_.next(); }
+  double integral(const Interval& iv) override {
+    if (iv.dt != dt_) {  // N sqrt(dt) once per interval length (the IMU's are all equal)
+      dt_ = iv.dt;
+      nSqrtDt_ = n_ * std::sqrt(dt_);
+    }
+    return nSqrtDt_ * s_.next();
+  }
 
  private:
   double n_;  // [signal·sqrt(s)]
   NormalStream s_;
+  double dt_ = -1.0, nSqrtDt_ = 0.0;  // [s], [signal·s]
 };
 
 class DiscreteWhite final : public HeldProcessState {

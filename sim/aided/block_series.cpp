@@ -1,8 +1,72 @@
 #include "sim/aided/block_series.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sinsim::sim::aided {
+namespace {
+
+// The non-zeros of A T by rows, each row's in ascending column order.
+struct RowNonZeros {
+  int start[10] = {};  // row i's entries are [start[i], start[i + 1])
+  int col[81];
+  double v[81];
+};
+
+// out.col(i) = Σ_j (A T)_ij in.col(j) over the rows of `in` (transposed rows, see below), each
+// entry's sum taken from 0 in ascending j: the same additions, in the same order, as adding the
+// non-zeros' columns one after another, with four entries at a time kept in registers instead of
+// a pass over the output per non-zero.
+void multiplyRows(const RowNonZeros& a, const Eigen::MatrixXd& in, Eigen::MatrixXd& out) {
+  const Eigen::Index n = in.rows();
+  const double* src = in.data();
+  for (int i = 0; i < 9; ++i) {
+    double* o = out.data() + i * n;
+    const int t0 = a.start[i], t1 = a.start[i + 1];
+    Eigen::Index r = 0;
+    for (; r + 4 <= n; r += 4) {
+      double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+      for (int t = t0; t < t1; ++t) {
+        const double v = a.v[t];
+        const double* c = src + a.col[t] * n + r;
+        s0 += v * c[0];
+        s1 += v * c[1];
+        s2 += v * c[2];
+        s3 += v * c[3];
+      }
+      o[r] = s0;
+      o[r + 1] = s1;
+      o[r + 2] = s2;
+      o[r + 3] = s3;
+    }
+    for (; r < n; ++r) {
+      double s0 = 0.0;
+      for (int t = t0; t < t1; ++t) s0 += a.v[t] * src[a.col[t] * n + r];
+      o[r] = s0;
+    }
+  }
+}
+
+// term ← tmp · scale, sum += term; returns max |term|, NaN if a term is NaN (one pass instead
+// of three).
+double scaleAndAdd(const Eigen::MatrixXd& tmp, double scale, Eigen::MatrixXd& term,
+                   Eigen::MatrixXd& sum) {
+  const Eigen::Index size = tmp.size();
+  const double* t = tmp.data();
+  double* d = term.data();
+  double* s = sum.data();
+  double largest = 0.0;
+  bool nan = false;
+  for (Eigen::Index i = 0; i < size; ++i) {
+    d[i] = t[i] * scale;
+    s[i] += d[i];
+    largest = std::max(largest, std::abs(d[i]));
+    nan = nan || std::isnan(d[i]);
+  }
+  return nan ? NAN : largest;
+}
+
+}  // namespace
 
 bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matrix<double, 9, 9>& Qn,
                          const std::vector<InputBlock>& blocks, int n, double T,
@@ -14,17 +78,19 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
   for (const InputBlock& b : blocks)
     for (Eigen::Index i = 0; i < b.F.rows(); ++i)
       if (!(std::abs(b.F(i, i)) * T <= 1.0)) return false;
-  // The rows are kept transposed (rows × 9), so that each non-zero A_ij T adds a contiguous
-  // column: out.col(i) += A_ij T · X.col(j) is row i of A T X.
-  struct NonZero {
-    int i, j;
-    double v;
-  };
-  NonZero nz[81];
+  // The rows are kept transposed (rows × 9), so that row i of A T X is the contiguous column
+  // out.col(i) = Σ_j A_ij T · X.col(j).
+  RowNonZeros nz;
   int nnz = 0;
-  for (int j = 0; j < 9; ++j)
-    for (int i = 0; i < 9; ++i)
-      if (A(i, j) != 0.0) nz[nnz++] = {i, j, A(i, j) * T};
+  for (int i = 0; i < 9; ++i) {
+    nz.start[i] = nnz;
+    for (int j = 0; j < 9; ++j)
+      if (A(i, j) != 0.0) {
+        nz.col[nnz] = j;
+        nz.v[nnz++] = A(i, j) * T;
+      }
+  }
+  nz.start[9] = nnz;
 
   // Rows. A block's navigation-row columns evolve on their own (A acts on each column; the block
   // adds its own term), so only distinct blocks need rows: one-state blocks (bias, random walk,
@@ -111,8 +177,7 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
   double boundPhi = 1.0, boundQ = QdT.lpNorm<Eigen::Infinity>();
   for (int k = 1; k <= kMaxTerms; ++k) {
     // Φ: [n] A T Φ_n, [b] A T Φ_b + T g_b c_b (F_b T)^(k−1)/(k−1)!, over k.
-    tmpP.setZero();
-    for (int z = 0; z < nnz; ++z) tmpP.col(nz[z].i) += nz[z].v * Pt.col(nz[z].j);
+    multiplyRows(nz, Pt, tmpP);
     for (Scalar& b : phiScalars) {
       const double cp = b.c * b.term;
       for (int j = 0; j < 9; ++j) tmpP(b.row, j) += cp * inputs[b.input][j];
@@ -124,10 +189,8 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
       g.S.noalias() = g.FT * g.P;
       g.P = g.S * (1.0 / double(k));
     }
-    Pt = tmpP * (1.0 / double(k));
     // M: [nn] X + Xᵀ, X = A T M_nn + Σ T g_b c_b M_bn; [nb] A T M_nb + T g_b c_b M_bb + M_nb (F_b T)ᵀ.
-    tmpM.setZero();
-    for (int z = 0; z < nnz; ++z) tmpM.col(nz[z].i) += nz[z].v * Mt.col(nz[z].j);
+    multiplyRows(nz, Mt, tmpM);
     Wc.setZero();
     for (Scalar& b : mScalars) {
       const double cm = b.c * b.term, mc = double(b.mult) * b.c;
@@ -151,10 +214,8 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
       tmpM.topRows<9>().noalias() += Wc.col(i) * inputs[i].transpose();
     const Eigen::Matrix<double, 9, 9> X = tmpM.topRows<9>();
     tmpM.topRows<9>() = X + X.transpose();
-    Mt = tmpM * (1.0 / double(k + 1));
-    PhiT += Pt;
-    QdT += Mt;
-    const double termPhi = Pt.lpNorm<Eigen::Infinity>(), termQ = Mt.lpNorm<Eigen::Infinity>();
+    const double termPhi = scaleAndAdd(tmpP, 1.0 / double(k), Pt, PhiT);
+    const double termQ = scaleAndAdd(tmpM, 1.0 / double(k + 1), Mt, QdT);
     boundPhi += termPhi;
     boundQ += termQ;
     if (termPhi > kTol * boundPhi || termQ > kTol * boundQ) continue;
