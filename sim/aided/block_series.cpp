@@ -13,57 +13,105 @@ struct RowNonZeros {
   double v[81];
 };
 
+// The two kernels below are compiled twice on x86-64, for AVX2 and for the baseline, and the
+// loader picks one for the CPU (GCC/Clang target_clones). Both do the same IEEE additions and
+// multiplications in the same order (AVX2 without FMA: nothing is contracted), so the results are
+// bit-identical on every machine; AVX2 only does four of them per instruction instead of two.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define SINSIM_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define SINSIM_WIDE_KERNEL
+#endif
+
 // out.col(i) = Σ_j (A T)_ij in.col(j) over the rows of `in` (transposed rows, see below), each
 // entry's sum taken from 0 in ascending j: the same additions, in the same order, as adding the
-// non-zeros' columns one after another, with four entries at a time kept in registers instead of
-// a pass over the output per non-zero.
+// non-zeros' columns one after another, with eight entries at a time kept in registers instead
+// of a pass over the output per non-zero.
+// W entries of out.col(i) from row r on (the caller keeps r + W <= rows).
+template <int W>
+inline void multiplyRowBlock(const RowNonZeros& a, const double* src, Eigen::Index n, int i,
+                             Eigen::Index r, double* o) {
+  double s[W];
+  for (int q = 0; q < W; ++q) s[q] = 0.0;
+  for (int t = a.start[i]; t < a.start[i + 1]; ++t) {
+    const double v = a.v[t];
+    const double* c = src + a.col[t] * n + r;
+    for (int q = 0; q < W; ++q) s[q] += v * c[q];
+  }
+  for (int q = 0; q < W; ++q) o[r + q] = s[q];
+}
+
+SINSIM_WIDE_KERNEL
 void multiplyRows(const RowNonZeros& a, const Eigen::MatrixXd& in, Eigen::MatrixXd& out) {
   const Eigen::Index n = in.rows();
   const double* src = in.data();
   for (int i = 0; i < 9; ++i) {
     double* o = out.data() + i * n;
-    const int t0 = a.start[i], t1 = a.start[i + 1];
     Eigen::Index r = 0;
-    for (; r + 4 <= n; r += 4) {
-      double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-      for (int t = t0; t < t1; ++t) {
-        const double v = a.v[t];
-        const double* c = src + a.col[t] * n + r;
-        s0 += v * c[0];
-        s1 += v * c[1];
-        s2 += v * c[2];
-        s3 += v * c[3];
-      }
-      o[r] = s0;
-      o[r + 1] = s1;
-      o[r + 2] = s2;
-      o[r + 3] = s3;
-    }
-    for (; r < n; ++r) {
-      double s0 = 0.0;
-      for (int t = t0; t < t1; ++t) s0 += a.v[t] * src[a.col[t] * n + r];
-      o[r] = s0;
-    }
+    for (; r + 8 <= n; r += 8) multiplyRowBlock<8>(a, src, n, i, r, o);
+    for (; r + 4 <= n; r += 4) multiplyRowBlock<4>(a, src, n, i, r, o);
+    for (; r < n; ++r) multiplyRowBlock<1>(a, src, n, i, r, o);
   }
 }
 
-// term ← tmp · scale, sum += term; returns max |term|, NaN if a term is NaN (one pass instead
-// of three).
+// term ← tmp · scale, sum += term; returns max |term| (one pass instead of three; four running
+// maxima, so that the comparisons do not wait on each other).
+SINSIM_WIDE_KERNEL
 double scaleAndAdd(const Eigen::MatrixXd& tmp, double scale, Eigen::MatrixXd& term,
                    Eigen::MatrixXd& sum) {
   const Eigen::Index size = tmp.size();
   const double* t = tmp.data();
   double* d = term.data();
   double* s = sum.data();
-  double largest = 0.0;
-  bool nan = false;
   for (Eigen::Index i = 0; i < size; ++i) {
     d[i] = t[i] * scale;
     s[i] += d[i];
-    largest = std::max(largest, std::abs(d[i]));
-    nan = nan || std::isnan(d[i]);
   }
-  return nan ? NAN : largest;
+  double m[4] = {0.0, 0.0, 0.0, 0.0};
+  Eigen::Index i = 0;
+  for (; i + 4 <= size; i += 4)
+    for (int q = 0; q < 4; ++q) m[q] = std::max(m[q], std::abs(d[i + q]));
+  for (; i < size; ++i) m[0] = std::max(m[0], std::abs(d[i]));
+  return std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
+}
+
+// The non-zero entries of an input column T g (a gyro or accelerometer axis drives three of the
+// nine INS errors).
+struct Support {
+  int count = 0;
+  int index[9];
+};
+
+Support supportOf(const Eigen::Matrix<double, 9, 1>& g) {
+  Support s;
+  for (int c = 0; c < 9; ++c)
+    if (g[c] != 0.0) s.index[s.count++] = c;
+  return s;
+}
+
+// The navigation block of M's next term: X = tmp[nn] + Σ_i Wc_i (T g_i)ᵀ (in i order), then
+// tmp[nn] = X + Xᵀ — by plain loops over the 9 × 9 block of the (rows × 9) work matrix, entry by
+// entry the same operations as Eigen's outer products and transpose sum. The entries of a zero
+// g_ic are skipped: they would add ±0 to a sum that started from +0 (multiplyRows), which leaves
+// it bit for bit unchanged.
+void addInputsAndSymmetrize(const Eigen::Matrix<double, 9, Eigen::Dynamic>& Wc,
+                            const std::vector<Eigen::Matrix<double, 9, 1>>& inputs,
+                            const std::vector<Support>& support, Eigen::MatrixXd& tmp) {
+  const Eigen::Index n = tmp.rows();
+  double* t = tmp.data();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const double* w = Wc.data() + 9 * i;
+    for (int k = 0; k < support[i].count; ++k) {
+      const int c = support[i].index[k];
+      const double g = inputs[i][c];
+      for (int r = 0; r < 9; ++r) t[c * n + r] += g * w[r];
+    }
+  }
+  double X[9][9];  // X[c][r] = tmp(r, c)
+  for (int c = 0; c < 9; ++c)
+    for (int r = 0; r < 9; ++r) X[c][r] = t[c * n + r];
+  for (int c = 0; c < 9; ++c)
+    for (int r = 0; r < 9; ++r) t[c * n + r] = X[c][r] + X[r][c];
 }
 
 }  // namespace
@@ -72,6 +120,10 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
                          const std::vector<InputBlock>& blocks, int n, double T,
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& PhiN,
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& QdN) {
+  // Non-finite input: the whole-system path (which reports it).
+  if (!(A.allFinite() && Qn.allFinite() && std::isfinite(T))) return false;
+  for (const InputBlock& b : blocks)
+    if (!(b.g.allFinite() && b.c.allFinite() && b.F.allFinite() && b.Qc.allFinite())) return false;
   // The series without cancellation needs every |F_ii| T <= 1 (discretize's halving case).
   for (int i = 0; i < 9; ++i)
     if (!(std::abs(A(i, i)) * T <= 1.0)) return false;
@@ -166,6 +218,8 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
   QdT.topRows<9>() = Qn * T;
   Eigen::MatrixXd Pt = PhiT, Mt = QdT, tmpP(nP, 9), tmpM(nM, 9);
   Eigen::Matrix<double, 9, Eigen::Dynamic> Wc(9, inputs.size());  // Σ over an input's blocks of c_b M_bn
+  std::vector<Support> support;
+  for (const Eigen::Matrix<double, 9, 1>& g : inputs) support.push_back(supportOf(g));
   // out rows [row, row + s) += rᵀ (T g)ᵀ.
   auto addOuter = [](Eigen::MatrixXd& out, int row, const Eigen::Matrix<double, 9, 1>& Tg,
                      const Eigen::RowVectorXd& r) {
@@ -180,7 +234,10 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
     multiplyRows(nz, Pt, tmpP);
     for (Scalar& b : phiScalars) {
       const double cp = b.c * b.term;
-      for (int j = 0; j < 9; ++j) tmpP(b.row, j) += cp * inputs[b.input][j];
+      for (int k = 0; k < support[b.input].count; ++k) {  // (zero entries add ±0 to +0 sums)
+        const int j = support[b.input].index[k];
+        tmpP(b.row, j) += cp * inputs[b.input][j];
+      }
       b.term *= b.f / double(k);
     }
     for (General& g : general) {
@@ -210,10 +267,7 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
       g.S.noalias() = g.FT * g.M;
       g.M = (g.S + g.S.transpose()) * (1.0 / double(k + 1));
     }
-    for (std::size_t i = 0; i < inputs.size(); ++i)  // Σ_b (c_b M_bn)ᵀ (T g_b)ᵀ
-      tmpM.topRows<9>().noalias() += Wc.col(i) * inputs[i].transpose();
-    const Eigen::Matrix<double, 9, 9> X = tmpM.topRows<9>();
-    tmpM.topRows<9>() = X + X.transpose();
+    addInputsAndSymmetrize(Wc, inputs, support, tmpM);
     const double termPhi = scaleAndAdd(tmpP, 1.0 / double(k), Pt, PhiT);
     const double termQ = scaleAndAdd(tmpM, 1.0 / double(k + 1), Mt, QdT);
     boundPhi += termPhi;
