@@ -13,9 +13,9 @@
 namespace sinsim::errormodels {
 namespace {
 
-class ContinuousWalk final : public AxisErrorState {
+class ContinuousWalk final : public DirectAxisErrorState<ContinuousWalk> {
  public:
-  ContinuousWalk(int axis, double K, NormalStream s) : AxisErrorState(axis), k_(K), s_(s) {}
+  ContinuousWalk(int axis, double K, NormalStream s) : DirectAxisErrorState(axis), k_(K), s_(s) {}
   double integral(const Interval& iv) override {
     const double w1 = s_.next(), w2 = s_.next();
     if (iv.dt != dt_) {  // the factors of dt once per interval length (the IMU's are all equal)

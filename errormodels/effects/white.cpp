@@ -14,10 +14,10 @@
 namespace sinsim::errormodels {
 namespace {
 
-class ContinuousWhite final : public AxisErrorState {
+class ContinuousWhite final : public DirectAxisErrorState<ContinuousWhite> {
  public:
   ContinuousWhite(int axis, double density, NormalStream s)
-      : AxisErrorState(axis), n_(density), s_(s) {}
+      : DirectAxisErrorState(axis), n_(density), s_(s) {}
   double integral(const Interval& iv) override {
     if (iv.dt != dt_) {  // N sqrt(dt) once per interval length (the IMU's are all equal)
       dt_ = iv.dt;
