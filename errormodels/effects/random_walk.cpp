@@ -9,6 +9,7 @@
 // (Var = K² dt³/3, Cov with the step = K² dt²/2). The step is scaled by sqrt(dt), never dt.
 // The walk starts at 0 (add a `bias` with sigma for a random starting value).
 #include "errormodels/held_process.hpp"
+#include "errormodels/interval_cache.hpp"
 
 namespace sinsim::errormodels {
 namespace {
@@ -18,22 +19,23 @@ class ContinuousWalk final : public DirectAxisErrorState<ContinuousWalk> {
   ContinuousWalk(int axis, double K, NormalStream s) : DirectAxisErrorState(axis), k_(K), s_(s) {}
   double integral(const Interval& iv) override {
     const double w1 = s_.next(), w2 = s_.next();
-    if (iv.dt != dt_) {  // the factors of dt once per interval length (the IMU's are all equal)
-      dt_ = iv.dt;
-      const double sdt = std::sqrt(dt_);
-      kDtSqrtDt_ = k_ * dt_ * sdt;
-      kSqrtDt_ = k_ * sdt;
-    }
-    const double I = b_ * iv.dt + kDtSqrtDt_ * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
-    b_ += kSqrtDt_ * w1;
+    const Factors& f = factors_.get(iv.dt, [this](double dt) {
+      const double sdt = std::sqrt(dt);
+      return Factors{k_ * dt * sdt, k_ * sdt};
+    });
+    const double I = b_ * iv.dt + f.kDtSqrtDt * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
+    b_ += f.kSqrtDt * w1;
     return I;
   }
 
  private:
+  struct Factors {
+    double kDtSqrtDt = 0.0, kSqrtDt = 0.0;  // K dt^1.5 [signal·s], K dt^0.5 [signal]
+  };
   double k_;  // [signal/sqrt(s)]
   NormalStream s_;
   double b_ = 0.0;
-  double dt_ = -1.0, kDtSqrtDt_ = 0.0, kSqrtDt_ = 0.0;  // [s], K dt^1.5, K dt^0.5
+  IntervalCache<Factors> factors_;
 };
 
 class DiscreteWalk final : public HeldProcessState {

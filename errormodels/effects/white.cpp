@@ -10,6 +10,7 @@
 // discrete sequence of standard deviation sigma = N·sqrt(f) held over each 1/f and integrated into
 // the IMU intervals; both forms have the same low-frequency density N = sigma/sqrt(f).
 #include "errormodels/held_process.hpp"
+#include "errormodels/interval_cache.hpp"
 
 namespace sinsim::errormodels {
 namespace {
@@ -19,17 +20,13 @@ class ContinuousWhite final : public DirectAxisErrorState<ContinuousWhite> {
   ContinuousWhite(int axis, double density, NormalStream s)
       : DirectAxisErrorState(axis), n_(density), s_(s) {}
   double integral(const Interval& iv) override {
-    if (iv.dt != dt_) {  // N sqrt(dt) once per interval length (the IMU's are all equal)
-      dt_ = iv.dt;
-      nSqrtDt_ = n_ * std::sqrt(dt_);
-    }
-    return nSqrtDt_ * s_.next();
+    return scale_.get(iv.dt, [this](double dt) { return n_ * std::sqrt(dt); }) * s_.next();
   }
 
  private:
   double n_;  // [signal·sqrt(s)]
   NormalStream s_;
-  double dt_ = -1.0, nSqrtDt_ = 0.0;  // [s], [signal·s]
+  IntervalCache<double> scale_;  // N sqrt(dt) [signal·s]
 };
 
 class DiscreteWhite final : public HeldProcessState {
