@@ -13,21 +13,18 @@ struct RowNonZeros {
   double v[81];
 };
 
-// The two kernels below are compiled twice on x86-64, for AVX2 and for the baseline, and the
-// loader picks one for the CPU (GCC/Clang target_clones). Both do the same IEEE additions and
-// multiplications in the same order (AVX2 without FMA: nothing is contracted), so the results are
-// bit-identical on every machine; AVX2 only does four of them per instruction instead of two.
+// The two kernels below are compiled twice on x86-64 with GCC, for AVX2 and for the baseline, and
+// the loader picks one for the CPU (target_clones; other compilers build the baseline alone). Both
+// do the same IEEE additions and multiplications in the same order (AVX2 without FMA: nothing is
+// contracted), so the results are bit-identical on every machine; AVX2 only does four of them
+// per instruction instead of two.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define SINSIM_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
 #else
 #define SINSIM_WIDE_KERNEL
 #endif
 
-// out.col(i) = Σ_j (A T)_ij in.col(j) over the rows of `in` (transposed rows, see below), each
-// entry's sum taken from 0 in ascending j: the same additions, in the same order, as adding the
-// non-zeros' columns one after another, with eight entries at a time kept in registers instead
-// of a pass over the output per non-zero.
-// W entries of out.col(i) from row r on (the caller keeps r + W <= rows).
+// W entries of out.col(i) from row r on (the caller keeps r + W <= rows), see multiplyRows.
 template <int W>
 inline void multiplyRowBlock(const RowNonZeros& a, const double* src, Eigen::Index n, int i,
                              Eigen::Index r, double* o) {
@@ -41,6 +38,10 @@ inline void multiplyRowBlock(const RowNonZeros& a, const double* src, Eigen::Ind
   for (int q = 0; q < W; ++q) o[r + q] = s[q];
 }
 
+// out.col(i) = Σ_j (A T)_ij in.col(j) over the rows of `in` (transposed rows, see below), each
+// entry's sum taken from +0 in ascending j: the same additions, in the same order, as adding the
+// non-zeros' columns one after another, with up to eight entries at a time kept in registers
+// instead of a pass over the output per non-zero.
 SINSIM_WIDE_KERNEL
 void multiplyRows(const RowNonZeros& a, const Eigen::MatrixXd& in, Eigen::MatrixXd& out) {
   const Eigen::Index n = in.rows();
