@@ -10,6 +10,8 @@
 // the same aiding, sensor model and filter, and a 30 s and a 60 s outage twice each; its
 // cpu_s_per_1000_runs / 2 is the 1000-run time on 2 cores (threads scale 1.9×, docs/benchmarks.md).
 // BM_FreeMcCar: the same drive and IMU errors free-inertially, the reference of the ratio.
+// bench/car-aided.yaml is BM_AidedMcCar's scenario as a file, for the whole 1000 runs with
+// `sinsim mc bench/car-aided.yaml --runs 1000 --threads 2` (docs/aided.md, "Speed").
 //
 //   cmake --build build --target bench_aided_mc && build/bench/bench_aided_mc
 //   build/bench/bench_aided_mc --benchmark_filter=Full    # the whole 1000 runs (minutes)

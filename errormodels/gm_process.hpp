@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "errormodels/interval_cache.hpp"
 #include "errormodels/random.hpp"
 
 namespace sinsim::errormodels {
@@ -52,21 +53,25 @@ class ExactGaussMarkov {
 
   /// ∫ x dt over the next interval of length dt [s]; advances the state.
   double integral(double dt) {
-    if (dt != dt_) setInterval(dt);
+    const Step& k = steps_.get(dt, [this](double h) { return step(h); });
     const double w1 = s_.next(), w2 = s_.next();
-    const double e1 = l11_ * w1;
-    const double e2 = l21_ * w1 + l22_ * w2;
-    const double I = c_ * x_ + e2;
-    x_ = phi_ * x_ + e1;
+    const double e1 = k.l11 * w1;
+    const double e2 = k.l21 * w1 + k.l22 * w2;
+    const double I = k.c * x_ + e2;
+    x_ = k.phi * x_ + e1;
     return I;
   }
   double state() const { return x_; }
 
  private:
-  void setInterval(double dt) {
-    dt_ = dt;
+  struct Step {  // the discretisation over one interval length
+    double phi = 0.0, c = 0.0, l11 = 0.0, l21 = 0.0, l22 = 0.0;
+  };
+
+  Step step(double dt) const {
+    Step k;
     const double r = dt / tau_;
-    phi_ = std::exp(-r);
+    k.phi = std::exp(-r);
     const double om = -std::expm1(-r);         // 1 - φ, accurate for small r
     const double om2 = -std::expm1(-2.0 * r);  // 1 - φ²
     const double q = 2.0 * sigma_ * sigma_ / tau_;
@@ -80,16 +85,17 @@ class ExactGaussMarkov {
     }
     const double v2 = q * tau_ * tau_ * bracket;
     const double cv = q * tau_ * tau_ * om * om / 2.0;
-    c_ = tau_ * om;
-    l11_ = std::sqrt(v1);
-    l21_ = l11_ > 0 ? cv / l11_ : 0.0;
-    l22_ = std::sqrt(std::max(0.0, v2 - l21_ * l21_));
+    k.c = tau_ * om;
+    k.l11 = std::sqrt(v1);
+    k.l21 = k.l11 > 0 ? cv / k.l11 : 0.0;
+    k.l22 = std::sqrt(std::max(0.0, v2 - k.l21 * k.l21));
+    return k;
   }
 
   double sigma_, tau_;
   NormalStream s_;
   double x_ = 0.0;
-  double dt_ = -1.0, phi_ = 0.0, c_ = 0.0, l11_ = 0.0, l21_ = 0.0, l22_ = 0.0;
+  IntervalCache<Step> steps_;
 };
 
 }  // namespace sinsim::errormodels

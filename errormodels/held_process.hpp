@@ -10,10 +10,10 @@
 
 namespace sinsim::errormodels {
 
-class HeldProcessState : public AxisErrorState {
+class HeldProcessState : public DirectAxisErrorState<HeldProcessState> {
  public:
   /// rate [Hz] of the process samples.
-  HeldProcessState(int axis, double rate) : AxisErrorState(axis), h_(1.0 / rate) {}
+  HeldProcessState(int axis, double rate) : DirectAxisErrorState(axis), h_(1.0 / rate) {}
 
   double integral(const Interval& iv) final {
     if (!started_) {

@@ -6,9 +6,9 @@
 namespace sinsim::errormodels {
 namespace {
 
-class BiasState final : public AxisErrorState {
+class BiasState final : public DirectAxisErrorState<BiasState> {
  public:
-  BiasState(int axis, double b) : AxisErrorState(axis), b_(b) {}
+  BiasState(int axis, double b) : DirectAxisErrorState(axis), b_(b) {}
   double integral(const Interval& iv) override { return b_ * iv.dt; }
 
  private:

@@ -15,10 +15,10 @@
 namespace sinsim::errormodels {
 namespace {
 
-class ContinuousGm final : public AxisErrorState {
+class ContinuousGm final : public DirectAxisErrorState<ContinuousGm> {
  public:
   ContinuousGm(int axis, double sigma, double tau, NormalStream s)
-      : AxisErrorState(axis), gm_(sigma, tau, s) {}
+      : DirectAxisErrorState(axis), gm_(sigma, tau, s) {}
   double integral(const Interval& iv) override { return gm_.integral(iv.dt); }
 
  private:

@@ -9,25 +9,33 @@
 // (Var = K² dt³/3, Cov with the step = K² dt²/2). The step is scaled by sqrt(dt), never dt.
 // The walk starts at 0 (add a `bias` with sigma for a random starting value).
 #include "errormodels/held_process.hpp"
+#include "errormodels/interval_cache.hpp"
 
 namespace sinsim::errormodels {
 namespace {
 
-class ContinuousWalk final : public AxisErrorState {
+class ContinuousWalk final : public DirectAxisErrorState<ContinuousWalk> {
  public:
-  ContinuousWalk(int axis, double K, NormalStream s) : AxisErrorState(axis), k_(K), s_(s) {}
+  ContinuousWalk(int axis, double K, NormalStream s) : DirectAxisErrorState(axis), k_(K), s_(s) {}
   double integral(const Interval& iv) override {
     const double w1 = s_.next(), w2 = s_.next();
-    const double sdt = std::sqrt(iv.dt);
-    const double I = b_ * iv.dt + k_ * iv.dt * sdt * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
-    b_ += k_ * sdt * w1;
+    const Factors& f = factors_.get(iv.dt, [this](double dt) {
+      const double sdt = std::sqrt(dt);
+      return Factors{k_ * dt * sdt, k_ * sdt};
+    });
+    const double I = b_ * iv.dt + f.kDtSqrtDt * (0.5 * w1 + w2 / (2.0 * std::sqrt(3.0)));
+    b_ += f.kSqrtDt * w1;
     return I;
   }
 
  private:
+  struct Factors {
+    double kDtSqrtDt = 0.0, kSqrtDt = 0.0;  // K dt^1.5 [signal·s], K dt^0.5 [signal]
+  };
   double k_;  // [signal/sqrt(s)]
   NormalStream s_;
   double b_ = 0.0;
+  IntervalCache<Factors> factors_;
 };
 
 class DiscreteWalk final : public HeldProcessState {

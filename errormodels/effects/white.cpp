@@ -10,19 +10,23 @@
 // discrete sequence of standard deviation sigma = N·sqrt(f) held over each 1/f and integrated into
 // the IMU intervals; both forms have the same low-frequency density N = sigma/sqrt(f).
 #include "errormodels/held_process.hpp"
+#include "errormodels/interval_cache.hpp"
 
 namespace sinsim::errormodels {
 namespace {
 
-class ContinuousWhite final : public AxisErrorState {
+class ContinuousWhite final : public DirectAxisErrorState<ContinuousWhite> {
  public:
   ContinuousWhite(int axis, double density, NormalStream s)
-      : AxisErrorState(axis), n_(density), s_(s) {}
-  double integral(const Interval& iv) override { return n_ * std::sqrt(iv.dt) * s_.next(); }
+      : DirectAxisErrorState(axis), n_(density), s_(s) {}
+  double integral(const Interval& iv) override {
+    return scale_.get(iv.dt, [this](double dt) { return n_ * std::sqrt(dt); }) * s_.next();
+  }
 
  private:
   double n_;  // [signal·sqrt(s)]
   NormalStream s_;
+  IntervalCache<double> scale_;  // N sqrt(dt) [signal·s]
 };
 
 class DiscreteWhite final : public HeldProcessState {

@@ -1,30 +1,149 @@
 #include "sim/aided/block_series.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sinsim::sim::aided {
+namespace {
+
+// The non-zeros of A T by rows, each row's in ascending column order.
+struct RowNonZeros {
+  int start[10] = {};  // row i's entries are [start[i], start[i + 1])
+  int col[81];
+  double v[81];
+};
+
+// The two kernels below are compiled twice on x86-64 with GCC, for AVX2 and for the baseline, and
+// the loader picks one for the CPU (target_clones; other compilers build the baseline alone). Both
+// do the same IEEE additions and multiplications in the same order (AVX2 without FMA: nothing is
+// contracted), so the results are bit-identical on every machine; AVX2 only does four of them
+// per instruction instead of two.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define SINSIM_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define SINSIM_WIDE_KERNEL
+#endif
+
+// W entries of out.col(i) from row r on (the caller keeps r + W <= rows), see multiplyRows.
+template <int W>
+inline void multiplyRowBlock(const RowNonZeros& a, const double* src, Eigen::Index n, int i,
+                             Eigen::Index r, double* o) {
+  double s[W];
+  for (int q = 0; q < W; ++q) s[q] = 0.0;
+  for (int t = a.start[i]; t < a.start[i + 1]; ++t) {
+    const double v = a.v[t];
+    const double* c = src + a.col[t] * n + r;
+    for (int q = 0; q < W; ++q) s[q] += v * c[q];
+  }
+  for (int q = 0; q < W; ++q) o[r + q] = s[q];
+}
+
+// out.col(i) = Σ_j (A T)_ij in.col(j) over the rows of `in` (transposed rows, see below), each
+// entry's sum taken from +0 in ascending j: the same additions, in the same order, as adding the
+// non-zeros' columns one after another, with up to eight entries at a time kept in registers
+// instead of a pass over the output per non-zero.
+SINSIM_WIDE_KERNEL
+void multiplyRows(const RowNonZeros& a, const Eigen::MatrixXd& in, Eigen::MatrixXd& out) {
+  const Eigen::Index n = in.rows();
+  const double* src = in.data();
+  for (int i = 0; i < 9; ++i) {
+    double* o = out.data() + i * n;
+    Eigen::Index r = 0;
+    for (; r + 8 <= n; r += 8) multiplyRowBlock<8>(a, src, n, i, r, o);
+    for (; r + 4 <= n; r += 4) multiplyRowBlock<4>(a, src, n, i, r, o);
+    for (; r < n; ++r) multiplyRowBlock<1>(a, src, n, i, r, o);
+  }
+}
+
+// term ← tmp · scale, sum += term; returns max |term| (one pass instead of three; four running
+// maxima, so that the comparisons do not wait on each other).
+SINSIM_WIDE_KERNEL
+double scaleAndAdd(const Eigen::MatrixXd& tmp, double scale, Eigen::MatrixXd& term,
+                   Eigen::MatrixXd& sum) {
+  const Eigen::Index size = tmp.size();
+  const double* t = tmp.data();
+  double* d = term.data();
+  double* s = sum.data();
+  for (Eigen::Index i = 0; i < size; ++i) {
+    d[i] = t[i] * scale;
+    s[i] += d[i];
+  }
+  double m[4] = {0.0, 0.0, 0.0, 0.0};
+  Eigen::Index i = 0;
+  for (; i + 4 <= size; i += 4)
+    for (int q = 0; q < 4; ++q) m[q] = std::max(m[q], std::abs(d[i + q]));
+  for (; i < size; ++i) m[0] = std::max(m[0], std::abs(d[i]));
+  return std::max(std::max(m[0], m[1]), std::max(m[2], m[3]));
+}
+
+// The non-zero entries of an input column T g (a gyro or accelerometer axis drives three of the
+// nine INS errors).
+struct Support {
+  int count = 0;
+  int index[9];
+};
+
+Support supportOf(const Eigen::Matrix<double, 9, 1>& g) {
+  Support s;
+  for (int c = 0; c < 9; ++c)
+    if (g[c] != 0.0) s.index[s.count++] = c;
+  return s;
+}
+
+// The navigation block of M's next term: X = tmp[nn] + Σ_i Wc_i (T g_i)ᵀ (in i order), then
+// tmp[nn] = X + Xᵀ — by plain loops over the 9 × 9 block of the (rows × 9) work matrix, entry by
+// entry the same operations as Eigen's outer products and transpose sum. The entries of a zero
+// g_ic are skipped: they would add ±0 to a sum that started from +0 (multiplyRows), which leaves
+// it bit for bit unchanged.
+void addInputsAndSymmetrize(const Eigen::Matrix<double, 9, Eigen::Dynamic>& Wc,
+                            const std::vector<Eigen::Matrix<double, 9, 1>>& inputs,
+                            const std::vector<Support>& support, Eigen::MatrixXd& tmp) {
+  const Eigen::Index n = tmp.rows();
+  double* t = tmp.data();
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const double* w = Wc.data() + 9 * i;
+    for (int k = 0; k < support[i].count; ++k) {
+      const int c = support[i].index[k];
+      const double g = inputs[i][c];
+      for (int r = 0; r < 9; ++r) t[c * n + r] += g * w[r];
+    }
+  }
+  double X[9][9];  // X[c][r] = tmp(r, c)
+  for (int c = 0; c < 9; ++c)
+    for (int r = 0; r < 9; ++r) X[c][r] = t[c * n + r];
+  for (int c = 0; c < 9; ++c)
+    for (int r = 0; r < 9; ++r) t[c * n + r] = X[c][r] + X[r][c];
+}
+
+}  // namespace
 
 bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matrix<double, 9, 9>& Qn,
                          const std::vector<InputBlock>& blocks, int n, double T,
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& PhiN,
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& QdN) {
+  // Non-finite input: the whole-system path (which reports it).
+  if (!(A.allFinite() && Qn.allFinite() && std::isfinite(T))) return false;
+  for (const InputBlock& b : blocks)
+    if (!(b.g.allFinite() && b.c.allFinite() && b.F.allFinite() && b.Qc.allFinite())) return false;
   // The series without cancellation needs every |F_ii| T <= 1 (discretize's halving case).
   for (int i = 0; i < 9; ++i)
     if (!(std::abs(A(i, i)) * T <= 1.0)) return false;
   for (const InputBlock& b : blocks)
     for (Eigen::Index i = 0; i < b.F.rows(); ++i)
       if (!(std::abs(b.F(i, i)) * T <= 1.0)) return false;
-  // The rows are kept transposed (rows × 9), so that each non-zero A_ij T adds a contiguous
-  // column: out.col(i) += A_ij T · X.col(j) is row i of A T X.
-  struct NonZero {
-    int i, j;
-    double v;
-  };
-  NonZero nz[81];
+  // The rows are kept transposed (rows × 9), so that row i of A T X is the contiguous column
+  // out.col(i) = Σ_j A_ij T · X.col(j).
+  RowNonZeros nz;
   int nnz = 0;
-  for (int j = 0; j < 9; ++j)
-    for (int i = 0; i < 9; ++i)
-      if (A(i, j) != 0.0) nz[nnz++] = {i, j, A(i, j) * T};
+  for (int i = 0; i < 9; ++i) {
+    nz.start[i] = nnz;
+    for (int j = 0; j < 9; ++j)
+      if (A(i, j) != 0.0) {
+        nz.col[nnz] = j;
+        nz.v[nnz++] = A(i, j) * T;
+      }
+  }
+  nz.start[9] = nnz;
 
   // Rows. A block's navigation-row columns evolve on their own (A acts on each column; the block
   // adds its own term), so only distinct blocks need rows: one-state blocks (bias, random walk,
@@ -100,6 +219,8 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
   QdT.topRows<9>() = Qn * T;
   Eigen::MatrixXd Pt = PhiT, Mt = QdT, tmpP(nP, 9), tmpM(nM, 9);
   Eigen::Matrix<double, 9, Eigen::Dynamic> Wc(9, inputs.size());  // Σ over an input's blocks of c_b M_bn
+  std::vector<Support> support;
+  for (const Eigen::Matrix<double, 9, 1>& g : inputs) support.push_back(supportOf(g));
   // out rows [row, row + s) += rᵀ (T g)ᵀ.
   auto addOuter = [](Eigen::MatrixXd& out, int row, const Eigen::Matrix<double, 9, 1>& Tg,
                      const Eigen::RowVectorXd& r) {
@@ -111,11 +232,13 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
   double boundPhi = 1.0, boundQ = QdT.lpNorm<Eigen::Infinity>();
   for (int k = 1; k <= kMaxTerms; ++k) {
     // Φ: [n] A T Φ_n, [b] A T Φ_b + T g_b c_b (F_b T)^(k−1)/(k−1)!, over k.
-    tmpP.setZero();
-    for (int z = 0; z < nnz; ++z) tmpP.col(nz[z].i) += nz[z].v * Pt.col(nz[z].j);
+    multiplyRows(nz, Pt, tmpP);
     for (Scalar& b : phiScalars) {
       const double cp = b.c * b.term;
-      for (int j = 0; j < 9; ++j) tmpP(b.row, j) += cp * inputs[b.input][j];
+      for (int k = 0; k < support[b.input].count; ++k) {  // (zero entries add ±0 to +0 sums)
+        const int j = support[b.input].index[k];
+        tmpP(b.row, j) += cp * inputs[b.input][j];
+      }
       b.term *= b.f / double(k);
     }
     for (General& g : general) {
@@ -124,10 +247,8 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
       g.S.noalias() = g.FT * g.P;
       g.P = g.S * (1.0 / double(k));
     }
-    Pt = tmpP * (1.0 / double(k));
     // M: [nn] X + Xᵀ, X = A T M_nn + Σ T g_b c_b M_bn; [nb] A T M_nb + T g_b c_b M_bb + M_nb (F_b T)ᵀ.
-    tmpM.setZero();
-    for (int z = 0; z < nnz; ++z) tmpM.col(nz[z].i) += nz[z].v * Mt.col(nz[z].j);
+    multiplyRows(nz, Mt, tmpM);
     Wc.setZero();
     for (Scalar& b : mScalars) {
       const double cm = b.c * b.term, mc = double(b.mult) * b.c;
@@ -147,14 +268,9 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
       g.S.noalias() = g.FT * g.M;
       g.M = (g.S + g.S.transpose()) * (1.0 / double(k + 1));
     }
-    for (std::size_t i = 0; i < inputs.size(); ++i)  // Σ_b (c_b M_bn)ᵀ (T g_b)ᵀ
-      tmpM.topRows<9>().noalias() += Wc.col(i) * inputs[i].transpose();
-    const Eigen::Matrix<double, 9, 9> X = tmpM.topRows<9>();
-    tmpM.topRows<9>() = X + X.transpose();
-    Mt = tmpM * (1.0 / double(k + 1));
-    PhiT += Pt;
-    QdT += Mt;
-    const double termPhi = Pt.lpNorm<Eigen::Infinity>(), termQ = Mt.lpNorm<Eigen::Infinity>();
+    addInputsAndSymmetrize(Wc, inputs, support, tmpM);
+    const double termPhi = scaleAndAdd(tmpP, 1.0 / double(k), Pt, PhiT);
+    const double termQ = scaleAndAdd(tmpM, 1.0 / double(k + 1), Mt, QdT);
     boundPhi += termPhi;
     boundQ += termQ;
     if (termPhi > kTol * boundPhi || termQ > kTol * boundQ) continue;

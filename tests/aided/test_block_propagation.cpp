@@ -137,6 +137,15 @@ TEST_CASE("block series: the navigation rows equal Van Loan's exponential of the
   Eigen::Matrix<double, 9, Eigen::Dynamic> PhiN(9, n), QdN(9, n);
   CHECK_FALSE(navigationRowSeries(F.topLeftCorner<9, 9>(), Qc.topLeftCorner<9, 9>(), fast, n, 1.0,
                                   PhiN, QdN));
+  // Non-finite input (a NaN in A, an infinite input column) is refused as well: the whole-system
+  // path reports it, the series never returns NaN rows as converged.
+  Eigen::Matrix<double, 9, 9> Anan = F.topLeftCorner<9, 9>();
+  Anan(3, 7) = NAN;
+  CHECK_FALSE(navigationRowSeries(Anan, Qc.topLeftCorner<9, 9>(), blocks, n, 1.0, PhiN, QdN));
+  std::vector<InputBlock> infinite = blocks;
+  infinite[0].g[6] = INFINITY;
+  CHECK_FALSE(navigationRowSeries(F.topLeftCorner<9, 9>(), Qc.topLeftCorner<9, 9>(), infinite, n,
+                                  1.0, PhiN, QdN));
 }
 
 TEST_CASE("block propagation and O(n² m) Joseph update equal the dense forms") {

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "errormodels/ar_model.hpp"
+#include "errormodels/interval_cache.hpp"
 #include "errormodels/random.hpp"
 #include "errormodels/imu_model.hpp"
 #include "helpers.hpp"
@@ -55,6 +56,25 @@ void checkAllan(const std::vector<std::vector<double>>& recs, const std::vector<
 }
 
 }  // namespace
+
+TEST_CASE("interval cache: coefficients of the last two interval lengths, computed once each") {
+  // IMU intervals k/f − (k−1)/f alternate in their last bits; the cache must return make(dt) for
+  // whichever length comes, computing it only for a length that is not one of the last two.
+  const double a = (2.0 * 0.01) - (1.0 * 0.01), b = (3.0 * 0.01) - (2.0 * 0.01), c = 0.02;
+  REQUIRE(a != b);
+  int calls = 0;
+  auto make = [&calls](double dt) {
+    ++calls;
+    return 3.0 * dt;
+  };
+  errormodels::IntervalCache<double> cache;
+  const double seq[] = {a, b, a, b, b, c, a, b, b};
+  const int expectedCalls[] = {1, 2, 2, 2, 2, 3, 4, 5, 5};  // c evicts a, a evicts b, b evicts c
+  for (int i = 0; i < 9; ++i) {
+    CHECK(cache.get(seq[i], make) == 3.0 * seq[i]);
+    CHECK(calls == expectedCalls[i]);
+  }
+}
 
 TEST_CASE("white: rate variance N²/dt, no correlation, ADEV(1 s) = N, at 100 Hz and 1 kHz") {
   const double N = 0.2 * kDeg / std::sqrt(kHour);  // 0.2 deg/sqrt(h) [rad/s/sqrt(Hz)]
