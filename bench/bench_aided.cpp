@@ -106,7 +106,7 @@ void aidedRun(benchmark::State& state, const FilterSensorModel& fm) {
     nav::Strapdown sd(earth, aided.initialState(start), sc.strapdown);
     for (std::size_t k = 0; k < samples.size(); ++k) {
       sd.update(samples[k], truth[k].h);
-      benchmark::DoNotOptimize(aided.afterInterval(samples[k], truth[k], sd));
+      benchmark::DoNotOptimize(aided.afterInterval(samples[k], samples[k], truth[k], sd));
     }
     benchmark::DoNotOptimize(sd.state());
   }

@@ -4,6 +4,7 @@
 
 #include "nav/alignment.hpp"
 #include "nav/attitude.hpp"
+#include "nav/lever_arm.hpp"
 
 namespace sinsim::sim::aided {
 namespace {
@@ -113,8 +114,13 @@ void AidedNavigation::fix(const nav::NavState& truth, nav::Strapdown& sd, Filter
   out.nisDof = 3;
   if (g.velocitySigma) {
     noise = nav::Vec3(velNoise_.next(), velNoise_.next(), velNoise_.next());
-    const nav::Vec3 dzVel = e.segment<3>(3) - g.velocitySigma->cwiseProduct(noise);
-    in = filter_.updateVelocity(dzVel, *g.velocitySigma);
+    // The antenna's velocity: the reference point's plus the rotation's lever-arm term (zero
+    // without a lever arm), the navigation's from its own rate, the fix's from the truth's.
+    const nav::Vec3 arm_n = nav::leverArmVelocity(*earth_, s, rateNav_, g.leverArm_b);
+    const nav::Vec3 dzVel = e.segment<3>(3) + arm_n -
+                            nav::leverArmVelocity(*earth_, truth, rateTrue_, g.leverArm_b) -
+                            g.velocitySigma->cwiseProduct(noise);
+    in = filter_.updateVelocity(dzVel, arm_n, *g.velocitySigma);
     out.nis += in.nis;
     out.nisDof = 6;
   }
@@ -123,8 +129,8 @@ void AidedNavigation::fix(const nav::NavState& truth, nav::Strapdown& sd, Filter
   sd.correct(c.segment<3>(0), c.segment<3>(3), c.segment<3>(6));
 }
 
-FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::NavState& truth,
-                                           nav::Strapdown& sd) {
+FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::ImuSample& ideal,
+                                           const nav::NavState& truth, nav::Strapdown& sd) {
   FilterEpoch out;
   out.t = truth.t;
   if (!aligned_) {
@@ -161,6 +167,10 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::N
   stepTime_ += m.dt;
 
   const GnssConfig& g = config_.gnss;
+  if (g.velocitySigma) {
+    rateNav_ = (m.dtheta_b - bg * m.dt - sg) / m.dt;
+    rateTrue_ = ideal.dtheta_b / ideal.dt;
+  }
   const double tick = static_cast<double>(fixIndex_ + 1) / g.rate;
   if (truth.t + 0.5 * m.dt < tick) return out;
   ++fixIndex_;

@@ -57,10 +57,11 @@ class AidedNavigation {
   /// The navigation's start: the true start plus this run's initial errors.
   nav::NavState initialState(const nav::NavState& truth) const;
 
-  /// One IMU interval: `measured` has just been integrated by `strapdown`; truth is the true state
-  /// at the interval's end. Returns the epoch's filter view.
-  FilterEpoch afterInterval(const nav::ImuSample& measured, const nav::NavState& truth,
-                            nav::Strapdown& strapdown);
+  /// One IMU interval: `measured` has just been integrated by `strapdown`; `ideal` is what a
+  /// perfect IMU delivered over it and truth the true state at the interval's end (GNSS is
+  /// simulated from them). Returns the epoch's filter view.
+  FilterEpoch afterInterval(const nav::ImuSample& measured, const nav::ImuSample& ideal,
+                            const nav::NavState& truth, nav::Strapdown& strapdown);
 
   const std::vector<OutageResult>& outages() const { return outages_; }
   const ErrorStateFilter& filter() const { return filter_; }
@@ -68,6 +69,11 @@ class AidedNavigation {
  private:
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   void fix(const nav::NavState& truth, nav::Strapdown& sd, FilterEpoch& out);
+
+  // The last interval's mean body rates [rad/s]: the navigation's (compensated) and the truth's;
+  // a velocity fix's lever-arm term needs them.
+  nav::Vec3 rateNav_ = nav::Vec3::Zero();
+  nav::Vec3 rateTrue_ = nav::Vec3::Zero();
 
   const nav::Earth* earth_;
   AidingConfig config_;

@@ -95,8 +95,10 @@ class ErrorStateFilter {
   /// [m] (the antenna seen from the IMU, NED); sigma [m] per axis.
   Innovation updatePosition(const nav::Vec3& dz, const nav::Vec3& leverArm_n,
                             const nav::Vec3& sigma);
-  /// Velocity fix: dz = INS velocity − GNSS velocity in NED [m/s] (lever-arm rate term ignored).
-  Innovation updateVelocity(const nav::Vec3& dz, const nav::Vec3& sigma);
+  /// Velocity fix: dz = the antenna's INS velocity − GNSS velocity in NED [m/s]; armVelocity_n the
+  /// INS's lever-arm term C_nb (ω_eb × l) (nav/lever_arm.hpp), zero without a lever arm.
+  Innovation updateVelocity(const nav::Vec3& dz, const nav::Vec3& armVelocity_n,
+                            const nav::Vec3& sigma);
 
   /// Closed-loop feedback: returns the estimated δr_n, δv_n, ψ and zeroes them in x (their
   /// covariance is unchanged: the correction is a known shift).

@@ -141,7 +141,7 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
       nav::ImuSample m = samples[k];
       corruptor->corrupt(m, NAN);
       sd.update(m, truth[k].h);
-      const FilterEpoch fe = aided.afterInterval(m, truth[k], sd);
+      const FilterEpoch fe = aided.afterInterval(m, samples[k], truth[k], sd);
       if (!fe.filtered) continue;
       if (nees.size() <= epoch) {
         nees.push_back(0.0);
