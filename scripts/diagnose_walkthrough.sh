@@ -35,7 +35,7 @@ import sys
 from PIL import Image
 out, docs = sys.argv[1], sys.argv[2]
 for src, box, dst in (("diagnose.png", (0, 0, 1150, 1100), "diagnose-gx.png"),
-                      ("improve.png", (0, 2480, 760, 2960), "before-after-gx.png")):
+                      ("improve.png", (0, 2850, 760, 3290), "before-after-gx.png")):
     Image.open(f"{out}/{src}").crop(box).convert("RGB").quantize(colors=64).save(f"{docs}/{dst}", optimize=True)
 PY
 fi
