@@ -101,7 +101,8 @@ void AidedNavigation::align(const nav::ImuSample& m, const nav::NavState& truth,
   stepTime_ = 0.0;
 }
 
-void AidedNavigation::fix(const nav::NavState& truth, nav::Strapdown& sd, FilterEpoch& out) {
+void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
+                          const nav::Vec3& rateTrue, nav::Strapdown& sd, FilterEpoch& out) {
   const GnssConfig& g = config_.gnss;
   const nav::NavState& s = sd.state();
   const Vec9 e = navErrorStates(*earth_, s, truth);
@@ -116,9 +117,9 @@ void AidedNavigation::fix(const nav::NavState& truth, nav::Strapdown& sd, Filter
     noise = nav::Vec3(velNoise_.next(), velNoise_.next(), velNoise_.next());
     // The antenna's velocity: the reference point's plus the rotation's lever-arm term (zero
     // without a lever arm), the navigation's from its own rate, the fix's from the truth's.
-    const nav::Vec3 arm_n = nav::leverArmVelocity(*earth_, s, rateNav_, g.leverArm_b);
+    const nav::Vec3 arm_n = nav::leverArmVelocity(*earth_, s, rateNav, g.leverArm_b);
     const nav::Vec3 dzVel = e.segment<3>(3) + arm_n -
-                            nav::leverArmVelocity(*earth_, truth, rateTrue_, g.leverArm_b) -
+                            nav::leverArmVelocity(*earth_, truth, rateTrue, g.leverArm_b) -
                             g.velocitySigma->cwiseProduct(noise);
     in = filter_.updateVelocity(dzVel, arm_n, *g.velocitySigma);
     out.nis += in.nis;
@@ -167,10 +168,6 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
   stepTime_ += m.dt;
 
   const GnssConfig& g = config_.gnss;
-  if (g.velocitySigma) {
-    rateNav_ = (m.dtheta_b - bg * m.dt - sg) / m.dt;
-    rateTrue_ = ideal.dtheta_b / ideal.dt;
-  }
   const double tick = static_cast<double>(fixIndex_ + 1) / g.rate;
   if (truth.t + 0.5 * m.dt < tick) return out;
   ++fixIndex_;
@@ -195,7 +192,8 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
   stepTime_ = 0.0;
 
   out.outage = g.inOutage(truth.t);
-  if (!out.outage) fix(truth, sd, out);
+  if (!out.outage)
+    fix(truth, (m.dtheta_b - bg * m.dt - sg) / m.dt, ideal.dtheta_b / ideal.dt, sd, out);
 
   out.filtered = true;
   out.error = navErrorStates(*earth_, sd.state(), truth);

@@ -68,12 +68,10 @@ class AidedNavigation {
 
  private:
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
-  void fix(const nav::NavState& truth, nav::Strapdown& sd, FilterEpoch& out);
-
-  // The last interval's mean body rates [rad/s]: the navigation's (compensated) and the truth's;
-  // a velocity fix's lever-arm term needs them.
-  nav::Vec3 rateNav_ = nav::Vec3::Zero();
-  nav::Vec3 rateTrue_ = nav::Vec3::Zero();
+  // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)
+  // and the truth's; a velocity fix's lever-arm term needs them.
+  void fix(const nav::NavState& truth, const nav::Vec3& rateNav, const nav::Vec3& rateTrue,
+           nav::Strapdown& sd, FilterEpoch& out);
 
   const nav::Earth* earth_;
   AidingConfig config_;

@@ -17,6 +17,7 @@
 #include "sim/aided/error_state_filter.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
+#include "filter_model_support.hpp"
 
 using namespace sinsim::sim::aided;
 namespace nav = sinsim::nav;
@@ -52,14 +53,7 @@ StateBlock secondOrderGm(double omega, double zeta, double q) {
 }
 
 FilterSensorModel mixedModel(double fastTau) {
-  FilterSensorModel m;
-  for (int i = 0; i < 3; ++i) {
-    m.gyro[i].whiteDensity = 0.15 * kRadPerDeg / 60.0;
-    m.gyro[i].blocks = {biasState(10 * kRadPerDeg / 3600), gaussMarkovState(20 * kRadPerDeg / 3600, 200),
-                        randomWalkState(3 * kRadPerDeg / 3600 / 60)};
-    m.accel[i].whiteDensity = 0.1 / 60.0;
-    m.accel[i].blocks = {biasState(0.01), gaussMarkovState(0.02, fastTau), randomWalkState(1e-5)};
-  }
+  FilterSensorModel m = aidedtest::biasGmWalkModel(fastTau);
   m.accel[1].blocks.push_back(secondOrderGm(0.3, 0.2, 1e-6));
   m.gyro[2].blocks.push_back(arState({-0.9, 0.2}, 1e-4, 100.0));  // sampled: spliced in
   return m;

@@ -13,6 +13,7 @@
 #include "sim/aided/error_state_filter.hpp"
 #include "sim/aided/kalman.hpp"
 #include "sim/aided/sensor_states.hpp"
+#include "filter_model_support.hpp"
 
 using namespace sinsim::sim::aided;
 
@@ -185,14 +186,7 @@ TEST_CASE("series discretisation: the closed form, the 9 + 18-state filter model
   // entry measured against its own diagonal scale sqrt(Q_ii Q_jj) (the states span 12 orders of
   // magnitude: metres to rad/s), to 1e-9 — scaling and squaring's forward error is ~1e-12 of the
   // largest entries, so the looser bound leaves room for it, not for a wrong term.
-  FilterSensorModel m;
-  for (int i = 0; i < 3; ++i) {
-    m.gyro[i].whiteDensity = 0.15 * kRadPerDeg / 60.0;
-    m.gyro[i].blocks = {biasState(10 * kRadPerDeg / 3600), gaussMarkovState(20 * kRadPerDeg / 3600, 200),
-                        randomWalkState(3 * kRadPerDeg / 3600 / 60)};
-    m.accel[i].whiteDensity = 0.1 / 60.0;
-    m.accel[i].blocks = {biasState(0.01), gaussMarkovState(0.02, 300), randomWalkState(1e-5)};
-  }
+  const FilterSensorModel m = aidedtest::biasGmWalkModel(300);
   const sinsim::nav::Earth earth;
   ErrorStateFilter filter(earth, m, FilterOptions{});
   sinsim::nav::InsErrorPoint p;
