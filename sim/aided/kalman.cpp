@@ -13,13 +13,49 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const Eigen::MatrixXd
   P = 0.5 * (P + P.transpose()).eval();
 }
 
+namespace {
+
+// P ← ½ (P + Pᵀ), in place.
+void symmetrize(Eigen::MatrixXd& P) {
+  const Eigen::Index n = P.rows();
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index i = j + 1; i < n; ++i) P(i, j) = P(j, i) = 0.5 * (P(i, j) + P(j, i));
+}
+
+// out ← Σ_c U.col(c) V(j, c) per column j of out (out = U Vᵀ, or += with accumulate): the
+// products here are thin (m or 9 columns of U against a few dozen rows), so each output column is
+// a handful of axpys down contiguous columns — no packing, no blocking.
+void multiplyTransposed(const double* U, Eigen::Index rows, const Eigen::MatrixXd& V, Eigen::Index cols,
+                        double* out, Eigen::Index ld, bool accumulate) {
+  const Eigen::Index inner = V.cols();
+  for (Eigen::Index j = 0; j < cols; ++j) {
+    double* o = out + j * ld;
+    if (!accumulate)
+      for (Eigen::Index i = 0; i < rows; ++i) o[i] = 0.0;
+    for (Eigen::Index c = 0; c < inner; ++c) {
+      const double v = V(j, c);
+      const double* u = U + c * rows;
+      for (Eigen::Index i = 0; i < rows; ++i) o[i] += u[i] * v;
+    }
+  }
+}
+
+}  // namespace
+
 void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition& Phi,
                    const Eigen::MatrixXd& Qd) {
   const Eigen::Index n = P.rows();
   Eigen::VectorXd xn(n);
   xn.head<9>().noalias() = Phi.nav * x;
-  Eigen::MatrixXd Y(n, n);  // Φ P
-  Y.topRows<9>().noalias() = Phi.nav * P;
+  // Y = Φ P, its 9 navigation rows kept apart (9 × n): column j of Φ_nav P is Σ_k Φ_nav.col(k) P(k, j).
+  Eigen::Matrix<double, 9, Eigen::Dynamic> Y9(9, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    Eigen::Matrix<double, 9, 1> y = Eigen::Matrix<double, 9, 1>::Zero();
+    for (Eigen::Index k = 0; k < n; ++k) y += Phi.nav.col(k) * P(k, j);
+    Y9.col(j) = y;
+  }
+  Eigen::MatrixXd Y(n, n);
+  Y.topRows<9>() = Y9;
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
     if (s == 1) {  // one-state blocks (most): a scale, without a product's dispatch
@@ -32,7 +68,8 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition
     Y.middleRows(o, s).noalias() = Phi.block[b] * P.middleRows(o, s);
   }
   x = xn;
-  P.leftCols<9>().noalias() = Y * Phi.nav.transpose();  // (Φ P Φᵀ) by column blocks
+  // (Φ P Φᵀ) by column blocks: the navigation columns Y Φ_navᵀ, then the blocks'.
+  multiplyTransposed(Y.data(), n, Phi.nav, 9, P.data(), n, false);
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
     if (s == 1)
@@ -41,24 +78,37 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition
       P.middleCols(o, s).noalias() = Y.middleCols(o, s) * Phi.block[b].transpose();
   }
   P += Qd;
-  P = 0.5 * (P + P.transpose()).eval();
+  symmetrize(P);
 }
 
 Innovation kalmanUpdate(Eigen::VectorXd& x, Eigen::MatrixXd& P, const Eigen::VectorXd& z,
                         const Eigen::MatrixXd& H, const Eigen::MatrixXd& R) {
+  // H's columns after its last non-zero one add nothing: P Hᵀ runs over the first k states (a
+  // GNSS fix sees the 9 navigation errors only); the rank-m corrections by thin products.
+  const Eigen::Index n = P.rows(), m = H.rows();
+  Eigen::Index k = H.cols();
+  while (k > 0 && H.col(k - 1).isZero(0.0)) --k;
+  const Eigen::MatrixXd Hk = H.leftCols(k);
   Innovation in;
-  in.nu = z - H * x;
-  const Eigen::MatrixXd PHt = P * H.transpose();
-  in.S = H * PHt + R;
+  in.nu = z - Hk * x.head(k);
+  Eigen::MatrixXd PHt(n, m);  // P Hᵀ = Σ_c P.col(c) H(:, c)ᵀ over c < k
+  multiplyTransposed(P.data(), n, Hk, m, PHt.data(), n, false);
+  in.S = Hk * PHt.topRows(k) + R;  // H P Hᵀ + R
   const Eigen::LLT<Eigen::MatrixXd> llt(in.S);
   if (llt.info() != Eigen::Success)
     throw InputError("Kalman update: innovation covariance is not positive definite");
   const Eigen::MatrixXd K = llt.solve(PHt.transpose()).transpose();  // P Hᵀ S⁻¹
   in.nis = in.nu.dot(llt.solve(in.nu));
   x += K * in.nu;
-  const Eigen::MatrixXd A = P - K * PHt.transpose();  // (I − K H) P
-  P = A - (A * H.transpose()) * K.transpose() + K * R * K.transpose();
-  P = 0.5 * (P + P.transpose()).eval();
+  // A = (I − K H) P = P − K (P Hᵀ)ᵀ; then A (I − K H)ᵀ + K R Kᵀ = A + (K R − A Hᵀ) Kᵀ.
+  const Eigen::MatrixXd minusPHt = -PHt;
+  multiplyTransposed(K.data(), n, minusPHt, n, P.data(), n, true);
+  Eigen::MatrixXd W = K * R;  // K R − A Hᵀ
+  Eigen::MatrixXd AHt(n, m);
+  multiplyTransposed(P.data(), n, Hk, m, AHt.data(), n, false);
+  W -= AHt;
+  multiplyTransposed(W.data(), n, K, n, P.data(), n, true);
+  symmetrize(P);
   return in;
 }
 

@@ -37,7 +37,8 @@ struct Innovation {
 
 /// Measurement z = H x + v, E[v vᵀ] = R: x ← x + K ν, P ← (I − K H) P (I − K H)ᵀ + K R Kᵀ with
 /// K = P Hᵀ S⁻¹, the Joseph form evaluated through the n × m factors in O(n² m):
-/// A = (I − K H) P = P − K (P Hᵀ)ᵀ, then A (I − K H)ᵀ = A − (A Hᵀ) Kᵀ. Throws InputError when S is not positive definite.
+/// A = (I − K H) P = P − K (P Hᵀ)ᵀ, then A (I − K H)ᵀ + K R Kᵀ = A + (K R − A Hᵀ) Kᵀ; P Hᵀ and
+/// A Hᵀ over H's leading non-zero columns only. Throws InputError when S is not positive definite.
 Innovation kalmanUpdate(Eigen::VectorXd& x, Eigen::MatrixXd& P, const Eigen::VectorXd& z,
                         const Eigen::MatrixXd& H, const Eigen::MatrixXd& R);
 
