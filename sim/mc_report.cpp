@@ -30,17 +30,6 @@ std::string percentText(double p) {
 }
 std::string len(double m) { return std::isfinite(m) ? lengthText(m) : "–"; }
 
-/// The unit of a length axis reaching maxMetres: mm, m or km, so tick labels read 0.1 to 1000.
-struct LengthAxis {
-  double factor;
-  std::string unit;
-};
-LengthAxis lengthAxis(double maxMetres) {
-  if (maxMetres < 1.0) return {1e3, "mm"};
-  if (maxMetres < 1e4) return {1.0, "m"};
-  return {1e-3, "km"};
-}
-
 /// One effect's share of the mean-square horizontal error of model m at epoch e: the paired mean
 /// of h² − h²(without the effect, variant v) over E[h²], its standard error, the RMS without it.
 struct BudgetShare {
@@ -139,12 +128,12 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
     }
   for (std::size_t e = 1; e < measuredH.size(); ++e)
     if (std::isfinite(measuredH[e])) yMax = std::max(yMax, measuredH[e]);
-  const LengthAxis ua = lengthAxis(yMax);
+  const DisplayUnit ua = lengthUnit(yMax);
   page.heading("Horizontal drift envelopes");
   std::vector<Plot> side;
   for (std::size_t i = 0; i < prim.size(); ++i) {
     const std::size_t m = prim[i];
-    Plot p(batch.entries[m].label, "time [s]", "horizontal error [" + ua.unit + "]");
+    Plot p(batch.entries[m].label, "time [s]", std::string("horizontal error [") + ua.name + "]");
     p.xLog = p.yLog = true;
     const std::string& c = paletteColor(i);
     p.add(Band{"68 – 95 %", t, scaled(column(m, kHorizontal, 1), ua.factor),
@@ -161,14 +150,15 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
 
   {
     Plot p("Models together: median (solid) and 95 % (dashed)", "time [s]",
-           "horizontal error [" + ua.unit + "]");
+           std::string("horizontal error [") + ua.name + "]");
     p.xLog = p.yLog = true;
     double vMax = 0;
     for (std::size_t m : prim)
       for (std::size_t e = 0; e < st.epochs; ++e)
         if (std::isfinite(st.at(m, e, kVertical).p[2])) vMax = std::max(vMax, st.at(m, e, kVertical).p[2]);
-    const LengthAxis uv = lengthAxis(vMax);
-    Plot v("Vertical error: median and 95 %", "time [s]", "vertical error [" + uv.unit + "]");
+    const DisplayUnit uv = lengthUnit(vMax);
+    Plot v("Vertical error: median and 95 %", "time [s]",
+           std::string("vertical error [") + uv.name + "]");
     Plot y("Yaw error: median and 95 % of |δψ|", "time [s]", "|yaw error| [deg]");
     v.xLog = v.yLog = y.xLog = y.yLog = true;
     for (std::size_t i = 0; i < prim.size(); ++i) {

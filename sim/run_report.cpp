@@ -42,18 +42,6 @@ void RunTrack::add(const nav::NavState& truth, const nav::NavState& navState, co
 
 namespace {
 
-/// A display unit for values up to maxAbs (SI): the factor to multiply by and its name.
-struct DisplayUnit {
-  double factor;
-  const char* name;
-};
-
-DisplayUnit lengthUnit(double maxAbs) {  // [m]
-  if (maxAbs < 1.0) return {1e3, "mm"};
-  if (maxAbs < 1e4) return {1.0, "m"};
-  return {1e-3, "km"};
-}
-
 DisplayUnit angleUnit(double maxAbs) {  // [rad]
   if (maxAbs * kDegPerRad < 0.05) return {kDegPerRad * 3600.0, "arcsec"};
   return {kDegPerRad, "deg"};

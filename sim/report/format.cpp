@@ -25,6 +25,12 @@ std::string escape(const std::string& text) {
   return out;
 }
 
+DisplayUnit lengthUnit(double maxAbs) {
+  if (maxAbs < 1.0) return {1e3, "mm"};
+  if (maxAbs < 1e4) return {1.0, "m"};
+  return {1e-3, "km"};
+}
+
 std::string formatFixed(double value, int decimals) {
   if (!std::isfinite(value)) return std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
   if (decimals < 0) decimals = 0;

@@ -87,6 +87,16 @@ std::string escape(const std::string& text);
 /// after the point, trailing zeros removed, "-0" printed as "0", no locale.
 std::string formatFixed(double value, int decimals);
 
+/// A display unit for values up to maxAbs (SI): the factor to multiply by and its name.
+struct DisplayUnit {
+  double factor;
+  const char* name;
+};
+
+/// mm, m or km for lengths up to maxAbs [m], so that axis labels read 0.1 to 1000 (not
+/// micrometres as 10^-4 km).
+DisplayUnit lengthUnit(double maxAbs);
+
 /// Colour number i of the default palette (Tableau 10, cycles).
 const std::string& paletteColor(std::size_t i);
 
