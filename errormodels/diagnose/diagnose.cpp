@@ -111,6 +111,7 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
   const double lattice = latticeStep(y);
+  w.lattice = lattice;
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
                   const std::vector<double>& series) {
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects);

@@ -36,6 +36,7 @@ struct ChannelWork {
   /// the steps out (a warm-up's first windows). Empty when the record shows none (selection.cpp,
   /// markJumps).
   std::vector<double> jumpFreeL;
+  double lattice = 0;  // the record's value lattice step [SI] (0: none): single-LSB steps are rounding
   std::vector<char> explainsJumps;
 };
 

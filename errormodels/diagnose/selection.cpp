@@ -80,7 +80,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeL.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
   const double zLimit = zFromTwoSidedP(kJumpP);
-  const auto steps = levelSteps(x, w.factors, zLimit);
+  const auto steps = levelSteps(x, w.factors, zLimit, w.lattice);
   if (steps.empty()) return;
   std::vector<double> r(x.size());
   for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - steps[k];
@@ -95,7 +95,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
     const auto& sig = w.cands[i].signal;
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
-    w.explainsJumps[i] = levelSteps(r, w.factors, zLimit, 1).empty();
+    w.explainsJumps[i] = levelSteps(r, w.factors, zLimit, w.lattice, 1).empty();
   }
 }
 

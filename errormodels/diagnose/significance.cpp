@@ -70,13 +70,19 @@ std::size_t incrementCount(const std::vector<Increments>& scan) {
 /// (a spike or a short burst inside one window moves one window mean and back: no step), located
 /// within one window of the run where the means of m samples before and after differ most, and
 /// sized by the means of up to 8 m samples on each side (not across a neighbouring step; the
-/// median increment's drift over that span removed, so a ramp stays in the record).
+/// drift of the other increments over that span removed, so a ramp stays in the record). On a value
+/// lattice of step q a change of one level is what rounding makes of any slow drift (a ramp
+/// under noise below the LSB is a staircase of single-LSB steps): only steps beyond 1.5 q count.
 std::vector<std::pair<std::size_t, double>> stepsAt(const std::vector<double>& P, const Increments& in,
-                                                    double zEach) {
+                                                    double zEach, double lattice) {
   const std::size_t N = P.size() - 1, m = in.m;
   auto mean = [&P](std::size_t a, std::size_t b) { return (P[b] - P[a]) / double(b - a); };
-  const double drift = in.median / double(m);  // per sample
   auto flagged = [&](std::size_t j) { return std::fabs(in.d[j] - in.median) > zEach * in.scale; };
+  double drift = 0;  // per sample: the mean of the increments that are no jump (a staircase's median is 0)
+  std::size_t calm = 0;
+  for (std::size_t j = 0; j < in.d.size(); ++j)
+    if (!flagged(j)) drift += in.d[j], ++calm;
+  drift /= double(std::max<std::size_t>(calm, 1)) * double(m);
   std::vector<std::size_t> at;
   for (std::size_t j = 0; j < in.d.size(); ++j) {
     if (!flagged(j)) continue;
@@ -99,8 +105,8 @@ std::vector<std::pair<std::size_t, double>> stepsAt(const std::vector<double>& P
   for (std::size_t i = 0; i < at.size(); ++i) {
     const std::size_t before = std::min({8 * m, at[i], i ? at[i] - at[i - 1] : N});
     const std::size_t after = std::min({8 * m, N - at[i], i + 1 < at.size() ? at[i + 1] - at[i] : N});
-    steps.emplace_back(at[i], mean(at[i], at[i] + after) - mean(at[i] - before, at[i]) -
-                                  drift * 0.5 * double(before + after));
+    const double size = mean(at[i], at[i] + after) - mean(at[i] - before, at[i]) - drift * 0.5 * double(before + after);
+    if (std::fabs(size) > 1.5 * lattice) steps.emplace_back(at[i], size);
   }
   return steps;
 }
@@ -116,7 +122,7 @@ double jumpZ(const std::vector<double>& y, const std::vector<std::size_t>& facto
 }
 
 std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<std::size_t>& factors,
-                               double zLimit, int maxPasses) {
+                               double zLimit, double lattice, int maxPasses) {
   std::vector<double> x = y, steps;
   for (int pass = 0; pass < maxPasses; ++pass) {
     const auto P = prefixSums(x);
@@ -129,7 +135,7 @@ std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<s
     std::vector<std::pair<std::size_t, double>> found;
     for (const auto& in : scan) {  // the window size with the largest jump that is a step
       if (!(in.zMax > zEach)) break;
-      if (!(found = stepsAt(P, in, zEach)).empty()) break;
+      if (!(found = stepsAt(P, in, zEach, lattice)).empty()) break;
     }
     if (found.empty()) break;
     if (steps.empty()) steps.assign(x.size(), 0.0);

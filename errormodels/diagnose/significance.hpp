@@ -32,8 +32,9 @@ double jumpZ(const std::vector<double>& y, const std::vector<std::size_t>& facto
 /// sample and sized by the means on either side; they are taken out and the record scanned again,
 /// at most maxPasses times. y minus the steps is the record as a Gaussian process with spikes
 /// would have made it, up to the steps' sizes: a step's Allan excess is gone, a random walk's or a
-/// flicker's stays.
+/// flicker's stays. `lattice`: the record's value lattice step q [its unit] (0: none); a change of
+/// one lattice level is rounding, not a jump, and only steps beyond 1.5 q are kept.
 std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<std::size_t>& factors,
-                               double zLimit, int maxPasses = 8);
+                               double zLimit, double lattice = 0.0, int maxPasses = 8);
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -131,6 +131,30 @@ TEST_CASE("level steps are located and sized while spikes and Gaussian noise giv
   CHECK(quiet >= 9);  // P(>= 2 of 10 above) ~ 5e-5 at the nominal 0.1 %
 }
 
+// On a value lattice of step q a slow drift crosses one level at a time: a ramp added to a
+// quantized record and rounded again (bench/diagnose_challenge/adis_inject.py does so) is a
+// staircase of exact single-LSB steps, which the jump test sees at long windows where the noise
+// (sd 2 q per sample) averages out. They are rounding, not jumps: with the lattice given no step
+// is kept; a step of 4 q on the same record is (its size within 0.5 q: the size's standard error
+// from >= 64-sample means of sd-2q noise is <= 2 q / sqrt(32) = 0.35 q... for the spans the
+// locator picks at the windows where it stands out, 8 x >= 256 samples: <= 0.09 q).
+TEST_CASE("single-LSB steps of a quantized drift are rounding and no jumps", "[diagnose][selection]") {
+  using dg::detail::levelSteps;
+  const std::vector<std::size_t> factors = {16, 32, 64, 128, 256, 512, 1024};
+  const double q = 1.0;
+  for (std::uint64_t seed : {41, 42, 43}) {
+    auto y = simulate("gyro:\n  x:\n    - {type: white, density: 0.2 rad/s/sqrt(Hz)}\n", 65536, seed).gyro[0];
+    for (std::size_t k = 0; k < y.size(); ++k)  // on the lattice, plus a rounded ramp of 12 q
+      y[k] = std::round(y[k] / q) * q + std::round(12.0 * double(k) / double(y.size()));
+    CHECK_FALSE(levelSteps(y, factors, 3.29, 0.0).empty());  // without the lattice: "jumps"
+    CHECK(levelSteps(y, factors, 3.29, q).empty());
+    for (std::size_t k = 40000; k < y.size(); ++k) y[k] += 4 * q;
+    const auto steps = levelSteps(y, factors, 3.29, q);
+    REQUIRE(steps.size() == y.size());
+    CHECK(steps.back() - steps.front() == Approx(4 * q).margin(0.5 * q));
+  }
+}
+
 // The ADIS16405 accelerometers (docs/diagnose.md, walkthrough): a random walk with a few
 // disturbances of the test stand. The jumps once kept every Gaussian noise out (a bias step has a
 // random walk's Allan shape), and the walk's large excess was left "unexplained". Now a candidate
