@@ -135,9 +135,10 @@ TEST_CASE("level steps are located and sized while spikes and Gaussian noise giv
 // quantized record and rounded again (bench/diagnose_challenge/adis_inject.py does so) is a
 // staircase of exact single-LSB steps, which the jump test sees at long windows where the noise
 // (sd 2 q per sample) averages out. They are rounding, not jumps: with the lattice given no step
-// is kept; a step of 4 q on the same record is (its size within 0.5 q: the size's standard error
-// from >= 64-sample means of sd-2q noise is <= 2 q / sqrt(32) = 0.35 q... for the spans the
-// locator picks at the windows where it stands out, 8 x >= 256 samples: <= 0.09 q).
+// is kept; a step of 4 q on the same record is, and sized: it stands out most at the longest
+// windows (its z grows as sqrt(m)), m = 1024, where the size from 8 windows either side has a
+// standard error of 2 q sqrt(2 / 8192) = 0.03 q; 0.5 q leaves room for the staircase levels
+// inside the spans (their drift is removed as a mean, exact only on average).
 TEST_CASE("single-LSB steps of a quantized drift are rounding and no jumps", "[diagnose][selection]") {
   using dg::detail::levelSteps;
   const std::vector<std::size_t> factors = {16, 32, 64, 128, 256, 512, 1024};
