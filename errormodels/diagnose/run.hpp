@@ -36,7 +36,9 @@ struct ChannelWork {
   /// the steps out (a warm-up's first windows). Empty when the record shows none (selection.cpp,
   /// markJumps).
   std::vector<double> jumpFreeL;
-  double lattice = 0;  // the record's value lattice step [SI] (0: none): single-LSB steps are rounding
+  /// The record's value lattice step [SI] where the noise (sd < q/2) does not dither the rounding,
+  /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
+  double lattice = 0;
   std::vector<char> explainsJumps;
 };
 

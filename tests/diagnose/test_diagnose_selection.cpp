@@ -131,22 +131,20 @@ TEST_CASE("level steps are located and sized while spikes and Gaussian noise giv
   CHECK(quiet >= 9);  // P(>= 2 of 10 above) ~ 5e-5 at the nominal 0.1 %
 }
 
-// On a value lattice of step q a slow drift crosses one level at a time: a ramp added to a
-// quantized record and rounded again (bench/diagnose_challenge/adis_inject.py does so) is a
-// staircase of exact single-LSB steps, which the jump test sees at long windows where the noise
-// (sd 2 q per sample) averages out. They are rounding, not jumps: with the lattice given no step
-// is kept; a step of 4 q on the same record is, and sized: it stands out most at the longest
-// windows (its z grows as sqrt(m)), m = 1024, where the size from 8 windows either side has a
-// standard error of 2 q sqrt(2 / 8192) = 0.03 q; 0.5 q leaves room for the staircase levels
-// inside the spans (their drift is removed as a mean, exact only on average).
+// On a value lattice of step q a slow drift under noise below q/2 (no dither) crosses one level at
+// a time: a staircase of exact single-LSB steps, which the jump test sees at long windows. They
+// are rounding, not jumps: with the lattice given no step is kept; a step of 4 q on the same record
+// is, and sized: it stands out most at the longest windows (its z grows as sqrt(m)), where the size
+// from 8 windows either side has a standard error below 0.01 q (noise sd 0.2 q); 0.5 q leaves room
+// for the staircase levels inside the spans (their drift is removed as a mean, exact on average).
 TEST_CASE("single-LSB steps of a quantized drift are rounding and no jumps", "[diagnose][selection]") {
   using dg::detail::levelSteps;
   const std::vector<std::size_t> factors = {16, 32, 64, 128, 256, 512, 1024};
   const double q = 1.0;
   for (std::uint64_t seed : {41, 42, 43}) {
-    auto y = simulate("gyro:\n  x:\n    - {type: white, density: 0.2 rad/s/sqrt(Hz)}\n", 65536, seed).gyro[0];
-    for (std::size_t k = 0; k < y.size(); ++k)  // on the lattice, plus a rounded ramp of 12 q
-      y[k] = std::round(y[k] / q) * q + std::round(12.0 * double(k) / double(y.size()));
+    // noise sd 0.02 sqrt(100 Hz) = 0.2 q, plus a ramp of 12 q, rounded to the lattice
+    auto y = simulate("gyro:\n  x:\n    - {type: white, density: 0.02 rad/s/sqrt(Hz)}\n", 65536, seed).gyro[0];
+    for (std::size_t k = 0; k < y.size(); ++k) y[k] = std::round((y[k] + 12.0 * double(k) / double(y.size())) / q) * q;
     CHECK_FALSE(levelSteps(y, factors, 3.29, 0.0).empty());  // without the lattice: "jumps"
     CHECK(levelSteps(y, factors, 3.29, q).empty());
     for (std::size_t k = 40000; k < y.size(); ++k) y[k] += 4 * q;
