@@ -17,9 +17,6 @@ struct Candidate {
   /// Parameters the effect adds to the model (the criterion's penalty counts them): a GM's
   /// sigma and tau, a sinusoid's amplitude, frequency and phase, ...
   std::size_t parameters = 1;
-  /// A Gaussian noise (white, random walk, flicker, Gauss-Markov): its increments are Gaussian,
-  /// so it is not proposed where the record shows a jump (jumpZ, significance.hpp).
-  bool gaussianNoise = false;
   std::vector<double> g;       // AVAR contribution at each tau [SI^2]
   double zSpecial = 0.0;       // its own test, Gaussian-equivalent
   /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.

@@ -1,6 +1,5 @@
 // The detector registry and the candidates of one channel (detector.hpp).
 #include "errormodels/diagnose/detector.hpp"
-#include "errormodels/diagnose/significance.hpp"
 
 #include <algorithm>
 
@@ -29,17 +28,11 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
   const DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
                             mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
                             isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration()};
-  // A jump beyond the 0.999 Bonferroni limit of the window-mean increments (a bias step, a
-  // telegraph switch, spikes, a warm-up's first window) contradicts every Gaussian noise: their
-  // Allan shapes would absorb it (a single step has the Allan variance of a random walk), so they
-  // are not proposed; what explains it is a signal candidate, or the range stays unexplained.
-  const bool jump = jumpZ(y, setup.factors) > zFromTwoSidedP(1e-3);
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
     if (!d.repeatable && std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end())
       continue;
-    for (auto& c : d.detect(ctx))
-      if (!(jump && c.gaussianNoise)) out.push_back(std::move(c));
+    for (auto& c : d.detect(ctx)) out.push_back(std::move(c));
   }
   return out;
 }

@@ -111,6 +111,15 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
   const double lattice = latticeStep(y);
+  // Single-LSB steps are what rounding makes of a slow drift only where the noise does not dither
+  // the rounding: the mean of a rounded signal follows its input once the noise sd is >= q/2
+  // (Widrow & Kollar 2008, ch. 4: the bias falls as exp(-2 pi^2 sd^2 / q^2)); there a window mean
+  // resolves sub-LSB level changes, and a step of one LSB is a step. The one-sample noise sd is
+  // taken as the sd of the first differences / sqrt(2).
+  double dd = 0;
+  for (std::size_t k = 1; k < y.size(); ++k) dd += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
+  const double noiseSd = std::sqrt(dd / double(std::max<std::size_t>(y.size() - 1, 1)) / 2.0);
+  w.lattice = lattice > 2.0 * noiseSd ? lattice : 0.0;
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
                   const std::vector<double>& series) {
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects);

@@ -31,6 +31,15 @@ struct ChannelWork {
   /// AVAR of the AR refitted on the record without them.
   std::size_t arOrder = 0;
   std::vector<double> removed, baseAvar;
+  /// On a record with level jumps (levelSteps, significance.hpp): ln AVAR of the record without
+  /// the accepted signals and without its steps, and per candidate whether its own signal takes
+  /// the steps out (a warm-up's first windows). Empty when the record shows none (selection.cpp,
+  /// markJumps).
+  std::vector<double> jumpFreeL;
+  /// The record's value lattice step [SI] where the noise (sd < q/2) does not dither the rounding,
+  /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
+  double lattice = 0;
+  std::vector<char> explainsJumps;
 };
 
 struct Run {

@@ -68,6 +68,37 @@ std::vector<const Candidate*> allanSet(const ChannelWork& w) {
   return set;
 }
 
+constexpr double kJumpP = 1e-3;  // the jump test's level for the whole record (Bonferroni inside)
+
+/// w.jumpFreeL and w.explainsJumps for the series x (the record without the accepted signals).
+/// A level jump (a bias step, a telegraph switch, a disturbance of the test stand) is no effect of the
+/// catalogue, and every candidate's Allan shape can absorb part of its excess: a single step has
+/// exactly a random walk's Allan variance, a telegraph's switches make a ramp's slope. So on a
+/// record with jumps a candidate is credited only with what it explains on the record with the
+/// jumps taken out as well (trialRound) -- unless its own signal takes them out.
+void markJumps(ChannelWork& w, const std::vector<double>& x) {
+  w.jumpFreeL.clear();
+  w.explainsJumps.assign(w.cands.size(), 0);
+  const double zLimit = zFromTwoSidedP(kJumpP);
+  const auto steps = levelSteps(x, w.factors, zLimit, w.lattice);
+  if (steps.empty()) return;
+  std::vector<double> r(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - steps[k];
+  Setup s;
+  s.rate = w.rate;
+  s.n = x.size();
+  s.factors = w.factors;
+  const auto av = allanVariance(r, s);
+  w.jumpFreeL.resize(av.size());
+  for (std::size_t k = 0; k < av.size(); ++k) w.jumpFreeL[k] = std::log(std::max(av[k], 1e-300));
+  for (std::size_t i = 0; i < w.cands.size(); ++i) {
+    const auto& sig = w.cands[i].signal;
+    if (sig.size() != x.size()) continue;
+    for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
+    w.explainsJumps[i] = levelSteps(r, w.factors, zLimit, w.lattice, 1).empty();
+  }
+}
+
 /// The measurement's ln AVAR recomputed on the record without the accepted signals (w.removed):
 /// what is left for the next effect to explain. A deterministic effect enters the trials as its
 /// Allan term beside the noise (their cross term neglected); once accepted it is subtracted, so
@@ -84,24 +115,33 @@ void remeasure(ChannelWork& w, Trials& t) {
   s.factors = w.factors;
   const auto av = allanVariance(x, s);
   for (std::size_t k = 0; k < av.size(); ++k) w.prob.L[k] = std::log(std::max(av[k], 1e-300));
-  if (!w.propose) return;
+  if (!w.propose) return markJumps(w, x);
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
   for (std::size_t j = 0; j < cands.size(); ++j) w.accepted[j] = j;
   for (auto& c : w.propose(x)) cands.push_back(std::move(c));
   w.cands = std::move(cands);
   t.resize(w.cands.size());
+  markJumps(w, x);
 }
 
 /// Trial of every candidate whose effect is not accepted yet: added to the current set, the
 /// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
-/// parameters. Returns the best, or -1 when none is left.
+/// parameters. On a record with jumps, the smaller of that drop and the same on the record without
+/// its jumps (markJumps), unless the candidate's signal takes the jumps out. Returns the best, or
+/// -1 when none is left.
 std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const std::string& only = "") {
   std::set<std::string> taken;
   for (auto i : w.accepted) taken.insert(w.cands[i].effect);
   const auto set = allanSet(w);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
+  AllanProblem jumpFree = w.prob;
+  double chi2JumpFree = 0;
+  if (!w.jumpFreeL.empty()) {
+    jumpFree.L = w.jumpFreeL;
+    chi2JumpFree = solveAllan(jumpFree, set, w.sol.theta).chi2;
+  }
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     if (taken.count(w.cands[i].effect) || !(only.empty() || w.cands[i].effect == only)) continue;
     auto trial = set;
@@ -110,12 +150,19 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
     start.push_back(-1.0);
     t.sol[i] = solveAllan(w.prob, trial, start);
     t.refit[i] = 0;
+    AllanProblem refitProblem;
     if (w.arOrder > 0 && !w.cands[i].signal.empty()) {
-      auto refitted = solveAllan(trialProblem(w, w.cands[i], nullptr), trial, start);
+      refitProblem = trialProblem(w, w.cands[i], nullptr);
+      auto refitted = solveAllan(refitProblem, trial, start);
       if (refitted.chi2 < t.sol[i].chi2) t.sol[i] = std::move(refitted), t.refit[i] = 1;
     }
-    t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + ownEvidence(w.cands[i], currentAvar) -
-                penalty * double(w.cands[i].parameters);
+    const double own = ownEvidence(w.cands[i], currentAvar) - penalty * double(w.cands[i].parameters);
+    t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + own;
+    if (!w.jumpFreeL.empty() && !w.explainsJumps[i]) {
+      AllanProblem p = t.refit[i] ? refitProblem : jumpFree;
+      p.L = w.jumpFreeL;
+      t.drop[i] = std::min(t.drop[i], chi2JumpFree - solveAllan(p, trial, start).chi2 + own);
+    }
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
     if (best < 0 || t.drop[i] > t.drop[std::size_t(best)]) best = std::ptrdiff_t(i);
   }
@@ -190,6 +237,7 @@ void selectFindings(ChannelWork& w, double threshold) {
   const std::vector<double> measured = w.prob.L;
   w.sol = solveAllan(w.prob, {});
   if (w.arOrder > 0) w.baseAvar = refittedBaseAvar(w, {});
+  markJumps(w, *w.y);
   Trials t;
   t.resize(w.cands.size());
   // With a temperature column the temperature is tried first in every round (issue 12: "regress

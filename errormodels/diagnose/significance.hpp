@@ -24,4 +24,17 @@ double zFromStudentT(double t, double nu);
 /// puts one far beyond the rest. 0 when no window qualifies.
 double jumpZ(const std::vector<double>& y, const std::vector<std::size_t>& factors);
 
+/// The bias steps of the record, as a piecewise-constant series (empty when there are none):
+/// while the jump test finds increments beyond the limit that keeps the whole scan at the
+/// two-sided z `zLimit` (Bonferroni over every increment tested), the window size with the
+/// largest one that marks a level change (a run of such increments whose net change is beyond
+/// the limit too; a spike moves one window mean and back) gives its steps, each located to the
+/// sample and sized by the means on either side; they are taken out and the record scanned again,
+/// at most maxPasses times. y minus the steps is the record as a Gaussian process with spikes
+/// would have made it, up to the steps' sizes: a step's Allan excess is gone, a random walk's or a
+/// flicker's stays. `lattice`: the record's value lattice step q [its unit] (0: none); a change of
+/// one lattice level is rounding, not a jump, and only steps beyond 1.5 q are kept.
+std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<std::size_t>& factors,
+                               double zLimit, double lattice = 0.0, int maxPasses = 8);
+
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -47,7 +47,6 @@ std::vector<Candidate> detect_bias_instability(const DetectorContext& ctx) {
   m.s2 = std::log(10.0) / (M_PI * 2);
   Candidate c;
   c.effect = "bias_instability";
-  c.gaussianNoise = true;
   c.acov = [m, dt](std::size_t maxLag) { return acov(m, dt, maxLag); };
   c.g = ctx.shape([&](double t) { return avar(m, t); });
   c.evidence = "a flat Allan floor the model falls below (0.664 B)";

@@ -18,7 +18,6 @@ Candidate gmCandidate(const DetectorContext& ctx, double Tc) {
   const double dt = ctx.dt, rate = ctx.record.rate_hz;
   Candidate c;
   c.effect = "gauss_markov";
-  c.gaussianNoise = true;
   c.parameters = 2;  // sigma and its correlation time
   c.g = ctx.shape([&](double t) {
     const auto m = std::size_t(std::llround(t / dt));

@@ -10,7 +10,6 @@ std::vector<Candidate> detect_random_walk(const DetectorContext& ctx) {
   const Units& u = ctx.units;
   Candidate c;
   c.effect = "random_walk";
-  c.gaussianNoise = true;
   c.g = ctx.shape([](double t) { return t / 3.0; });  // K^2 tau / 3
   c.evidence = "Allan deviation rising with slope +1/2 at long tau (K^2 tau/3)";
   const Dimension walk = ctx.signal / Dimension::time().sqrt();

@@ -14,7 +14,6 @@ std::vector<Candidate> detect_white(const DetectorContext& ctx) {
   const double dt = ctx.dt;
   Candidate c;
   c.effect = "white";
-  c.gaussianNoise = true;
   c.parameters = 1;
   c.g = ctx.shape([](double t) { return 1.0 / t; });  // N^2 / tau
   // Interval averages of continuous white noise: variance N^2 / dt at lag 0, uncorrelated.
