@@ -357,9 +357,10 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   return t;
 }
 
-/// Selection-aware parameters (latent_fit.hpp, LatentAveragedParameter) from the pass-2 fits of
-/// every valid set, all under the same Omega. Sets more than 40 above the best score carry a
-/// weight below 2e-9 and are skipped.
+/// Selection-aware parameters (latent_fit.hpp, LatentAveragedParameter) from the fits of every
+/// valid set, all scored under the same Omega (comparable weights); each set's 1-sigma with
+/// Omega from its own model. Sets more than 40 above the best score carry a weight below 2e-9
+/// and are skipped.
 std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std::vector<LatentCandidate>& cands,
                                                      const std::vector<SetFit>& fits) {
   struct Entry { double weight; std::vector<LatentParameter> parameters; };
@@ -368,7 +369,12 @@ std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const double delta = cands[i].score - cands.front().score;
     if (!cands[i].valid || !(delta <= 40.0)) continue;
-    entries.push_back({std::exp(-0.5 * delta), parameterTable(p, fits[i]).parameters});
+    // The set's 1-sigma under its own hypothesis: Omega from its own fitted model. Under the
+    // winner's Omega a term the winner lacks (a random walk) adds no variance at long tau, and
+    // that term's 1-sigma in the other sets comes out several times too small.
+    Problem own = p;
+    own.W = modelWhitening(p, cands[i].model);
+    entries.push_back({std::exp(-0.5 * delta), parameterTable(own, fits[i]).parameters});
     total += entries.back().weight;
   }
   std::vector<std::string> names;
