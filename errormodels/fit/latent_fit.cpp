@@ -357,23 +357,33 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   return t;
 }
 
+/// Sets further than this above the best score are left out of the averaging: their weight is
+/// below exp(-10) = 4.5e-5. (At 40 the six-channel benchmark took 2.2x the CPU of the fit alone:
+/// Omega of each set's own model is a quadrature per set.)
+constexpr double kAveragedScoreRange = 20.0;
+
 /// Selection-aware parameters (latent_fit.hpp, LatentAveragedParameter) from the fits of every
-/// valid set, all scored under the same Omega (comparable weights); each set's 1-sigma with
-/// Omega from its own model. Sets more than 40 above the best score carry a weight below 2e-9
-/// and are skipped.
+/// valid set, all scored under the same Omega (comparable weights, p.W from omegaModel); each
+/// set's 1-sigma with Omega from its own model. Sets more than kAveragedScoreRange above the best score are skipped.
 std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std::vector<LatentCandidate>& cands,
-                                                     const std::vector<SetFit>& fits) {
+                                                     const std::vector<SetFit>& fits, const LatentModel& omegaModel) {
+  const std::vector<double> omegaAvar = latentAllanVariance(omegaModel, p.dt, p.m);
   struct Entry { double weight; std::vector<LatentParameter> parameters; };
   std::vector<Entry> entries;
   double total = 0.0;
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const double delta = cands[i].score - cands.front().score;
-    if (!cands[i].valid || !(delta <= 40.0)) continue;
+    if (!cands[i].valid || !(delta <= kAveragedScoreRange)) continue;
     // The set's 1-sigma under its own hypothesis: Omega from its own fitted model. Under the
     // winner's Omega a term the winner lacks (a random walk) adds no variance at long tau, and
     // that term's 1-sigma in the other sets comes out several times too small.
+    // (A set whose model Allan variance is within 5 % of Omega's model at every point keeps p.W:
+    // Omega is then the same to ~10 %, and the quadrature per set is what costs.)
     Problem own = p;
-    own.W = modelWhitening(p, cands[i].model);
+    const std::vector<double> mine = latentAllanVariance(cands[i].model, p.dt, p.m);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < mine.size(); ++k) worst = std::max(worst, std::fabs(mine[k] / omegaAvar[k] - 1.0));
+    if (!(worst <= 0.05)) own.W = modelWhitening(p, cands[i].model);
     entries.push_back({std::exp(-0.5 * delta), parameterTable(own, fits[i]).parameters});
     total += entries.back().weight;
   }
@@ -485,13 +495,13 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   // the selection-aware parameters (so that a winner of weight ~1 states its own fit).
   p.W = modelWhitening(p, omegaModel);
   const SetFit best = fitSet(p, cands.front().terms);
-  // Only the sets within 40 of the best pass-2 score (weight > 2e-9) are rescored.
+  // Only the sets within kAveragedScoreRange of the best pass-2 score are rescored.
   std::vector<LatentTermSet> near;
   for (const auto& c : cands)
-    if (c.valid && c.score - cands.front().score <= 40.0) near.push_back(c.terms);
+    if (c.valid && c.score - cands.front().score <= kAveragedScoreRange) near.push_back(c.terms);
   std::vector<SetFit> finalFits;
   const std::vector<LatentCandidate> finalCands = scoreAll(p, near, penalty, &finalFits);
-  const std::vector<LatentAveragedParameter> averaged = averageOverSets(p, finalCands, finalFits);
+  const std::vector<LatentAveragedParameter> averaged = averageOverSets(p, finalCands, finalFits, omegaModel);
 
   LatentFit out;
   out.terms = best.set;
