@@ -34,7 +34,7 @@
 //     covariance (J' Omega^-1 J)^-1 of p at the optimum, scaled by max(1, chi^2 / dof) (Birge
 //     ratio); 1-sigma of an amplitude A = sqrt(theta) is A sd(p) / 2, of T it is T sd(p).
 //     It is conditional on the chosen set.
-//  6. Selection-aware parameters (LatentAveragedParameter): every set within 40 of the best score
+//  6. Selection-aware parameters (LatentAveragedParameter): every set within 20 of the best score
 //     refitted under the final Omega, weighted exp(-delta score / 2), each with its 1-sigma
 //     under Omega from its own model; averaged per parameter (Buckland et al. 1997).
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
