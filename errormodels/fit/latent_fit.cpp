@@ -297,11 +297,18 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
   return best->model;
 }
 
-/// Parameters, their log-space covariance and the sanity warnings of the final fit.
-void describe(const Problem& p, const SetFit& f, LatentFit& out) {
+/// The parameters of a set's fit with their 1-sigma: p = log of every variance coefficient and
+/// T_j, covariance (J' W' W J)^-1 of p (Gauss-Newton at the optimum, J by central differences in
+/// p: the model is smooth and p is log scale) scaled by the Birge ratio max(1, chi2 / dof).
+struct ParameterTable {
+  std::vector<LatentParameter> parameters;
+  Eigen::MatrixXd logCovariance;
+  double birgeScale = 1.0;
+};
+
+ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   struct Par { std::string name; double p; bool amplitude; };
   std::vector<Par> pars;
-  const LatentModel& m = out.model;
   Eigen::Index j = 0;
   auto var = [&](const std::string& name) { pars.push_back({name, std::log(f.theta(j++)), true}); };
   if (f.set.quantization) var("quantization");
@@ -316,10 +323,7 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
   if (f.set.randomWalk) var("random_walk");
   if (f.set.drift) var("drift");
 
-  // Jacobian of the model Allan variance in p (central differences in p: exact enough, the
-  // model is smooth and p is log scale).
   auto modelAt = [&](const std::vector<double>& pv) {
-    SetFit g = f;
     std::vector<double> T;
     Eigen::VectorXd th(f.theta.size());
     Eigen::Index k = 0;
@@ -340,14 +344,76 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
     J.col(c) = (modelAt(a) - modelAt(b)) / (2.0 * h);
   }
   const Eigen::MatrixXd Jw = p.W * J;
-  out.birgeScale = out.dof > 0 ? std::max(1.0, out.chi2 / double(out.dof)) : 1.0;
-  out.logCovariance = (Jw.transpose() * Jw).ldlt().solve(Eigen::MatrixXd::Identity(k, k)) * out.birgeScale;
+  ParameterTable t;
+  const std::size_t dof = p.m.size() - f.set.parameterCount();
+  t.birgeScale = dof > 0 ? std::max(1.0, f.chi2 / double(dof)) : 1.0;
+  t.logCovariance = (Jw.transpose() * Jw).ldlt().solve(Eigen::MatrixXd::Identity(k, k)) * t.birgeScale;
   for (Eigen::Index c = 0; c < k; ++c) {
     const Par& q = pars[std::size_t(c)];
-    const double sdp = std::sqrt(std::max(out.logCovariance(c, c), 0.0));
+    const double sdp = std::sqrt(std::max(t.logCovariance(c, c), 0.0));
     const double value = q.amplitude ? std::exp(0.5 * q.p) : std::exp(q.p);
-    out.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
+    t.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
   }
+  return t;
+}
+
+/// Sets further than this above the best score are left out of the averaging: their weight is
+/// below exp(-10) = 4.5e-5. (At 40 the six-channel benchmark took 2.2x the CPU of the fit alone:
+/// Omega of each set's own model is a quadrature per set.)
+constexpr double kAveragedScoreRange = 20.0;
+
+/// Selection-aware parameters (latent_fit.hpp, LatentAveragedParameter) from the fits of every
+/// valid set, all scored under the same Omega (comparable weights, p.W from omegaModel); each
+/// set's 1-sigma with Omega from its own model. Sets more than kAveragedScoreRange above the best score are skipped.
+std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std::vector<LatentCandidate>& cands,
+                                                     const std::vector<SetFit>& fits, const LatentModel& omegaModel) {
+  const std::vector<double> omegaAvar = latentAllanVariance(omegaModel, p.dt, p.m);
+  struct Entry { double weight; std::vector<LatentParameter> parameters; };
+  std::vector<Entry> entries;
+  double total = 0.0;
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    const double delta = cands[i].score - cands.front().score;
+    if (!cands[i].valid || !(delta <= kAveragedScoreRange)) continue;
+    // The set's 1-sigma under its own hypothesis: Omega from its own fitted model. Under the
+    // winner's Omega a term the winner lacks (a random walk) adds no variance at long tau, and
+    // that term's 1-sigma in the other sets comes out several times too small.
+    // (A set whose model Allan variance is within 5 % of Omega's model at every point keeps p.W:
+    // Omega is then the same to ~10 %, and the quadrature per set is what costs.)
+    Problem own = p;
+    const std::vector<double> mine = latentAllanVariance(cands[i].model, p.dt, p.m);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < mine.size(); ++k) worst = std::max(worst, std::fabs(mine[k] / omegaAvar[k] - 1.0));
+    if (!(worst <= 0.05)) own.W = modelWhitening(p, cands[i].model);
+    entries.push_back({std::exp(-0.5 * delta), parameterTable(own, fits[i]).parameters});
+    total += entries.back().weight;
+  }
+  std::vector<std::string> names;
+  for (const auto& e : entries)
+    for (const auto& q : e.parameters)
+      if (std::find(names.begin(), names.end(), q.name) == names.end()) names.push_back(q.name);
+  std::vector<LatentAveragedParameter> out;
+  for (const auto& name : names) {
+    double w = 0.0, mean = 0.0;
+    for (const auto& e : entries)
+      for (const auto& q : e.parameters)
+        if (q.name == name) w += e.weight, mean += e.weight * q.value;
+    mean /= w;
+    double sd = 0.0;  // Buckland, Burnham & Augustin 1997, eq. (9)
+    for (const auto& e : entries)
+      for (const auto& q : e.parameters)
+        if (q.name == name) sd += e.weight / w * std::hypot(q.stdError, q.value - mean);
+    out.push_back({name, w / total, mean, sd});
+  }
+  return out;
+}
+
+/// Parameters, their log-space covariance and the sanity warnings of the final fit.
+void describe(const Problem& p, const SetFit& f, LatentFit& out) {
+  const LatentModel& m = out.model;
+  ParameterTable t = parameterTable(p, f);
+  out.parameters = std::move(t.parameters);
+  out.logCovariance = std::move(t.logCovariance);
+  out.birgeScale = t.birgeScale;
   const double duration = p.dt * double(p.N);
   for (std::size_t g = 0; g < m.gm.size(); ++g) {
     const double T = m.gm[g].tau;
@@ -425,9 +491,17 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     omegaModel = cands.front().model;
     if (same) break;
   }
-  // Final: Omega from the winner, the winner refitted.
+  // Final: Omega from the winner, the winner refitted; every set rescored under that Omega for
+  // the selection-aware parameters (so that a winner of weight ~1 states its own fit).
   p.W = modelWhitening(p, omegaModel);
   const SetFit best = fitSet(p, cands.front().terms);
+  // Only the sets within kAveragedScoreRange of the best pass-2 score are rescored.
+  std::vector<LatentTermSet> near;
+  for (const auto& c : cands)
+    if (c.valid && c.score - cands.front().score <= kAveragedScoreRange) near.push_back(c.terms);
+  std::vector<SetFit> finalFits;
+  const std::vector<LatentCandidate> finalCands = scoreAll(p, near, penalty, &finalFits);
+  const std::vector<LatentAveragedParameter> averaged = averageOverSets(p, finalCands, finalFits, omegaModel);
 
   LatentFit out;
   out.terms = best.set;
@@ -442,6 +516,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   out.avar = y;
   out.modelAvar = latentAllanVariance(out.model, dt, p.m);
   out.candidates = cands;
+  out.averaged = averaged;
   out.consistent = out.pValue >= 1e-3;
   if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
   describe(p, best, out);

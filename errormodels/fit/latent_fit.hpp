@@ -33,6 +33,10 @@
 //  5. Uncertainty: p = log of every parameter (variance coefficients and T_j); the Gauss-Newton
 //     covariance (J' Omega^-1 J)^-1 of p at the optimum, scaled by max(1, chi^2 / dof) (Birge
 //     ratio); 1-sigma of an amplitude A = sqrt(theta) is A sd(p) / 2, of T it is T sd(p).
+//     It is conditional on the chosen set.
+//  6. Selection-aware parameters (LatentAveragedParameter): every set within 20 of the best score
+//     refitted under the final Omega, weighted exp(-delta score / 2), each with its 1-sigma
+//     under Omega from its own model; averaged per parameter (Buckland et al. 1997).
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
 #pragma once
 
@@ -105,6 +109,20 @@ struct LatentParameter {
   double stdError = 0.0;
 };
 
+/// A parameter with the uncertainty of the term-set choice included (model averaging: Buckland,
+/// Burnham & Augustin 1997, Biometrics 53; Burnham & Anderson 2002, sec. 4.3). Each valid set i
+/// gets the weight w_i = exp(-(score_i - score_best) / 2) / sum, the score being a penalised
+/// -2 log-likelihood (chi^2 + penalty). Over the sets that have the parameter (weights
+/// renormalised to sum 1 among them): value = sum w_i v_i, and the unconditional 1-sigma
+/// sum w_i sqrt(se_i^2 + (v_i - value)^2), se_i the set's own 1-sigma (LatentFit::parameters'
+/// rule). GM terms are labelled by increasing tau in each set (gm1 the fastest).
+struct LatentAveragedParameter {
+  std::string name;
+  double inclusion = 0.0;  ///< sum of the weights of the sets that have the parameter, in (0, 1]
+  double value = 0.0;      ///< its value if the term is present
+  double stdError = 0.0;   ///< its 1-sigma, including the spread between sets
+};
+
 /// A fitted candidate set and its score.
 struct LatentCandidate {
   LatentTermSet terms;
@@ -129,6 +147,9 @@ struct LatentFit {
   std::vector<std::size_t> m;   ///< averaging factors used
   std::vector<double> tau, avar, modelAvar;  ///< [s], [U^2], [U^2]
   std::vector<LatentCandidate> candidates;   ///< pass-2 fits, best score first (valid first)
+  /// Every parameter of the valid sets averaged over them (LatentAveragedParameter): the
+  /// selection-aware statement, also for terms the chosen set lacks.
+  std::vector<LatentAveragedParameter> averaged;
   /// Sanity findings (GM tau < 2 dt or > duration / 3, uncertainty above the value).
   std::vector<std::string> warnings;
 

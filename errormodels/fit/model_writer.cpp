@@ -43,6 +43,13 @@ std::string q(double si, const std::string& unit) {
   return buf;
 }
 
+// The same with 4 significant digits, for comments that state an estimate with its uncertainty.
+std::string q4(double si, const std::string& unit) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g %s", si / parseUnit(unit).si, unit.c_str());
+  return buf;
+}
+
 std::string num(double v, int digits = 10) {
   return significant(v, digits);
 }
@@ -151,6 +158,29 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
   }
 }
 
+/// The selection-aware statement (LatentFit::averaged) as comments: every parameter of the sets
+/// the data support, with its weight of inclusion and the 1-sigma that includes the set choice.
+void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
+  if (f.averaged.empty()) return;
+  b.line << "averaged over the term sets (weight exp(-score/2); value if present +- 1 sigma incl. the set "
+            "choice, weight of inclusion):";
+  b.endComment();
+  for (const auto& a : f.averaged) {
+    const std::string& n = a.name;
+    std::string value;
+    if (n == "quantization") value = q4(std::sqrt(12.0) * a.value, u.increment) + " +- " +
+                                     q4(std::sqrt(12.0) * a.stdError, u.increment) + " (lsb)";
+    else if (n == "white") value = q4(a.value, u.density) + " +- " + q4(a.stdError, u.density);
+    else if (n == "random_walk") value = q4(a.value, u.walk) + " +- " + q4(a.stdError, u.walk);
+    else if (n == "drift") value = q4(a.value, u.slope) + " +- " + q4(a.stdError, u.slope);
+    else if (n.size() > 4 && n.compare(n.size() - 4, 4, ".tau") == 0)
+      value = num(a.value, 4) + " s +- " + num(a.stdError, 3) + " s";
+    else value = q4(a.value, u.level) + " +- " + q4(a.stdError, u.level);  // sigma, flicker, ar.sigma
+    b.line << "  " << n << " " << value << ", weight " << num(a.inclusion, 2);
+    b.endComment();
+  }
+}
+
 /// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec.
 void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal) {
   const double rate = 1.0 / f.sampleInterval;
@@ -165,6 +195,7 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     b.line << "WARNING: " << w;
     b.endComment();
   }
+  addLatentAveraged(b, f, u);
   auto sd = [&](const std::string& name) { return f.parameter(name).stdError; };
   const Dimension time = Dimension::time();
   const LatentModel& m = f.model;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "../identify/identify_test_util.hpp"
@@ -85,6 +86,41 @@ TEST_CASE("latent fit warns about a GM tau below two samples",
   LatentModel ok; ok.white = 5.8e-5; ok.gm = {{2e-4, 2.0}};
   const LatentFit f = fitLatentModel(m, latentAllanVariance(ok, dt, m), N, o);
   CHECK(f.warnings.empty());
+}
+
+TEST_CASE("latent fit's selection-aware parameters on exact data: weights bounded by the penalties",
+          "[fit][latent]") {
+  // Exact Allan variance of white + GM at 100 Hz, 2 h. Every valid set near the top fits the
+  // curve exactly (the truth with chi^2 ~ 0, a superset with its extra variance ~ 0), so the
+  // averaged values are the truth (1e-4: the golden-section tolerance on tau, as above) and every
+  // set has a GM (the sets without one miss by chi^2 >> 40: inclusion 1). A superset's weight
+  // relative to the truth is exp(-(chi^2 gain + penalty) / 2) <= exp(-penalty / 2), chi^2 gain ~ 0
+  // here: a one-parameter extra term is included with weight <= exp(-5.41 / 2) = 0.0669, a
+  // second GM with <= exp(-7.82 / 2) = 0.0200 (latentPenalty).
+  const double dt = 0.01;
+  const std::size_t N = 720000;
+  const auto m = octaves(N);
+  LatentModel t; t.white = 5.8e-5; t.gm = {{8.7e-5, 3.0}};
+  LatentFitOptions o;
+  o.sampleInterval = dt;
+  const LatentFit f = fitLatentModel(m, latentAllanVariance(t, dt, m), N, o);
+  REQUIRE(f.terms == LatentTermSet{false, true, 1, false, false, false});
+  const std::map<std::string, double> truth{{"white", t.white}, {"gm1.sigma", t.gm[0].sigma}, {"gm1.tau", t.gm[0].tau}};
+  std::size_t seen = 0;
+  for (const auto& a : f.averaged) {
+    INFO(a.name << " " << a.value << " +- " << a.stdError << ", weight " << a.inclusion);
+    CHECK(std::isfinite(a.stdError));
+    if (const auto it = truth.find(a.name); it != truth.end()) {
+      ++seen;
+      CHECK(a.inclusion == Approx(1.0).margin(1e-12));
+      CHECK(a.value == Approx(it->second).epsilon(1e-4));
+    } else if (a.name.rfind("gm2.", 0) == 0) {
+      CHECK(a.inclusion <= std::exp(-7.82 / 2.0) * (1.0 + 1e-6));
+    } else {
+      CHECK(a.inclusion <= std::exp(-5.41 / 2.0) * (1.0 + 1e-6));
+    }
+  }
+  CHECK(seen == truth.size());
 }
 
 TEST_CASE("latent fit refuses bad input", "[fit][latent]") {
