@@ -6,13 +6,6 @@
 
 namespace sinsim::sim::aided {
 
-void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const Eigen::MatrixXd& Phi,
-                   const Eigen::MatrixXd& Qd) {
-  x = Phi * x;
-  P = Phi * P * Phi.transpose() + Qd;
-  P = 0.5 * (P + P.transpose()).eval();
-}
-
 namespace {
 
 // P ← ½ (P + Pᵀ), in place.
@@ -23,10 +16,10 @@ void symmetrize(Eigen::MatrixXd& P) {
 }
 
 // out ← Σ_c U.col(c) V(j, c) per column j of out (out = U Vᵀ, or += with accumulate): the
-// products here are thin (m or 9 columns of U against a few dozen rows), so each output column is
+// update's products are thin (m columns of U against a few dozen rows), so each output column is
 // a handful of axpys down contiguous columns — no packing, no blocking.
-void multiplyTransposed(const double* U, Eigen::Index rows, const Eigen::MatrixXd& V, Eigen::Index cols,
-                        double* out, Eigen::Index ld, bool accumulate) {
+void multiplyTransposed(const double* U, Eigen::Index rows, const Eigen::MatrixXd& V,
+                        Eigen::Index cols, double* out, Eigen::Index ld, bool accumulate) {
   const Eigen::Index inner = V.cols();
   for (Eigen::Index j = 0; j < cols; ++j) {
     double* o = out + j * ld;
@@ -42,20 +35,21 @@ void multiplyTransposed(const double* U, Eigen::Index rows, const Eigen::MatrixX
 
 }  // namespace
 
+void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const Eigen::MatrixXd& Phi,
+                   const Eigen::MatrixXd& Qd) {
+  x = Phi * x;
+  P = Phi * P * Phi.transpose() + Qd;
+  symmetrize(P);
+}
+
+
 void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition& Phi,
                    const Eigen::MatrixXd& Qd) {
   const Eigen::Index n = P.rows();
   Eigen::VectorXd xn(n);
   xn.head<9>().noalias() = Phi.nav * x;
-  // Y = Φ P, its 9 navigation rows kept apart (9 × n): column j of Φ_nav P is Σ_k Φ_nav.col(k) P(k, j).
-  Eigen::Matrix<double, 9, Eigen::Dynamic> Y9(9, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    Eigen::Matrix<double, 9, 1> y = Eigen::Matrix<double, 9, 1>::Zero();
-    for (Eigen::Index k = 0; k < n; ++k) y += Phi.nav.col(k) * P(k, j);
-    Y9.col(j) = y;
-  }
-  Eigen::MatrixXd Y(n, n);
-  Y.topRows<9>() = Y9;
+  Eigen::MatrixXd Y(n, n);  // Φ P
+  Y.topRows<9>().noalias() = Phi.nav * P;
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
     if (s == 1) {  // one-state blocks (most): a scale, without a product's dispatch
@@ -68,8 +62,7 @@ void kalmanPredict(Eigen::VectorXd& x, Eigen::MatrixXd& P, const BlockTransition
     Y.middleRows(o, s).noalias() = Phi.block[b] * P.middleRows(o, s);
   }
   x = xn;
-  // (Φ P Φᵀ) by column blocks: the navigation columns Y Φ_navᵀ, then the blocks'.
-  multiplyTransposed(Y.data(), n, Phi.nav, 9, P.data(), n, false);
+  P.leftCols<9>().noalias() = Y * Phi.nav.transpose();  // (Φ P Φᵀ) by column blocks
   for (std::size_t b = 0; b < Phi.block.size(); ++b) {
     const Eigen::Index o = Phi.offset[b], s = Phi.block[b].rows();
     if (s == 1)
