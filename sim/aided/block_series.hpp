@@ -32,8 +32,8 @@ struct InputBlock {
 /// The navigation rows [Φ_nn Φ_ns] and [Qd_nn Qd_ns] (9 × n, n = 9 + the blocks' states, columns
 /// the blocks' `column`s; columns of no block are left zero) of the model (A, Q_n, blocks) over
 /// T [s]. Returns false (outputs unspecified) when a process is too fast for one series step
-/// (|F_ii| T > 1, on A's or a block's diagonal) or the series does not reach half an ulp within
-/// 40 terms: the caller then discretises the whole system with discretize().
+/// (|F_ii| T > 1, on A's or a block's diagonal) or the series does not reach its tolerance (a term
+/// below 2^-40 of the largest entry) within 40 terms: the caller then discretises the whole system with discretize().
 bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matrix<double, 9, 9>& Qn,
                          const std::vector<InputBlock>& blocks, int n, double T,
                          Eigen::Matrix<double, 9, Eigen::Dynamic>& PhiN,
