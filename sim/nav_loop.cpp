@@ -94,8 +94,13 @@ bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sin
       e.measured.dtheta_b -= bias.gyro * e.measured.dt;
       e.measured.dv_b -= bias.accel * e.measured.dt;
     }
-    strapdown.update(e.measured, e.hTrue);
-    if (opt.aiding) opt.aiding->epoch(e, strapdown);
+    if (opt.aiding) {
+      const nav::ImuSample integrated = opt.aiding->compensate(e);
+      strapdown.update(integrated, e.hTrue);
+      opt.aiding->epoch(e, integrated, strapdown);
+    } else {
+      strapdown.update(e.measured, e.hTrue);
+    }
     sink(e, strapdown.state());
     if (opt.cancel && (k & 0xffff) == 0xffff && opt.cancel->load(std::memory_order_relaxed))
       return false;

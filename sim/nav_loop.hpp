@@ -15,19 +15,24 @@
 namespace sinsim::sim {
 
 /// The aiding hook (issue: GNSS/INS). start() chooses where the navigation starts (the
-/// truth plus a run's initial errors); epoch() is called once per interval, after the strapdown
-/// has integrated it and before the epoch is reported, with the interval (ideal and measured
-/// sample — after the bias window's correction —, truth where the source knows it) and the
-/// strapdown. A filter predicts with e.measured, may simulate its aiding measurements from
-/// e.truth (check e.hasTruth) and corrects the navigation through the strapdown's interface; what
-/// it leaves in the strapdown is what the epoch reports. Its own outputs (filter.csv) are its
-/// business: the loop knows nothing of them.
+/// truth plus a run's initial errors); compensate() gives the sample the strapdown integrates for
+/// an interval (the measured one — after the bias window's correction — less a filter's sensor
+/// estimate); epoch() is called once per interval, after the strapdown has integrated that sample
+/// and before the epoch is reported, with the interval (ideal and measured sample, truth where the
+/// source knows it), the integrated sample and the strapdown. A filter predicts with the
+/// integrated sample, may simulate its aiding measurements from e.truth (check e.hasTruth) and
+/// corrects the navigation through the strapdown's interface; what it leaves in the strapdown is
+/// what the epoch reports. Its own outputs (filter.csv) are its business: the loop knows nothing
+/// of them.
 class NavAiding {
  public:
   virtual ~NavAiding() = default;
   /// Where the navigation starts, given the true start (initial errors); default: the truth.
   virtual nav::NavState start(const nav::NavState& truth) { return truth; }
-  virtual void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) = 0;
+  /// The sample the strapdown integrates for interval e; default: e.measured.
+  virtual nav::ImuSample compensate(const ImuEpoch& e) { return e.measured; }
+  virtual void epoch(const ImuEpoch& e, const nav::ImuSample& integrated,
+                     nav::Strapdown& strapdown) = 0;
 };
 
 struct NavLoopOptions {

@@ -11,11 +11,12 @@ ScenarioAiding::ScenarioAiding(const nav::Earth& earth, const aided::AidingConfi
                                const errormodels::StreamKey& key)
     : aided_(earth, aiding, aiding.filter.sensors, strapdown, key) {}
 
-void ScenarioAiding::epoch(const ImuEpoch& e, nav::Strapdown& strapdown) {
+void ScenarioAiding::epoch(const ImuEpoch& e, const nav::ImuSample& integrated,
+                           nav::Strapdown& strapdown) {
   if (!e.hasTruth)
     throw InputError("aided navigation needs the truth at every IMU epoch (GNSS is simulated "
                      "from it); this IMU source has it only at output epochs");
-  const aided::FilterEpoch fe = aided_.afterInterval(e.measured, e.ideal, e.truth, strapdown);
+  const aided::FilterEpoch fe = aided_.afterInterval(integrated, e.ideal, e.truth, strapdown);
   if (filterCsv_ && fe.filtered) aided::writeFilterRow(filterCsv_, fe);
   const auto k = std::size_t(e.index);
   if (view_ && fe.filtered && k % decimation_ == 0) {

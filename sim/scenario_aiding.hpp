@@ -23,7 +23,9 @@ class ScenarioAiding final : public NavAiding {
                  const nav::StrapdownOptions& strapdown, const errormodels::StreamKey& key);
 
   nav::NavState start(const nav::NavState& truth) override { return aided_.initialState(truth); }
-  void epoch(const ImuEpoch& e, nav::Strapdown& strapdown) override;
+  nav::ImuSample compensate(const ImuEpoch& e) override { return aided_.compensate(e.measured); }
+  void epoch(const ImuEpoch& e, const nav::ImuSample& integrated,
+             nav::Strapdown& strapdown) override;
 
   /// filter.csv rows go here from now on (nullptr: none).
   void writeFilterRows(std::FILE* f) { filterCsv_ = f; }

@@ -130,6 +130,24 @@ void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
   sd.correct(c.segment<3>(0), c.segment<3>(3), c.segment<3>(6));
 }
 
+nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& m) const {
+  if (!aligned_ || !config_.filter.enabled) return m;
+  // The increments' errors b dt + diag(s) u of the measured u (first order in dt and in the scale
+  // errors). Nothing estimated, nothing touched: a filter without fixes (and zero prior means)
+  // leaves the navigation bit-identical to the free-inertial run.
+  const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
+  nav::ImuSample c = m;
+  if (!(bg.isZero() && ba.isZero())) {
+    c.dtheta_b -= bg * m.dt;
+    c.dv_b -= ba * m.dt;
+  }
+  if (filter_.hasScaleStates()) {
+    c.dtheta_b -= filter_.gyroScale().cwiseProduct(m.dtheta_b);
+    c.dv_b -= filter_.accelScale().cwiseProduct(m.dv_b);
+  }
+  return c;
+}
+
 FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::ImuSample& ideal,
                                            const nav::NavState& truth, nav::Strapdown& sd) {
   FilterEpoch out;
@@ -140,30 +158,17 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
   }
   if (!config_.filter.enabled) return out;
 
-  // Sensor-error compensation of this interval (first order in dt and in the scale errors): the
-  // increments' errors b dt + diag(s) u of the measured u.
-  const nav::Mat3 C = sd.state().q_nb.toRotationMatrix();
-  const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
-  nav::Vec3 sg = nav::Vec3::Zero(), sa = nav::Vec3::Zero();  // ŝ ∘ u [rad], [m/s]
-  if (filter_.hasScaleStates()) {
-    sg = filter_.gyroScale().cwiseProduct(m.dtheta_b);
-    sa = filter_.accelScale().cwiseProduct(m.dv_b);
-  }
-  // Nothing estimated, nothing touched: a filter without fixes (and zero prior means) leaves the
-  // navigation bit-identical to the free-inertial run (correct() renormalises q_nb).
-  if (!(bg.isZero() && ba.isZero() && sg.isZero() && sa.isZero()))
-    sd.correct(nav::Vec3::Zero(), C * ba * m.dt + C * sa, -C * bg * m.dt - C * sg);
-
-  // Means of the linearisation point over the propagation step.
+  // Means of the linearisation point over the propagation step (m is compensated).
   const nav::NavState& s = sd.state();
+  const nav::Mat3 C = s.q_nb.toRotationMatrix();
   sum_.lat += s.lat * m.dt;
   sum_.h += s.h * m.dt;
   sum_.v_n += s.v_n * m.dt;
-  sum_.f_n += C * (m.dv_b - ba * m.dt - sa);
+  sum_.f_n += C * m.dv_b;
   sum_.C_nb += C * m.dt;
-  if (filter_.hasScaleStates()) {  // Σ C_nb diag(u), u compensated: the scale states' inputs
-    sumScale_.C_omega += C * (m.dtheta_b - bg * m.dt - sg).asDiagonal();
-    sumScale_.C_f += C * (m.dv_b - ba * m.dt - sa).asDiagonal();
+  if (filter_.hasScaleStates()) {  // Σ C_nb diag(u): the scale states' inputs
+    sumScale_.C_omega += C * m.dtheta_b.asDiagonal();
+    sumScale_.C_f += C * m.dv_b.asDiagonal();
   }
   stepTime_ += m.dt;
 
@@ -193,7 +198,7 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
 
   out.outage = g.inOutage(truth.t);
   if (!out.outage)
-    fix(truth, (m.dtheta_b - bg * m.dt - sg) / m.dt, ideal.dtheta_b / ideal.dt, sd, out);
+    fix(truth, m.dtheta_b / m.dt, ideal.dtheta_b / ideal.dt, sd, out);
 
   out.filtered = true;
   out.error = navErrorStates(*earth_, sd.state(), truth);

@@ -1,12 +1,13 @@
 // Aided navigation around one strapdown: the run's initial errors, coarse alignment, GNSS fixes
 // simulated from the truth (white noise, lever arm, outages) and the closed-loop error-state
-// filter. The navigation loop calls afterInterval once per IMU interval, after the strapdown has
-// integrated the measured sample; what it leaves in the strapdown is the navigation solution.
+// filter. For each IMU interval the navigation loop asks compensate() for the sample the strapdown
+// integrates and then calls afterInterval with it; what it leaves in the strapdown is the
+// navigation solution.
 //
-// Closed loop: the filter's sensor-error estimate is removed from each interval's effect on the
-// strapdown (first order in dt: δv −= C_nb (b̂_a dt + ŝ_a ∘ dv_b), ψ −= −C_nb (b̂_g dt + ŝ_g ∘ dθ_b),
-// ŝ the scale-factor estimates), and each update's δr, δv,
-// ψ are fed back through Strapdown::correct and zeroed in the filter.
+// Closed loop: the filter's sensor-error estimate is removed from each measured increment before
+// the strapdown integrates it (first order in dt: dθ −= b̂_g dt + ŝ_g ∘ dθ, dv −= b̂_a dt + ŝ_a ∘ dv,
+// ŝ the scale-factor estimates), as an INS compensates its IMU, and each update's δr, δv, ψ are
+// fed back through Strapdown::correct and zeroed in the filter.
 //
 // Random streams (errormodels/random.hpp), keyed by (seed, run): stream id (2, 0) the initial
 // errors, (2, 1) GNSS position noise, (2, 2) GNSS velocity noise. The IMU's own streams (sensor
@@ -62,6 +63,10 @@ class AidedNavigation {
   /// simulated from them). Returns the epoch's filter view.
   FilterEpoch afterInterval(const nav::ImuSample& measured, const nav::ImuSample& ideal,
                             const nav::NavState& truth, nav::Strapdown& strapdown);
+  /// The sample the strapdown integrates: `measured` less the filter's current sensor-error
+  /// estimate (the continuous blocks'; unchanged before the alignment ends, without a filter, or
+  /// while nothing is estimated). afterInterval is then called with the returned sample.
+  nav::ImuSample compensate(const nav::ImuSample& measured) const;
 
   const std::vector<OutageResult>& outages() const { return outages_; }
   const ErrorStateFilter& filter() const { return filter_; }

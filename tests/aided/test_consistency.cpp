@@ -101,8 +101,9 @@ Averages consistencyRuns(const char* truthModel, const FilterSensorModel& filter
     for (std::size_t k = 0; k < ideal.samples.size(); ++k) {
       nav::ImuSample m = ideal.samples[k];
       corruptor->corrupt(m, NAN);
-      sd.update(m, ideal.truth[k].h);
-      const FilterEpoch fe = aided.afterInterval(m, ideal.samples[k], ideal.truth[k], sd);
+      const nav::ImuSample u = aided.compensate(m);
+      sd.update(u, ideal.truth[k].h);
+      const FilterEpoch fe = aided.afterInterval(u, ideal.samples[k], ideal.truth[k], sd);
       if (std::abs(fe.t - tAiding) < 1e-6) avg.neesAiding += fe.nees;
       if (std::abs(fe.t - tOutage) < 1e-6) avg.neesOutage += fe.nees;
       if (fe.aiding && fe.t >= 30.0) {  // past the initial transient; NIS at every aided epoch

@@ -94,7 +94,9 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
       s.lat += 10.0 / 6.4e6;  // ~10 m north of the truth
       return s;
     }
-    void epoch(const sim::ImuEpoch& e, nav::Strapdown& s) override {
+    void epoch(const sim::ImuEpoch& e, const nav::ImuSample& integrated,
+               nav::Strapdown& s) override {
+      CHECK(integrated.dtheta_b == e.measured.dtheta_b);  // the default compensate(): unchanged
       ++calls;
       differ += (e.measured.dtheta_b != e.ideal.dtheta_b) ? 1 : 0;
       withTruth += e.hasTruth ? 1 : 0;
