@@ -18,16 +18,17 @@ void symmetrize(Eigen::MatrixXd& P) {
 // out ← Σ_c U.col(c) V(j, c) per column j of out (out = U Vᵀ, or += with accumulate): the
 // update's products are thin (m columns of U against a few dozen rows), so each output column is
 // a handful of axpys down contiguous columns — no packing, no blocking.
-void multiplyTransposed(const double* U, Eigen::Index rows, const Eigen::MatrixXd& V,
-                        Eigen::Index cols, double* out, Eigen::Index ld, bool accumulate) {
+void multiplyTransposed(const double* __restrict U, Eigen::Index rows, const Eigen::MatrixXd& V,
+                        Eigen::Index cols, double* __restrict out, Eigen::Index ld,
+                        bool accumulate) {
   const Eigen::Index inner = V.cols();
   for (Eigen::Index j = 0; j < cols; ++j) {
-    double* o = out + j * ld;
+    double* __restrict o = out + j * ld;
     if (!accumulate)
       for (Eigen::Index i = 0; i < rows; ++i) o[i] = 0.0;
     for (Eigen::Index c = 0; c < inner; ++c) {
       const double v = V(j, c);
-      const double* u = U + c * rows;
+      const double* __restrict u = U + c * rows;
       for (Eigen::Index i = 0; i < rows; ++i) o[i] += u[i] * v;
     }
   }
