@@ -73,6 +73,10 @@ class EffectState {
   virtual ~EffectState() = default;
   /// Changes the triad's increment vector u [rad or m/s] for the interval.
   virtual void apply(Vec3& u, const Interval& iv) = 0;
+  /// apply() for n consecutive intervals, in order: u[i] for iv[i].
+  virtual void applyBlock(Vec3* u, const Interval* iv, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) apply(u[i], iv[i]);
+  }
 };
 
 /// A realisation of an additive error e(t) on one axis: adds ∫_{t0}^{t1} e dt to u[axis].
@@ -99,6 +103,11 @@ class DirectAxisErrorState : public AxisErrorState {
   using AxisErrorState::AxisErrorState;
   void apply(Vec3& u, const Interval& iv) final {
     u[axis()] += static_cast<D*>(this)->D::integral(iv);
+  }
+  void applyBlock(Vec3* u, const Interval* iv, std::size_t n) final {
+    D* d = static_cast<D*>(this);
+    const int a = axis();
+    for (std::size_t i = 0; i < n; ++i) u[i][a] += d->D::integral(iv[i]);
   }
 };
 

@@ -76,6 +76,32 @@ class Corruptor final : public ImuCorruptor {
   bool needsTemperature = false;
 
   void corrupt(ImuSample& sample, double temperature) override {
+    const Interval iv = intervalOf(sample, temperature);
+    for (auto& e : gyro) e->apply(sample.dtheta_b, iv);
+    for (auto& e : accel) e->apply(sample.dv_b, iv);
+  }
+
+  // Effect by effect over the block: each effect sees its intervals in time order and each
+  // sample its effects in list order, as corrupt() does sample by sample.
+  void corruptBlock(ImuSample* samples, const double* temperature, std::size_t n) override {
+    intervals_.resize(n);
+    gyroU_.resize(n);
+    accelU_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      intervals_[i] = intervalOf(samples[i], temperature[i]);
+      gyroU_[i] = samples[i].dtheta_b;
+      accelU_[i] = samples[i].dv_b;
+    }
+    for (auto& e : gyro) e->applyBlock(gyroU_.data(), intervals_.data(), n);
+    for (auto& e : accel) e->applyBlock(accelU_.data(), intervals_.data(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      samples[i].dtheta_b = gyroU_[i];
+      samples[i].dv_b = accelU_[i];
+    }
+  }
+
+ private:
+  Interval intervalOf(const ImuSample& sample, double temperature) const {
     if (needsTemperature && !std::isfinite(temperature))
       throw InputError("the IMU error model has a temperature effect but no sensor temperature "
                        "was given (add a temperature profile)");
@@ -86,9 +112,11 @@ class Corruptor final : public ImuCorruptor {
     iv.temperature = temperature;
     iv.dtheta_ideal_b = sample.dtheta_b;
     iv.dv_ideal_b = sample.dv_b;
-    for (auto& e : gyro) e->apply(sample.dtheta_b, iv);
-    for (auto& e : accel) e->apply(sample.dv_b, iv);
+    return iv;
   }
+
+  std::vector<Interval> intervals_;  // corruptBlock's work space
+  std::vector<Vec3> gyroU_, accelU_;
 };
 
 }  // namespace

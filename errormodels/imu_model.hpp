@@ -35,6 +35,11 @@ class ImuCorruptor {
   /// temperature [K] is the sensor temperature over the interval (NaN when the scenario has no
   /// temperature profile; a model that needs it was refused at instantiation).
   virtual void corrupt(ImuSample& sample, double temperature) = 0;
+  /// corrupt() for n consecutive samples, in order (temperature[i] for samples[i]); the same
+  /// numbers, with one call per effect for the block instead of one per effect and sample.
+  virtual void corruptBlock(ImuSample* samples, const double* temperature, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) corrupt(samples[i], temperature[i]);
+  }
 };
 
 class ImuErrorModel {

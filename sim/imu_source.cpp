@@ -1,5 +1,6 @@
 #include "sim/imu_source.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "common/error.hpp"
@@ -36,12 +37,27 @@ const nav::NavState& ReferenceSource::initial() const { return ref_.initial; }
 double ReferenceSource::rate() const { return ref_.imuRate; }
 long long ReferenceSource::sampleCount() const { return static_cast<long long>(ref_.samples.size()); }
 
+void ReferenceSource::corruptNextBlock() {
+  constexpr std::size_t kBlock = 128;  // intervals; the block's work space stays in L1
+  blockStart_ = k_;
+  const std::size_t n = std::min(kBlock, ref_.samples.size() - k_);
+  measured_.assign(ref_.samples.begin() + std::ptrdiff_t(k_),
+                   ref_.samples.begin() + std::ptrdiff_t(k_ + n));
+  temperature_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    temperature_[i] = ref_.temperature.at(measured_[i].t - 0.5 * measured_[i].dt);
+  corruptor_->corruptBlock(measured_.data(), temperature_.data(), n);
+}
+
 bool ReferenceSource::next(ImuEpoch& e) {
   if (k_ >= ref_.samples.size()) return false;
   e.ideal = ref_.samples[k_];
-  e.measured = e.ideal;
-  if (corruptor_)
-    corruptor_->corrupt(e.measured, ref_.temperature.at(e.ideal.t - 0.5 * e.ideal.dt));
+  if (corruptor_) {
+    if (k_ >= blockStart_ + measured_.size()) corruptNextBlock();
+    e.measured = measured_[k_ - blockStart_];
+  } else {
+    e.measured = e.ideal;
+  }
   e.hTrue = ref_.hRef[k_];
   ++k_;
   e.index = static_cast<long long>(k_);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "errormodels/imu_model.hpp"
 #include "errormodels/stats/record.hpp"
@@ -72,9 +73,16 @@ class ReferenceSource final : public ImuSource {
   bool next(ImuEpoch& e) override;
 
  private:
+  // The measured samples of intervals [blockStart_, blockStart_ + measured_.size()), corrupted a
+  // block at a time (ImuCorruptor::corruptBlock: one call per effect for the block).
+  void corruptNextBlock();
+
   const Reference& ref_;
   errormodels::ImuCorruptor* corruptor_;
   std::size_t k_ = 0;
+  std::size_t blockStart_ = 0;
+  std::vector<nav::ImuSample> measured_;
+  std::vector<double> temperature_;
 };
 
 /// A measured record replayed along a (static) Reference recorded at the record's rate: interval
