@@ -246,3 +246,56 @@ TEST_CASE("enabled: false removes an effect without moving the other effects' st
   auto a = test::simulateRates(off, 100, 100, 9, 0), b = test::simulateRates(white, 100, 100, 9, 0);
   CHECK(a == b);
 }
+
+TEST_CASE("corruptBlock gives corrupt()'s numbers bit for bit, whatever the block sizes") {
+  // Every effect type, the stateful ones (AR at its own rate, quantization's carried remainder,
+  // the processes' streams) among them: the block path must be the sample-by-sample path.
+  const auto m = ImuErrorModel::fromString(R"(
+gyro:
+  triad:
+    - {type: scale_factor, diagonal: [300 ppm, -200 ppm, 150 ppm]}
+    - {type: misalignment, matrix: [[0, 0.1 deg, 0], [-0.05 deg, 0, 0.2 mrad], [0, 0, 0]]}
+    - {type: g_sensitivity, value: 0.01 deg/s/g}
+  all:
+    - {type: white, density: 0.5 deg/sqrt(h)}
+    - {type: bias, sigma: 10 deg/h}
+    - {type: gauss_markov, sigma: 20 deg/h, tau: 200 s}
+    - {type: random_walk, K: 3 deg/h/sqrt(h)}
+    - {type: bias_instability, floor: 10 deg/h, tau_range: [1 s, 1000 s]}
+    - {type: ar, a: [-1.0604, -0.30249, 0.043657, 0.18006, 0.14555], sigma: 0.021 deg/s, rate: 1 kHz}
+    - {type: outliers, rate: 0.5 Hz, amplitude: 1 deg/s}
+    - {type: ramp, slope: 1 deg/h^2}
+    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}
+    - {type: quantization, lsb: 0.001 deg}
+  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 12.34 Hz, phase: 30 deg}]
+  z: [{type: warmup, amplitude: 0.1 deg/s, tau: 2 s}]
+accel:
+  all:
+    - {type: white, density: 0.1 m/s/sqrt(h)}
+    - {type: gauss_markov, sigma: 2 mg, tau: 300 s}
+    - {type: quantization, lsb: 2.522 mg}
+)", "every.yaml");
+  auto one = m.instantiate(100.0, {7, 3});
+  auto block = m.instantiate(100.0, {7, 3});
+  std::vector<ImuSample> a, b;
+  std::vector<double> temperature;
+  for (int k = 1; k <= 3000; ++k) {
+    const double t = k / 100.0;
+    a.push_back(sample(t, t - (k - 1) / 100.0, Vec3(0.01 * std::sin(t), 0.002, -0.003 * t / 30),
+                       Vec3(0.001, -0.002 * std::cos(t), -kG / 100.0)));
+    temperature.push_back(298.15 + 0.1 * t);
+  }
+  b = a;
+  for (std::size_t k = 0; k < a.size(); ++k) one->corrupt(a[k], temperature[k]);
+  const std::size_t sizes[4] = {1, 7, 128, 300};
+  for (std::size_t at = 0, i = 0; at < b.size(); ++i) {
+    const std::size_t n = std::min(sizes[i % 4], b.size() - at);
+    block->corruptBlock(&b[at], &temperature[at], n);
+    at += n;
+  }
+  int differ = 0;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    differ += (a[k].dtheta_b != b[k].dtheta_b || a[k].dv_b != b[k].dv_b) ? 1 : 0;
+  CHECK(differ == 0);
+  CHECK(a.back().dtheta_b != sample(30.0, 0.01).dtheta_b);  // the model did corrupt
+}
