@@ -213,11 +213,15 @@ bool navigationRowSeries(const Eigen::Matrix<double, 9, 9>& A, const Eigen::Matr
     general.push_back(std::move(g));
   }
 
-  Eigen::MatrixXd PhiT = Eigen::MatrixXd::Zero(nP, 9);
+  // The row counts rounded up to a multiple of 4 with zero rows (which stay zero): multiplyRows
+  // then works in blocks of 8 and 4 rows without a one-row tail, which costs as much per non-zero
+  // of A as a block of 8 (the real rows' sums are the same operations either way).
+  const int rowsP = (nP + 3) / 4 * 4, rowsM = (nM + 3) / 4 * 4;
+  Eigen::MatrixXd PhiT = Eigen::MatrixXd::Zero(rowsP, 9);
   PhiT.topRows<9>().setIdentity();
-  Eigen::MatrixXd QdT = Eigen::MatrixXd::Zero(nM, 9);
+  Eigen::MatrixXd QdT = Eigen::MatrixXd::Zero(rowsM, 9);
   QdT.topRows<9>() = Qn * T;
-  Eigen::MatrixXd Pt = PhiT, Mt = QdT, tmpP(nP, 9), tmpM(nM, 9);
+  Eigen::MatrixXd Pt = PhiT, Mt = QdT, tmpP(rowsP, 9), tmpM(rowsM, 9);
   Eigen::Matrix<double, 9, Eigen::Dynamic> Wc(9, inputs.size());  // Σ over an input's blocks of c_b M_bn
   std::vector<Support> support;
   for (const Eigen::Matrix<double, 9, 1>& g : inputs) support.push_back(supportOf(g));
