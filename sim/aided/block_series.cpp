@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/aided/wide_kernel.hpp"
+
 namespace sinsim::sim::aided {
 namespace {
 
@@ -12,17 +14,6 @@ struct RowNonZeros {
   int col[81];
   double v[81];
 };
-
-// The two kernels below are compiled twice on x86-64 with GCC, for AVX2 and for the baseline, and
-// the loader picks one for the CPU (target_clones; other compilers build the baseline alone). Both
-// do the same IEEE additions and multiplications in the same order (AVX2 without FMA: nothing is
-// contracted), so the results are bit-identical on every machine; AVX2 only does four of them
-// per instruction instead of two.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define SINSIM_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
-#else
-#define SINSIM_WIDE_KERNEL
-#endif
 
 // W entries of out.col(i) from row r on (the caller keeps r + W <= rows), see multiplyRows.
 template <int W>
