@@ -9,6 +9,7 @@
 //
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 |
 //       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
+//           [--allan-selection]  (the term set by the Allan GLS score, not the Whittle likelihood)
 //           [--min-right F --min-coverage F --expect N [--per-cell] [--min-ar-miss F]]
 //           [--min-coverage-averaged F]  (pooled over all seeds: LatentFit::averaged)
 //           (exit 1 below a floor: the ctest slices; --per-cell: in every cell and parameter)
@@ -19,6 +20,7 @@
 //
 // Prints one line per (case, rate, duration): the rate of the right term set, and per parameter
 // the rate |estimate - truth| <= 2 sigma, with counts. docs/fitting.md holds the table.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -33,6 +35,7 @@
 
 #include "errormodels/fit/ar_slow_fit.hpp"
 #include "errormodels/fit/latent_fit.hpp"
+#include "errormodels/fit/whittle_selection.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/special.hpp"
@@ -169,6 +172,14 @@ fit::LatentModel truthModel(const std::map<std::string, double>& p) {
   return m;
 }
 
+/// a's terms are a strict subset of b's (GM count <=, every other term of a in b).
+bool strictSubset(const fit::LatentTermSet& a, const fit::LatentTermSet& b) {
+  const bool sub = a.gm <= b.gm && (!a.quantization || b.quantization) && (!a.white || b.white) &&
+                   (!a.flicker || b.flicker) && (!a.randomWalk || b.randomWalk) && (!a.drift || b.drift) &&
+                   (!a.ar || b.ar);
+  return sub && !(a == b);
+}
+
 /// Detectability of a cell's generating set (--detectability): the fit of the EXACT Allan
 /// variance of the truth (latent_model.hpp) on the record's octave grid, Omega from the truth.
 /// There the truth set has chi^2 ~ 0 and a competing set's chi^2 is the noncentrality lambda of
@@ -202,6 +213,24 @@ void printDetectability(const std::string& label, const fit::LatentTermSet& trut
                   normalCdf(std::sqrt(c.chi2) - std::sqrt(pen)) + normalCdf(-std::sqrt(c.chi2) - std::sqrt(pen)));
     std::printf("\n");
   }
+  // The same for the Whittle likelihood (whittle_selection.hpp): bins of a record of N samples at
+  // the truth's expected levels; lambda_W = -2 log L of a competitor's best fit minus the truth's.
+  fit::WhittleBins wb = fit::whittleBins(std::vector<double>(N, 0.0), dt);
+  wb.level = fit::whittleExpectedLevels(wb, tm);
+  const double truthM2 = fit::whittleM2LogLik(wb, wb.level);
+  std::vector<std::pair<double, std::string>> lw;
+  for (const auto& c : f.candidates) {
+    if (c.terms == truth || c.terms.drift || c.terms.ar || c.model.gm.size() != std::size_t(c.terms.gm)) continue;
+    if (strictSubset(truth, c.terms)) continue;  // a superset fits the truth exactly (lambda 0)
+    const auto w = fit::whittleFitSet(wb, 4.0, c.terms, c.model, o.minGmTauSamples * dt, m.back() * dt);
+    if (!w.valid) continue;
+    const double pen = fit::latentPenalty(truth, o) - fit::latentPenalty(c.terms, o);
+    lw.push_back({w.m2LogLik - truthM2, "[" + c.terms.name() + "] " + std::to_string(pen).substr(0, 5)});
+  }
+  std::sort(lw.begin(), lw.end());
+  std::printf("   Whittle (expected periodogram):");
+  for (std::size_t i = 0; i < lw.size() && i < 5; ++i) std::printf(" %s lambda_W %.3g;", lw[i].second.c_str(), lw[i].first);
+  std::printf("\n");
   // The slowest term's share of the Allan variance at the last point vs that point's relative sd.
   const std::size_t last = m.size() - 1;
   fit::LatentModel noRw = tm;
@@ -212,14 +241,6 @@ void printDetectability(const std::string& label, const fit::LatentTermSet& trut
     std::printf("   random walk's share at tau %.4g s (last point): %.2f; that point's relative sd (white EDF) %.2f\n",
                 double(m[last]) * dt, 1.0 - rest / all, std::sqrt(2.0 / fit::edfOverlappingWhite(N, m[last])));
   std::fflush(stdout);
-}
-
-/// a's terms are a strict subset of b's (GM count <=, every other term of a in b).
-bool strictSubset(const fit::LatentTermSet& a, const fit::LatentTermSet& b) {
-  const bool sub = a.gm <= b.gm && (!a.quantization || b.quantization) && (!a.white || b.white) &&
-                   (!a.flicker || b.flicker) && (!a.randomWalk || b.randomWalk) && (!a.drift || b.drift) &&
-                   (!a.ar || b.ar);
-  return sub && !(a == b);
 }
 
 /// Whether this record carries every generating term detectably for the criterion: the truth
@@ -282,6 +303,12 @@ struct Tally {
         const auto t = params.find(p.name);
         std::printf(" %s %.4g+-%.2g (%.4g)", p.name.c_str(), p.value, p.stdError,
                     t == params.end() ? NAN : t->second);
+      }
+      if (f.whittleSelected) {
+        std::printf("\n    Whittle score above the chosen:");
+        for (std::size_t k = 1; k < f.candidates.size() && k < 5; ++k)
+          std::printf(" [%s] %+.2f", f.candidates[k].terms.name().c_str(),
+                      f.candidates[k].whittleScore - f.candidates.front().whittleScore);
       }
       std::printf("\n");
     }
@@ -443,6 +470,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--stdin")) { fromStdin = true; continue; }
     if (!std::strcmp(argv[i], "--per-cell")) { floors.perCell = true; continue; }
     if (!std::strcmp(argv[i], "--detectability")) { detectability = true; continue; }
+    if (!std::strcmp(argv[i], "--allan-selection")) { base.whittleSelection = false; continue; }
     if (i + 1 >= argc) break;
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];

@@ -6,12 +6,14 @@
 #include <cstdio>
 #include <optional>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/number_text.hpp"
 #include "common/progress.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/fit/nnls.hpp"
+#include "errormodels/fit/whittle_selection.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/special.hpp"
 
@@ -430,12 +432,61 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
                              fmt(q.value));
 }
 
+/// The chi^2_1 1 % point: the drift's slope test (the sign of a ramp is free: no boundary).
+constexpr double kDriftSlopeChi2 = 6.635;
+
+/// The Whittle choice (latent_fit.hpp step 7): every set without drift or AR scored by
+/// whittleFitSet from its Allan fit. In Whittle order, the first set S for which S (or S + drift
+/// when the removed line's slope b is significant under S's Whittle model: b^2 / v_S > the chi^2_1
+/// 1 % point, v_S = whittleSlopeVariance) has a valid Allan fit; the other of the two when only it
+/// is valid. Returns cands reordered: the chosen first, then the Whittle-scored sets by Whittle
+/// score, then the rest as they were. Unchanged when no set qualifies.
+std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& bins,
+                                           std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
+  const double wMax = kPi * p.dt / p.tau.front();  // f = 1 / (2 tau) at the first Allan point
+  const double tHi = std::max(p.tau.back(), 2.0 * p.minT);  // the Allan fit's GM range
+  std::vector<LatentModel> whittleModel(cands.size());
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    auto& c = cands[i];
+    if (c.terms.drift || c.terms.ar) continue;
+    const WhittleSetFit w = whittleFitSet(bins, wMax, c.terms, c.model, p.minT, tHi);
+    if (w.valid) c.whittleScore = w.m2LogLik + latentPenalty(c.terms, penalty);
+    whittleModel[i] = w.model;
+  }
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (std::isfinite(cands[i].whittleScore)) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cands[a].whittleScore < cands[b].whittleScore; });
+  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
+    for (std::size_t k = 0; k < cands.size(); ++k)
+      if (cands[k].terms == t && cands[k].valid) return k;
+    return std::nullopt;
+  };
+  std::optional<std::size_t> chosen;
+  for (std::size_t i : order) {
+    LatentTermSet withDrift = cands[i].terms;
+    withDrift.drift = true;
+    const bool drift = bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, whittleModel[i]);
+    const auto plain = find(cands[i].terms), drifted = find(withDrift);
+    chosen = drift ? (drifted ? drifted : plain) : (plain ? plain : drifted);
+    if (chosen) break;
+  }
+  if (!chosen) return cands;
+  std::vector<LatentCandidate> out{cands[*chosen]};
+  for (std::size_t i : order)
+    if (i != *chosen) out.push_back(cands[i]);
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (i != *chosen && !std::isfinite(cands[i].whittleScore)) out.push_back(cands[i]);
+  return out;
+}
+
 }  // namespace
 
 namespace {
 
 LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& avar,
-                   std::size_t samples, const LatentFitOptions& options) {
+                   std::size_t samples, const LatentFitOptions& options, const WhittleBins* bins) {
   const double dt = options.sampleInterval;
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent fit: sample interval must be > 0");
   if (m.size() != avar.size()) throw InputError("latent fit: m and avar differ in length");
@@ -491,14 +542,22 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     omegaModel = cands.front().model;
     if (same) break;
   }
+  const bool whittle = bins != nullptr && options.whittleSelection;
+  if (whittle) {
+    cands = whittleChoice(p, *bins, cands, penalty);
+    omegaModel = cands.front().model;
+  }
   // Final: Omega from the winner, the winner refitted; every set rescored under that Omega for
   // the selection-aware parameters (so that a winner of weight ~1 states its own fit).
   p.W = modelWhitening(p, omegaModel);
   const SetFit best = fitSet(p, cands.front().terms);
   // Only the sets within kAveragedScoreRange of the best pass-2 score are rescored.
   std::vector<LatentTermSet> near;
+  double bestScore = cands.front().score;
   for (const auto& c : cands)
-    if (c.valid && c.score - cands.front().score <= kAveragedScoreRange) near.push_back(c.terms);
+    if (c.valid) bestScore = std::min(bestScore, c.score);
+  for (const auto& c : cands)
+    if (c.valid && c.score - bestScore <= kAveragedScoreRange) near.push_back(c.terms);
   std::vector<SetFit> finalFits;
   const std::vector<LatentCandidate> finalCands = scoreAll(p, near, penalty, &finalFits);
   const std::vector<LatentAveragedParameter> averaged = averageOverSets(p, finalCands, finalFits, omegaModel);
@@ -516,6 +575,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   out.avar = y;
   out.modelAvar = latentAllanVariance(out.model, dt, p.m);
   out.candidates = cands;
+  out.whittleSelected = whittle && std::isfinite(cands.front().whittleScore);
   out.averaged = averaged;
   out.consistent = out.pValue >= 1e-3;
   if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
@@ -525,9 +585,11 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
 
 }  // namespace
 
-LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<double>& avar,
-                         std::size_t samples, const LatentFitOptions& options) {
-  LatentFit fit = fitRange(m, avar, samples, options);
+namespace {
+
+LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double>& avar, std::size_t samples,
+                     const LatentFitOptions& options, const WhittleBins* bins) {
+  LatentFit fit = fitRange(m, avar, samples, options, bins);
   if (!options.scanStart || fit.consistent) return fit;
   LatentFit best = fit;
   for (std::size_t start = 1; start < fit.tau.size() && fit.tau.size() - start >= 6; ++start) {
@@ -536,7 +598,7 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
     LatentFit f;
     progress::checkpoint("scanning the start of the tau range", start, fit.tau.size());
     try {
-      f = fitRange(m, avar, samples, o);
+      f = fitRange(m, avar, samples, o, bins);
     } catch (const Error&) {
       break;
     }
@@ -547,6 +609,13 @@ LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<do
   best.warnings.push_back("no start of the tau range gives a consistent fit (p >= 0.001): least-bad start " +
                           fmt(best.tau.front()) + " s kept");
   return best;
+}
+
+}  // namespace
+
+LatentFit fitLatentModel(const std::vector<std::size_t>& m, const std::vector<double>& avar,
+                         std::size_t samples, const LatentFitOptions& options) {
+  return fitScanned(m, avar, samples, options, nullptr);
 }
 
 LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleInterval) {
@@ -565,7 +634,9 @@ LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleI
 
 LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options) {
   const LatentAllanPoints c = latentAllanPoints(x, options.sampleInterval);
-  return fitLatentModel(c.m, c.avar, x.size(), options);
+  if (!options.whittleSelection) return fitScanned(c.m, c.avar, x.size(), options, nullptr);
+  const WhittleBins bins = whittleBins(x, options.sampleInterval);
+  return fitScanned(c.m, c.avar, x.size(), options, &bins);
 }
 
 }  // namespace sinsim::errormodels::fit

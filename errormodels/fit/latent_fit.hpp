@@ -37,6 +37,14 @@
 //  6. Selection-aware parameters (LatentAveragedParameter): every set within 20 of the best score
 //     refitted under the final Omega, weighted exp(-delta score / 2), each with its 1-sigma
 //     under Omega from its own model; averaged per parameter (Buckland et al. 1997).
+//  7. With the record (fitLatentModel(x, ...)) and LatentFitOptions::whittleSelection, the set is
+//     chosen by the Whittle likelihood of the differenced record's periodogram instead
+//     (whittle_selection.hpp; every Fourier frequency down to 1 / (N dt) instead of 2-3 Allan
+//     points where a random walk lives): the best Whittle score among the sets without drift,
+//     started from their Allan fits; drift is added when the slope of the line the periodogram
+//     removed is significant under that set's Whittle model (chi^2_1 at 1 %). The parameters and
+//     1-sigma are the Allan fit's of the chosen set (steps 2-5); step 6 still weighs the sets by
+//     their Allan scores.
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
 #pragma once
 
@@ -96,6 +104,10 @@ struct LatentFitOptions {
   /// point of the boundary mixture (chi^2_0 + chi^2_k) / 2: 5.41 for k = 1, 7.82 for k = 2.
   double penaltyPerTerm = 3.0;
   double penaltyPerParameter = 2.41;
+  /// Choose the term set by the Whittle likelihood of the differenced record's periodogram
+  /// (whittle_selection.hpp) instead of the Allan GLS score; the parameters and their 1-sigma stay
+  /// the Allan fit's. Only the record overload fitLatentModel(x, ...) has a periodogram.
+  bool whittleSelection = true;
 };
 
 /// The score's penalty of a term set: penaltyPerTerm * terms + penaltyPerParameter * parameters.
@@ -130,6 +142,8 @@ struct LatentCandidate {
   double chi2 = 0.0;
   double score = 0.0;  ///< chi2 + latentPenalty(terms, options)
   bool valid = false;  ///< every variance strictly positive
+  /// -2 log L (Whittle) + latentPenalty, NaN where not scored (drift, AR, no record, invalid).
+  double whittleScore = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct LatentFit {
@@ -146,7 +160,10 @@ struct LatentFit {
   std::size_t samples = 0;      ///< N
   std::vector<std::size_t> m;   ///< averaging factors used
   std::vector<double> tau, avar, modelAvar;  ///< [s], [U^2], [U^2]
-  std::vector<LatentCandidate> candidates;   ///< pass-2 fits, best score first (valid first)
+  /// Pass-2 fits, the chosen set first. Allan selection: by score (valid first). Whittle
+  /// selection: the chosen, then the sets with a Whittle score by it, then the rest by score.
+  std::vector<LatentCandidate> candidates;
+  bool whittleSelected = false;  ///< the set was chosen by the Whittle score
   /// Every parameter of the valid sets averaged over them (LatentAveragedParameter): the
   /// selection-aware statement, also for terms the chosen set lacks.
   std::vector<LatentAveragedParameter> averaged;

@@ -187,9 +187,13 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
          << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
          << "; chi2 " << num(f.chi2, 4) << " / " << f.dof << " dof (p = " << num(f.pValue, 3) << ")";
-  if (const LatentCandidate* r = f.runnerUp())
-    b.line << "; runner-up " << r->terms.name() << " (score +"
-           << num(r->score - f.candidates.front().score, 3) << ")";
+  if (f.whittleSelected) b.line << "; set chosen by the Whittle likelihood of the periodogram";
+  if (const LatentCandidate* r = f.runnerUp()) {
+    const bool w = f.whittleSelected && std::isfinite(r->whittleScore);
+    b.line << "; runner-up " << r->terms.name() << " (" << (w ? "Whittle " : "") << "score "
+           << num(w ? r->whittleScore - f.candidates.front().whittleScore : r->score - f.candidates.front().score, 3)
+           << " higher)";
+  }
   b.endComment();
   for (const auto& w : f.warnings) {
     b.line << "WARNING: " << w;

@@ -72,6 +72,16 @@ std::size_t goodFftSize(std::size_t n) {
   }
 }
 
+/// Largest 2^a 3^b 5^c 7^d <= n (n >= 1): within ~1 % of n for n >= 1e4.
+std::size_t goodFftSizeBelow(std::size_t n) {
+  for (std::size_t m = n;; --m) {
+    std::size_t r = m;
+    for (std::size_t p : {2, 3, 5, 7})
+      while (r % p == 0) r /= p;
+    if (r == 1) return m;
+  }
+}
+
 void checkSamples(const std::vector<double>& x, double rate_hz, const char* who) {
   if (!(std::isfinite(rate_hz) && rate_hz > 0))
     throw InputError(std::string(who) + ": sample rate must be a positive number of Hz");
@@ -199,6 +209,60 @@ PowerSpectrum welchPsd(const std::vector<double>& x, double rate_hz, const Welch
     p.psd[k] *= scale * (single ? 1.0 : 2.0);
   }
   return p;
+}
+
+Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFraction, Detrend detrend) {
+  checkSamples(x, 1.0, "periodogram");
+  if (x.size() < 16) throw InputError("periodogram: need at least 16 samples, got " + std::to_string(x.size()));
+  if (!(taperFraction >= 0.0 && taperFraction <= 1.0))
+    throw InputError("periodogram: taper fraction must be in [0, 1]");
+  // The first n samples, n the largest length FFTW transforms with its fast codelets (a length with
+  // a large prime factor costs several times more).
+  const std::size_t n = goodFftSizeBelow(x.size());
+  Periodogram p;
+  std::vector<double>& h = p.taper;
+  h.assign(n, 1.0);
+  const auto L = static_cast<std::size_t>(std::floor(0.5 * taperFraction * double(n)));
+  for (std::size_t k = 0; k < L; ++k) h[k] = h[n - 1 - k] = 0.5 - 0.5 * std::cos(kPi * (double(k) + 0.5) / double(L));
+  // h-weighted least squares of x on [1, k] (or [1]): normal equations of order 2.
+  double s0 = 0, s1 = 0, s2 = 0, b0 = 0, b1 = 0, sh2 = 0, sh4 = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double kk = double(k);
+    s0 += h[k], s1 += h[k] * kk, s2 += h[k] * kk * kk, b0 += h[k] * x[k], b1 += h[k] * kk * x[k];
+    sh2 += h[k] * h[k], sh4 += h[k] * h[k] * h[k] * h[k];
+  }
+  double mean = b0 / s0, slope = 0.0;
+  if (detrend == Detrend::Linear) {
+    const double det = s0 * s2 - s1 * s1;
+    mean = (s2 * b0 - s1 * b1) / det;
+    slope = (s0 * b1 - s1 * b0) / det;
+  }
+  p.slope = slope;
+  RealFft fft(n);
+  double* in = fft.in();
+  for (std::size_t k = 0; k < n; ++k) in[k] = h[k] * (x[k] - mean - slope * double(k));
+  fft.forward();
+  const fftw_complex* c = fft.out();
+  p.varianceInflation = double(n) * sh4 / (sh2 * sh2);
+  p.w.resize(n / 2 + 1);
+  p.I.resize(n / 2 + 1);
+  for (std::size_t j = 0; j <= n / 2; ++j) {
+    p.w[j] = 2.0 * kPi * double(j) / double(n);
+    p.I[j] = (c[j][0] * c[j][0] + c[j][1] * c[j][1]) / sh2;
+  }
+  return p;
+}
+
+std::vector<double> transformPower(const std::vector<double>& g, std::size_t M) {
+  if (M < g.size() || M < 2) throw InputError("transform power: M must be >= the sequence length and >= 2");
+  RealFft fft(M);
+  double* in = fft.in();
+  for (std::size_t k = 0; k < M; ++k) in[k] = k < g.size() ? g[k] : 0.0;
+  fft.forward();
+  const fftw_complex* c = fft.out();
+  std::vector<double> out(M / 2 + 1);
+  for (std::size_t k = 0; k <= M / 2; ++k) out[k] = c[k][0] * c[k][0] + c[k][1] * c[k][1];
+  return out;
 }
 
 }  // namespace sinsim::errormodels

@@ -64,4 +64,34 @@ struct PowerSpectrum {
 /// overlap outside [0, 1), or a segment shorter than 2.
 PowerSpectrum welchPsd(const std::vector<double>& x, double rate_hz, const WelchOptions& options = {});
 
+/// Periodogram of the record (its first n samples, n = the largest 2^a 3^b 5^c 7^d <= N, within
+/// ~1 % of N), tapered (Dahlhaus 1988, "Small sample effects in time series analysis: a new
+/// asymptotic theory and a new estimate", Ann. Stat. 16): a split-cosine bell h (a cosine ramp over
+/// `taperFraction` / 2 of the record at each end, 1 between; Bloomfield 1976, sec. 5.2), the
+/// h-weighted least-squares mean (Detrend::Mean) or line (Detrend::Linear) removed, then
+///   I_j = |sum_k h_k (x_k - trend_k) e^{-i w_j k}|^2 / sum_k h_k^2,  w_j = 2 pi j / n, j = 0..n/2.
+/// For a stationary process of two-sided PSD S(w) in [u^2 per rad/sample] normalised so that
+/// (1/pi) int_0^pi S = the variance (white noise of variance s^2: S = s^2), E I_j ~= S(w_j) away
+/// from the lowest j, and the ordinates are ~ S(w_j) chi^2_2 / 2, nearly independent. The taper
+/// keeps a steep spectrum's power from leaking far, at the cost of a variance inflation
+/// n sum h^4 / (sum h^2)^2 (1.06 at taperFraction 0.1).
+enum class Detrend { Mean, Linear };
+struct Periodogram {
+  std::vector<double> w;      ///< [rad/sample] w_j
+  std::vector<double> I;      ///< [u^2 per rad/sample] I_j
+  std::vector<double> taper;  ///< h_k, k = 0..n-1 (its size is the n used)
+  /// The removed line's slope [u per sample] (0 for Detrend::Mean): sum_k g_k x_k with
+  /// g_k = h_k (S0 k - S1) / (S0 S2 - S1^2), S_i = sum_k h_k k^i.
+  double slope = 0.0;
+  double varianceInflation = 1.0;  ///< n sum h^4 / (sum h^2)^2
+};
+/// Throws InputError for fewer than 16 samples, non-finite samples or taperFraction outside [0, 1].
+Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFraction,
+                               Detrend detrend = Detrend::Mean);
+
+/// |G(w_k)|^2, G(w) = sum_k g_k e^{-i w k}, at w_k = 2 pi k / M, k = 0..M/2 (g zero-padded to M;
+/// M >= g.size()). With it, Var(sum g_k x_k) = (1/M) sum_{k=0}^{M-1} S(w_k) |G(w_k)|^2 for a
+/// stationary x of PSD S (spectrum.hpp's normalisation), to quadrature accuracy.
+std::vector<double> transformPower(const std::vector<double>& g, std::size_t M);
+
 }  // namespace sinsim::errormodels
