@@ -1,0 +1,99 @@
+// Level-shift test in the one-step prediction residuals (level_shift.hpp).
+#include "errormodels/diagnose/level_shift.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "errormodels/diagnose/series_tools.hpp"
+#include "errormodels/fit/ar_fit.hpp"
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+constexpr double kMadToSd = 1.482602218505602;
+
+double robustScale(const std::vector<double>& v) {
+  const double med = median(v);
+  std::vector<double> dev(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) dev[i] = std::fabs(v[i] - med);
+  return kMadToSd * median(dev);
+}
+
+/// rho >= 1: the largest ratio of the residuals' long-run variance at block size m (robust, from
+/// the increments of their block means, as an Allan variance) to their one-sample variance.
+double longRunRatio(const std::vector<double>& e, double sigma) {
+  double rho = 1.0;
+  for (std::size_t m = 2; e.size() / m >= 33; m *= 2) {
+    std::vector<double> mean(e.size() / m, 0.0), inc(mean.size() - 1);
+    for (std::size_t j = 0; j < mean.size(); ++j) {
+      for (std::size_t k = j * m; k < (j + 1) * m; ++k) mean[j] += e[k];
+      mean[j] /= double(m);
+    }
+    for (std::size_t j = 0; j + 1 < mean.size(); ++j) inc[j] = mean[j + 1] - mean[j];
+    const double s = robustScale(inc);
+    rho = std::max(rho, double(m) * s * s / (2.0 * sigma * sigma));
+  }
+  return rho;
+}
+
+}  // namespace
+
+std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
+                                     const std::vector<double>& modelAvar,
+                                     const std::vector<std::size_t>& factors) {
+  if (y.size() < 20 * (order + 2)) return std::nullopt;
+  const auto ar = fit::burg(y, order);
+  const std::size_t p = order, M = y.size() - p;
+  std::vector<double> e(M);
+  double eMean = 0;
+  for (std::size_t t = 0; t < M; ++t) {
+    double v = 0;
+    for (std::size_t i = 0; i <= p; ++i) v += ar.a[i] * (y[t + p - i] - ar.mean);
+    e[t] = v, eMean += v;
+  }
+  eMean /= double(M);
+  for (double& v : e) v -= eMean;
+  double sigma = robustScale(e);
+  if (!(sigma > 0)) return std::nullopt;
+  double rho = longRunRatio(e, sigma);
+  if (!modelAvar.empty() && modelAvar.size() == factors.size()) {
+    const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
+    for (std::size_t k = 0; k < factors.size(); ++k)
+      if (arAvar[k] > 0) rho = std::max(rho, modelAvar[k] / arAvar[k]);
+  }
+  sigma *= std::sqrt(rho);
+  std::vector<double> c(p + 1), c2(p + 2, 0.0), c1(p + 2, 0.0);  // c_j; prefix sums of c_j^2, c_j
+  double a2 = 0;
+  for (std::size_t j = 0; j <= p; ++j) {
+    c[j] = (j ? c[j - 1] : 0.0) + ar.a[j];
+    a2 += ar.a[j] * ar.a[j];
+  }
+  for (std::size_t j = 0; j < p; ++j) c2[j + 1] = c2[j] + c[j] * c[j], c1[j + 1] = c1[j] + c[j];
+  const double A1 = c[p];
+  std::vector<double> tail(M + 1, 0.0);  // sum of e from t on
+  for (std::size_t t = M; t-- > 0;) tail[t] = tail[t + 1] + e[t];
+  LevelShift best;
+  best.rho = rho;
+  double bestZ = -1;
+  for (std::size_t k = p + 1; k + p + 1 < M; ++k) {
+    double s = A1 * tail[k + p];
+    for (std::size_t j = 0; j < p; ++j) s += c[j] * e[k + j];
+    const double L = double(M - k), longPart = L - double(p);
+    const double sumSq = c2[p] + A1 * A1 * longPart, sum = c1[p] + A1 * longPart;
+    const double norm2 = sumSq - sum * sum / double(M);  // |u_k| after the mean is taken out
+    if (!(norm2 > 0)) continue;
+    const double z = std::fabs(s) / (sigma * std::sqrt(norm2));
+    if (z > bestZ) bestZ = z, best.at = k + p, best.size = s / norm2;
+  }
+  if (!(bestZ > zLimit)) return std::nullopt;
+  best.z = bestZ;
+  const std::size_t k = best.at - p;
+  double spike = 0;
+  for (std::size_t j = 0; j <= p && k + j < M; ++j) spike += ar.a[j] * e[k + j];
+  best.zSpike = std::fabs(spike) / (sigma * std::sqrt(a2));
+  if (!(best.z > best.zSpike)) return std::nullopt;
+  return best;
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail
