@@ -11,15 +11,6 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
-constexpr double kMadToSd = 1.482602218505602;
-
-double robustScale(const std::vector<double>& v) {
-  const double med = median(v);
-  std::vector<double> dev(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) dev[i] = std::fabs(v[i] - med);
-  return kMadToSd * median(dev);
-}
-
 /// rho >= 1: the largest ratio of the residuals' long-run variance at block size m (robust, from
 /// the increments of their block means, as an Allan variance) to their one-sample variance.
 double longRunRatio(const std::vector<double>& e, double sigma) {
@@ -31,7 +22,7 @@ double longRunRatio(const std::vector<double>& e, double sigma) {
       mean[j] /= double(m);
     }
     for (std::size_t j = 0; j + 1 < mean.size(); ++j) inc[j] = mean[j + 1] - mean[j];
-    const double s = robustScale(inc);
+    const double s = robustSd(inc);
     rho = std::max(rho, double(m) * s * s / (2.0 * sigma * sigma));
   }
   return rho;
@@ -54,7 +45,7 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   }
   eMean /= double(M);
   for (double& v : e) v -= eMean;
-  double sigma = robustScale(e);
+  double sigma = robustSd(e);
   if (!(sigma > 0)) return std::nullopt;
   double rho = longRunRatio(e, sigma);
   if (!modelAvar.empty() && modelAvar.size() == factors.size()) {
