@@ -31,7 +31,7 @@ double longRunRatio(const std::vector<double>& e, double sigma) {
 }  // namespace
 
 std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
-                                     const std::vector<double>& modelAvar,
+                                     const std::vector<double>& referenceAvar,
                                      const std::vector<std::size_t>& factors) {
   if (y.size() < 20 * (order + 2)) return std::nullopt;
   const auto ar = fit::burg(y, order);
@@ -48,10 +48,10 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   double sigma = robustSd(e);
   if (!(sigma > 0)) return std::nullopt;
   double rho = longRunRatio(e, sigma);
-  if (!modelAvar.empty() && modelAvar.size() == factors.size()) {
+  if (!referenceAvar.empty() && referenceAvar.size() == factors.size()) {
     const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
     for (std::size_t k = 0; k < factors.size(); ++k)
-      if (arAvar[k] > 0) rho = std::max(rho, modelAvar[k] / arAvar[k]);
+      if (arAvar[k] > 0) rho = std::max(rho, referenceAvar[k] / arAvar[k]);
   }
   sigma *= std::sqrt(rho);
   std::vector<double> c(p + 1), c2(p + 2, 0.0), c1(p + 2, 0.0);  // c_j; prefix sums of c_j^2, c_j
