@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 
@@ -31,8 +32,8 @@ double longRunRatio(const std::vector<double>& e, double sigma) {
 }  // namespace
 
 std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
-                                     const std::vector<double>& referenceAvar,
-                                     const std::vector<std::size_t>& factors) {
+                                     const std::vector<std::size_t>& factors,
+                                     const std::vector<double>& modelAvar) {
   if (y.size() < 20 * (order + 2)) return std::nullopt;
   const auto ar = fit::burg(y, order);
   const std::size_t p = order, M = y.size() - p;
@@ -47,13 +48,14 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   for (double& v : e) v -= eMean;
   double sigma = robustSd(e);
   if (!(sigma > 0)) return std::nullopt;
+  const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
+  auto ratioTo = [&arAvar](const std::vector<double>& avar, double rho) {
+    for (std::size_t k = 0; k < arAvar.size() && k < avar.size(); ++k)
+      if (arAvar[k] > 0) rho = std::max(rho, avar[k] / arAvar[k]);
+    return rho;
+  };
   double rho = longRunRatio(e, sigma);
-  if (!referenceAvar.empty() && referenceAvar.size() == factors.size()) {
-    const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
-    for (std::size_t k = 0; k < factors.size(); ++k)
-      if (arAvar[k] > 0) rho = std::max(rho, referenceAvar[k] / arAvar[k]);
-  }
-  sigma *= std::sqrt(rho);
+  if (modelAvar.size() == factors.size()) rho = ratioTo(modelAvar, rho);
   std::vector<double> c(p + 1), c2(p + 2, 0.0), c1(p + 2, 0.0);  // c_j; prefix sums of c_j^2, c_j
   double a2 = 0;
   for (std::size_t j = 0; j <= p; ++j) {
@@ -65,7 +67,6 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   std::vector<double> tail(M + 1, 0.0);  // sum of e from t on
   for (std::size_t t = M; t-- > 0;) tail[t] = tail[t + 1] + e[t];
   LevelShift best;
-  best.rho = rho;
   double bestZ = -1;
   for (std::size_t k = p + 1; k + p + 1 < M; ++k) {
     double s = A1 * tail[k + p];
@@ -74,15 +75,26 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
     const double sumSq = c2[p] + A1 * A1 * longPart, sum = c1[p] + A1 * longPart;
     const double norm2 = sumSq - sum * sum / double(M);  // |u_k| after the mean is taken out
     if (!(norm2 > 0)) continue;
-    const double z = std::fabs(s) / (sigma * std::sqrt(norm2));
+    const double z = std::fabs(s) / (sigma * std::sqrt(rho * norm2));
     if (z > bestZ) bestZ = z, best.at = k + p, best.size = s / norm2;
   }
+  if (!(bestZ > zLimit)) return std::nullopt;
+  // the record's own Allan variance without the shift (a scalar rho: the argmax stays)
+  std::vector<double> rest = y;
+  for (std::size_t k = best.at; k < rest.size(); ++k) rest[k] -= best.size;
+  Setup setup;
+  setup.rate = 1.0;  // an Allan variance of rates does not depend on the sample interval
+  setup.n = rest.size();
+  setup.factors = factors;
+  const double rhoAll = ratioTo(allanVariance(rest, setup), rho);
+  bestZ *= std::sqrt(rho / rhoAll);
+  best.rho = rho = rhoAll;
   if (!(bestZ > zLimit)) return std::nullopt;
   best.z = bestZ;
   const std::size_t k = best.at - p;
   double spike = 0;
   for (std::size_t j = 0; j <= p && k + j < M; ++j) spike += ar.a[j] * e[k + j];
-  best.zSpike = std::fabs(spike) / (sigma * std::sqrt(a2));
+  best.zSpike = std::fabs(spike) / (sigma * std::sqrt(rho * a2));
   if (!(best.z > best.zSpike)) return std::nullopt;
   return best;
 }

@@ -25,16 +25,14 @@ struct LevelShift {
 /// long-run variance ratio rho = m Var_robust(block-mean increments) / (2 sigma^2) over the
 /// octave block sizes m with >= 33 blocks -- an AR of low order leaves slow correlation in e
 /// (a white + slow Gauss-Markov record), and the statistic sums e over up to the whole record.
-/// The record alone cannot tell a step from a slow excursion longer than its blocks (a
-/// Gauss-Markov of tau ~ T/40 under white noise): the model can. With `referenceAvar` (an Allan
-/// variance at the averaging factors `factors`: the diagnosis passes the larger of the model's and
-/// the record's own), rho is also at least its largest ratio to the whitening AR's Allan variance
-/// (fit::arAllanVariance): the shift must stand out against every variance the record or the
-/// model shows at long tau, not only against the AR's.
-/// Returns the shift when |lambda_L| exceeds zLimit and exceeds |lambda_A| there (else the jump
-/// is a spike: the outlier detector's); empty otherwise.
+/// The record's AR alone cannot tell a step from a slow excursion longer than its blocks (a
+/// Gauss-Markov of tau ~ T/40 under white noise, a weak random walk): rho is also at least the
+/// largest ratio, over the averaging factors `factors`, of the model's Allan variance `modelAvar`
+/// (when given) and of the record's own without the shift found (y minus it: a step must not
+/// hide behind its own Allan excess) to the whitening AR's (fit::arAllanVariance). The shift must
+/// stand out against every variance the model or the record shows at long tau.
 std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
-                                     const std::vector<double>& referenceAvar = {},
-                                     const std::vector<std::size_t>& factors = {});
+                                     const std::vector<std::size_t>& factors,
+                                     const std::vector<double>& modelAvar = {});
 
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -78,19 +78,19 @@ constexpr std::size_t kShiftOrder = 10;  // the level-shift test's whitening AR 
 /// beyond the limit that keeps its scan of every sample at kJumpP (Bonferroni, 2 N Phi(-z) =
 /// kJumpP), the largest first, each taken out before the next scan (at most maxPasses) -- a bias
 /// step 1.5x the base's Allan deviation, or a telegraph's few switches, change few window means
-/// by much but shift the level of the whole rest of the record. `referenceAvar`: the larger of the
-/// current model's Allan variance and the record's own at each tau, which sets the shift test's
-/// long-tau variance where the record's AR is too short to (a slow Gauss-Markov the model has, a
-/// weak random walk it lacks: neither is a step, and both wander over the long sums). On an
+/// by much but shift the level of the whole rest of the record. `modelAvar`: the current model's,
+/// which with the record's own Allan variance sets the shift test's long-tau variance where the
+/// record's AR is too short to (a slow Gauss-Markov the model has, a weak random walk it lacks:
+/// neither is a step, and both wander over the long sums). On an
 /// undithered lattice a one-level change is rounding (w.lattice).
 std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& x,
-                               const std::vector<double>& referenceAvar, int maxPasses = 8) {
+                               const std::vector<double>& modelAvar, int maxPasses = 8) {
   auto steps = levelSteps(x, w.factors, zFromTwoSidedP(kJumpP), w.lattice, maxPasses);
   if (!steps.empty()) return steps;
   const double zLimit = normalTwoSidedCritical(kJumpP / double(x.size()));
   std::vector<double> r = x;
   for (int pass = 0; pass < maxPasses; ++pass) {
-    const auto s = levelShift(r, kShiftOrder, zLimit, referenceAvar, w.factors);
+    const auto s = levelShift(r, kShiftOrder, zLimit, w.factors, modelAvar);
     if (!s || !(std::fabs(s->size) > 1.5 * w.lattice)) break;
     if (steps.empty()) steps.assign(x.size(), 0.0);
     for (std::size_t k = s->at; k < x.size(); ++k) steps[k] += s->size, r[k] -= s->size;
@@ -107,10 +107,8 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
 void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeL.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
-  auto referenceAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
-  for (std::size_t k = 0; k < referenceAvar.size(); ++k)
-    referenceAvar[k] = std::max(referenceAvar[k], std::exp(w.prob.L[k]));  // L: ln AVAR of x
-  w.steps = stepSeries(w, x, referenceAvar);
+  const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
+  w.steps = stepSeries(w, x, modelAvar);
   const auto& steps = w.steps;
   if (steps.empty()) return;
   std::vector<double> r(x.size());
@@ -126,7 +124,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
     const auto& sig = w.cands[i].signal;
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
-    w.explainsJumps[i] = stepSeries(w, r, referenceAvar, 1).empty();
+    w.explainsJumps[i] = stepSeries(w, r, modelAvar, 1).empty();
   }
 }
 

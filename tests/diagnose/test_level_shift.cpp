@@ -20,6 +20,10 @@ constexpr std::size_t kN = 20000;
 // 2 N Phi(-z) = 1e-3: the scan of every sample at the 0.999 level (Bonferroni), as selection.cpp
 const double kLimit = sinsim::errormodels::normalTwoSidedCritical(1e-3 / double(kN));
 
+// the diagnosis' half-octave tau grid up to N/8 (series_stats.hpp)
+const std::vector<std::size_t> kFactors = {1, 2, 3, 4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128, 181, 256, 362,
+                                           512, 724, 1024, 1448, 2048};
+
 std::vector<double> white(std::mt19937_64& g, double sd) {
   std::normal_distribution<double> n(0.0, sd);
   std::vector<double> y(kN);
@@ -46,7 +50,7 @@ TEST_CASE("a bias step in white noise: located, sized and as significant as the 
   for (int seed = 0; seed < 40; ++seed) {
     auto y = white(g, 1.0);
     for (std::size_t k = 12000; k < kN; ++k) y[k] += h;
-    const auto s = levelShift(y, kOrder, kLimit);
+    const auto s = levelShift(y, kOrder, kLimit, kFactors);
     REQUIRE(s);
     CHECK(std::fabs(double(s->at) - 12000.0) < 1000.0);
     CHECK(std::fabs(s->size - h) < 4 * se);
@@ -70,7 +74,7 @@ TEST_CASE("a bias step in a random walk is one large increment", "[diagnose][lev
     const auto inc = white(g, 1.0);
     double walk = 0;
     for (std::size_t k = 0; k < kN; ++k) y[k] += (walk += inc[k]) + (k >= 7000 ? 12.0 : 0.0);
-    const auto s = levelShift(y, kOrder, kLimit);
+    const auto s = levelShift(y, kOrder, kLimit, kFactors);
     REQUIRE(s);
     CHECK(std::fabs(double(s->at) - 7000.0) <= 2.0);
     CHECK(std::fabs(s->size - 12.0) < 4.0);
@@ -83,7 +87,7 @@ TEST_CASE("a spike is no level shift", "[diagnose][level_shift]") {
   for (int seed = 0; seed < 10; ++seed) {
     auto y = white(g, 1.0);
     y[9000] += 20.0;
-    CHECK_FALSE(levelShift(y, kOrder, kLimit));
+    CHECK_FALSE(levelShift(y, kOrder, kLimit, kFactors));
   }
 }
 
@@ -94,16 +98,16 @@ TEST_CASE("Gaussian records without a step show none at the test's level", "[dia
   std::mt19937_64 g(14);
   int flagged[3] = {0, 0, 0};
   for (int seed = 0; seed < 50; ++seed) {
-    flagged[0] += bool(levelShift(white(g, 1.0), kOrder, kLimit));
+    flagged[0] += bool(levelShift(white(g, 1.0), kOrder, kLimit, kFactors));
     const auto w = white(g, 1.0);
     std::vector<double> ar(kN, 0.0);
     for (std::size_t k = 2; k < kN; ++k) ar[k] = 1.2 * ar[k - 1] - 0.4 * ar[k - 2] + w[k];
-    flagged[1] += bool(levelShift(ar, kOrder, kLimit));
+    flagged[1] += bool(levelShift(ar, kOrder, kLimit, kFactors));
     auto rw = white(g, 1.0);
     const auto inc = white(g, 0.2);
     double walk = 0;
     for (std::size_t k = 0; k < kN; ++k) rw[k] += (walk += inc[k]);
-    flagged[2] += bool(levelShift(rw, kOrder, kLimit));
+    flagged[2] += bool(levelShift(rw, kOrder, kLimit, kFactors));
   }
   CHECK(flagged[0] <= 1);
   CHECK(flagged[1] <= 1);
