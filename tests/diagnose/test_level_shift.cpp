@@ -40,8 +40,9 @@ std::vector<double> white(std::mt19937_64& g, double sd) {
 // 13.9 (its spread across seeds is ~1: 4 sd of the mean is 0.6), each size within 4 standard
 // errors (0.058) of h, each located within 1000 samples (the change point's error is
 // O(sd^2 / h^2) = 25 samples, with a heavy tail where the statistic is flat near its maximum);
-// the inflation rho, the largest of ~9 robust long-run variance ratios of white residuals (each
-// with ~40 % sd from 33-600 blocks), is a loss of power: <= 3 here, 1.5 on average.
+// the inflation rho -- the largest of ~9 robust long-run variance ratios of white residuals (each
+// with ~40 % sd from 33-600 blocks) and of the record's Allan variance without the step to the
+// AR's (~1 +- 20 % at the longest tau) -- is a loss of power: <= 3 here, 1.6 on average at most.
 TEST_CASE("a bias step in white noise: located, sized and as significant as the closed form",
           "[diagnose][level_shift]") {
   std::mt19937_64 g(11);
