@@ -55,7 +55,8 @@ def diagnose(a, rec, model, out):
          str(a.realisations), "-o", out + ".improved.yaml"])
     d = json.load(open(out))
     return {ax["channel"]: {"findings": [f["effect"] for f in ax["findings"] if f["reported"]],
-                            "unexplained": ax.get("unexplained")} for ax in d["axes"]}
+                            "unexplained": ax.get("unexplained") or ax.get("unexplained_steps")}
+            for ax in d["axes"]}
 
 
 def main():

@@ -137,7 +137,7 @@ def diagnose(sinsim, row, opts, add=None):
         cmd += ["--threshold", str(opts.threshold)]
     if add:
         cmd += ["--add", add]
-    if getattr(opts, "hidden_only", False):
+    if getattr(opts, "hidden_only", False) or getattr(opts, "subset", None):
         cmd += ["--channels", row["channel"]]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
@@ -151,7 +151,8 @@ def diagnose(sinsim, row, opts, add=None):
             continue
         rep = [f for f in a["findings"] if f.get("reported")]
         res[a["channel"]] = {"findings": [f["effect"] for f in rep], "misfit": a["misfit"],
-                             "fits": a["fits"], "unexplained": a.get("unexplained"),
+                             "fits": a["fits"],
+                             "unexplained": a.get("unexplained") or a.get("unexplained_steps"),
                              "best_score": max([f["score"] for f in a["findings"]] + [0.0]),
                              "best_effect": max(a["findings"], key=lambda f: f["score"])["effect"]
                              if a["findings"] else None}
@@ -238,11 +239,23 @@ def report(rows):
     return sc
 
 
+def in_subset(row, subset):
+    """--subset: ooc = one out-of-catalogue effect, two = two catalogue effects (the cases of two
+    floors, to iterate on a benchmark slice without its other records)."""
+    hid = [h["effect"] for h in row["hidden"]]
+    if subset == "ooc":
+        return len(hid) == 1 and hid[0] in g.OUT_OF_CATALOGUE
+    return len(hid) == 2 and all(x in g.CATALOGUE for x in hid)
+
+
 def run_one(a, i):
     rng = np.random.default_rng([a.seed, i])
     bases = a.bases.split(",") if a.bases else BASES
     row = make(rng, i, a.work, a.max_samples, bases, a.null, getattr(a, "effects", None),
                getattr(a, "pool", "all"))
+    if getattr(a, "subset", None) and not in_subset(row, a.subset):
+        os.remove(row["record"])
+        return None
     row["result"] = diagnose(a.sinsim, row, a)
     if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in g.CATALOGUE:
         res = row["result"].get(row["channel"], {})
@@ -272,6 +285,9 @@ def main():
     ap.add_argument("--pool", choices=sorted(POOLS), default="all", help="where hidden effects are drawn from")
     ap.add_argument("--hidden-only", action="store_true",
                     help="diagnose only the hidden channel (studies: no clean-channel counts)")
+    ap.add_argument("--subset", choices=["ooc", "two"], default=None,
+                    help="diagnose only the records with one out-of-catalogue effect (ooc) or two "
+                         "catalogue effects (two), on their hidden channel; the same draws")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")
     ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",
@@ -285,7 +301,8 @@ def main():
     from concurrent.futures import ThreadPoolExecutor
     with ThreadPoolExecutor(max_workers=a.jobs) as ex:
         for row in ex.map(lambda i: run_one(a, i), range(a.first, a.first + a.records)):
-            rows.append(row)
+            if row is not None:
+                rows.append(row)
             print(f"\r{len(rows)}/{a.records} records", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
     with open(os.path.join(a.work, "results.json"), "w") as f:

@@ -53,6 +53,7 @@ AddRequest AddRequest::parse(const std::string& text) {
 }
 
 bool AxisDiagnosis::fits(double threshold) const {
+  if (!unexplainedSteps.empty()) return false;
   for (const auto& f : findings)
     if (f.reported && f.score >= threshold) return false;
   // and the Allan chi-square below its 0.999 quantile

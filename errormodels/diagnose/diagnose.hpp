@@ -88,6 +88,14 @@ struct FailRange {
   std::size_t points = 0;
 };
 
+/// A level step of the record (a bias jump, a telegraph switch, a knock on the stand) that the
+/// model with its reported findings leaves: found by the jump test of the window-mean increments
+/// (levelSteps, at its 0.999 level for the whole record), placed to the sample.
+struct LevelStep {
+  double time = 0;  ///< [s] from the record's start: the first sample at the new level
+  double size = 0;  ///< [SI] new level minus the old
+};
+
 struct Finding {
   std::string effect;    ///< catalogue type, e.g. "random_walk"
   std::string evidence;  ///< why, in words with numbers
@@ -126,6 +134,9 @@ struct AxisDiagnosis {
   /// 2.58 sigma on one side, >= 2 points, remaining chi2 above its 0.999 quantile): what no
   /// candidate explains. Empty when the remaining misfit is within the estimation scatter.
   std::optional<FailRange> unexplained;
+  /// The level steps no reported finding takes out (a warm-up's or a temperature's signal may):
+  /// no effect of the catalogue makes them, so they are unexplained too, with time and size.
+  std::vector<LevelStep> unexplainedSteps;
   bool fits(double threshold) const;  ///< no reported finding and chi2 below its 0.999 quantile
 };
 

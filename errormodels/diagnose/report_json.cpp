@@ -52,6 +52,8 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   j["fits"] = a.fits(threshold);
   j["chi2_selected"] = a.chi2Selected;
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained
+  for (const auto& st : a.unexplainedSteps)  // absent: no level step left
+    j["unexplained_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
   if (a.ljungBox)
     j["ljung_box"] = {{"lags", a.ljungBox->lags}, {"dof", a.ljungBox->dof}, {"Q", a.ljungBox->Q},
                       {"p", a.ljungBox->pValue}};

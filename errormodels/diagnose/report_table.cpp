@@ -22,7 +22,7 @@ std::string findingsText(const AxisDiagnosis& a, double threshold) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "" : ", ") + f.effect + " (" + num(f.score, 3) + ")";
-  if (a.unexplained) s += std::string(s.empty() ? "" : ", ") + "unexplained";
+  if (a.unexplained || !a.unexplainedSteps.empty()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
   if (s.empty()) s = a.fits(threshold) ? "fits" : "no effect above threshold";
   return s;
 }
@@ -44,6 +44,13 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
     o << "  " << a.channel << " unexplained: ADEV " << num(u->from, 3) << ".." << num(u->to, 3) << " s "
       << (u->direction > 0 ? "above" : "below") << " the model with its findings (x" << num(u->worstRatio, 3)
       << "); no candidate of the catalogue lowers the criterion there\n";
+  if (!a.unexplainedSteps.empty()) {
+    o << "  " << a.channel << " unexplained: level step" << (a.unexplainedSteps.size() > 1 ? "s" : "") << " at";
+    for (const auto& st : a.unexplainedSteps)
+      o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
+        << a.unit << ")";
+    o << "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)\n";
+  }
 }
 
 }  // namespace

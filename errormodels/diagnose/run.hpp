@@ -36,6 +36,8 @@ struct ChannelWork {
   /// the steps out (a warm-up's first windows). Empty when the record shows none (selection.cpp,
   /// markJumps).
   std::vector<double> jumpFreeL;
+  /// Those steps as a piecewise-constant series (empty when there are none).
+  std::vector<double> steps;
   /// The record's value lattice step [SI] where the noise (sd < q/2) does not dither the rounding,
   /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
   double lattice = 0;

@@ -6,6 +6,7 @@
 #include <set>
 #include <string>
 
+#include "errormodels/diagnose/level_shift.hpp"
 #include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/significance.hpp"
 #include "errormodels/fit/ar_fit.hpp"
@@ -70,17 +71,45 @@ std::vector<const Candidate*> allanSet(const ChannelWork& w) {
 
 constexpr double kJumpP = 1e-3;  // the jump test's level for the whole record (Bonferroni inside)
 
-/// w.jumpFreeL and w.explainsJumps for the series x (the record without the accepted signals).
-/// A level jump (a bias step, a telegraph switch, a disturbance of the test stand) is no effect of the
-/// catalogue, and every candidate's Allan shape can absorb part of its excess: a single step has
-/// exactly a random walk's Allan variance, a telegraph's switches make a ramp's slope. So on a
-/// record with jumps a candidate is credited only with what it explains on the record with the
-/// jumps taken out as well (trialRound) -- unless its own signal takes them out.
+constexpr std::size_t kShiftOrder = 10;  // the level-shift test's whitening AR (level_shift.hpp)
+
+/// The level steps of the series x as a piecewise-constant series (empty: none): those of the
+/// window-mean jump test (levelSteps), else the level shifts of the residual test (levelShift)
+/// beyond the limit that keeps its scan of every sample at kJumpP (Bonferroni, 2 N Phi(-z) =
+/// kJumpP), the largest first, each taken out before the next scan (at most maxPasses) -- a bias
+/// step 1.5x the base's Allan deviation, or a telegraph's few switches, change few window means
+/// by much but shift the level of the whole rest of the record. `modelAvar`: the current model's,
+/// which with the record's own Allan variance sets the shift test's long-tau variance where the
+/// record's AR is too short to (a slow Gauss-Markov the model has, a weak random walk it lacks:
+/// neither is a step, and both wander over the long sums). On an
+/// undithered lattice a one-level change is rounding (w.lattice).
+std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& x,
+                               const std::vector<double>& modelAvar, int maxPasses = 8) {
+  auto steps = levelSteps(x, w.factors, zFromTwoSidedP(kJumpP), w.lattice, maxPasses);
+  if (!steps.empty()) return steps;
+  const double zLimit = normalTwoSidedCritical(kJumpP / double(x.size()));
+  std::vector<double> r = x;
+  for (int pass = 0; pass < maxPasses; ++pass) {
+    const auto s = levelShift(r, kShiftOrder, zLimit, w.factors, modelAvar);
+    if (!s || !(std::fabs(s->size) > 1.5 * w.lattice)) break;
+    if (steps.empty()) steps.assign(x.size(), 0.0);
+    for (std::size_t k = s->at; k < x.size(); ++k) steps[k] += s->size, r[k] -= s->size;
+  }
+  return steps;
+}
+
+/// w.steps, w.jumpFreeL and w.explainsJumps for the series x (the record without the accepted
+/// signals). A level jump (a bias step, a telegraph switch, a disturbance of the test stand) is no
+/// effect of the catalogue, and every candidate's Allan shape can absorb part of its excess: a
+/// single step has exactly a random walk's Allan variance, a telegraph's switches make a ramp's
+/// slope. So on a record with jumps a candidate is credited only with what it explains on the
+/// record with the jumps taken out as well (trialRound) -- unless its own signal takes them out.
 void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeL.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
-  const double zLimit = zFromTwoSidedP(kJumpP);
-  const auto steps = levelSteps(x, w.factors, zLimit, w.lattice);
+  const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
+  w.steps = stepSeries(w, x, modelAvar);
+  const auto& steps = w.steps;
   if (steps.empty()) return;
   std::vector<double> r(x.size());
   for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - steps[k];
@@ -95,7 +124,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
     const auto& sig = w.cands[i].signal;
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
-    w.explainsJumps[i] = levelSteps(r, w.factors, zLimit, w.lattice, 1).empty();
+    w.explainsJumps[i] = stepSeries(w, r, modelAvar, 1).empty();
   }
 }
 
@@ -227,6 +256,15 @@ std::optional<FailRange> unexplainedRange(const ChannelWork& w, const std::vecto
   return best;
 }
 
+/// The level steps (markJumps) the record without the accepted signals still shows, as times and
+/// sizes: no effect of the catalogue makes them.
+std::vector<LevelStep> unexplainedSteps(const ChannelWork& w) {
+  std::vector<LevelStep> out;
+  for (std::size_t k = 1; k < w.steps.size(); ++k)
+    if (w.steps[k] != w.steps[k - 1]) out.push_back({double(k) / w.rate, w.steps[k] - w.steps[k - 1]});
+  return out;
+}
+
 }  // namespace
 
 double criterionPenalty(std::size_t points) { return std::log(double(std::max<std::size_t>(points, 2))); }
@@ -293,6 +331,7 @@ void selectFindings(ChannelWork& w, double threshold) {
   d.noiseScale = w.sol.s;
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
+  d.unexplainedSteps = unexplainedSteps(w);
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
   w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }

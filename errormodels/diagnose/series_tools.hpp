@@ -25,6 +25,8 @@ BlockMeans blockMeans(const std::vector<double>& y, double dt, std::size_t block
 
 /// Median (the upper one for an even count); 0 for an empty vector.
 double median(std::vector<double> v);
+/// Robust standard deviation 1.4826 MAD (the sd for Gaussian values; spikes and steps barely move it).
+double robustSd(const std::vector<double>& v);
 /// Least squares y ~ X beta; returns the residual sum of squares.
 double leastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, Eigen::VectorXd& beta);
 

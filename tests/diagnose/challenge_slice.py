@@ -18,6 +18,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "diagnose_challenge")
 import challenge  # noqa: E402
 
 RECORDS = 16
+OOC_RECORDS = 12  # one out-of-catalogue effect each (telegraph or bias step), hidden channel only
 
 
 def binom_cdf(k, n, p):
@@ -55,7 +56,18 @@ def main():
     top_min = min_required(ge3[1], 0.90)
     print(f"diagnose errors {errors}; false alarms {fa}/{clean} (allowed <= {fa_max}); "
           f"top-1 at >= 3x {ge3[0]}/{ge3[1]} (required >= {top_min})")
+    # Out of catalogue (a bias step, a telegraph): named as its physical equivalent or left
+    # unexplained >= 80 % (issue 12). Other draws than the benchmark's (seed 12, pool "ooc").
+    o = SimpleNamespace(**{**vars(a), "work": os.path.join(work, "ooc"), "effects": 1, "pool": "ooc",
+                           "hidden_only": True})
+    os.makedirs(o.work, exist_ok=True)
+    ooc_rows = [challenge.run_one(o, i) for i in range(OOC_RECORDS)]
+    errors += sum("error" in r.get("result", {}) for r in ooc_rows)
+    ooc, ooc_n = challenge.score(ooc_rows)["ooc"]
+    ooc_min = min_required(ooc_n, 0.80)
+    print(f"out of catalogue as equivalent or unexplained {ooc}/{ooc_n} (required >= {ooc_min})")
     ok = errors == 0 and fa <= fa_max and ge3[0] >= top_min and clean >= 60 and ge3[1] >= 3
+    ok = ok and ooc >= ooc_min and ooc_n == OOC_RECORDS
     sys.exit(0 if ok else 1)
 
 

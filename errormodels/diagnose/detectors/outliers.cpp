@@ -36,10 +36,9 @@ AdditiveOutliers additiveOutliers(const std::vector<double>& y, double& sigma) {
     for (std::size_t i = 1; i <= kOrder; ++i) v += ar.a[i] * (y[k - i] - ar.mean);
     e[k] = v;
   }
-  std::vector<double> absd(e.begin() + kOrder, e.end());
-  const double med = median(absd);
-  for (double& v : absd) v = std::fabs(v - med);
-  sigma = 1.482602218505602 * median(absd);
+  const std::vector<double> tail(e.begin() + kOrder, e.end());
+  const double med = median(tail);
+  sigma = robustSd(tail);
   double norm2 = 0;
   for (std::size_t i = 0; i <= kOrder; ++i) norm2 += ar.a[i] * ar.a[i];
   AdditiveOutliers out;

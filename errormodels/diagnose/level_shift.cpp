@@ -1,0 +1,102 @@
+// Level-shift test in the one-step prediction residuals (level_shift.hpp).
+#include "errormodels/diagnose/level_shift.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "errormodels/diagnose/series_stats.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
+#include "errormodels/fit/ar_fit.hpp"
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+/// rho >= 1: the largest ratio of the residuals' long-run variance at block size m (robust, from
+/// the increments of their block means, as an Allan variance) to their one-sample variance.
+double longRunRatio(const std::vector<double>& e, double sigma) {
+  double rho = 1.0;
+  for (std::size_t m = 2; e.size() / m >= 33; m *= 2) {
+    std::vector<double> mean(e.size() / m, 0.0), inc(mean.size() - 1);
+    for (std::size_t j = 0; j < mean.size(); ++j) {
+      for (std::size_t k = j * m; k < (j + 1) * m; ++k) mean[j] += e[k];
+      mean[j] /= double(m);
+    }
+    for (std::size_t j = 0; j + 1 < mean.size(); ++j) inc[j] = mean[j + 1] - mean[j];
+    const double s = robustSd(inc);
+    rho = std::max(rho, double(m) * s * s / (2.0 * sigma * sigma));
+  }
+  return rho;
+}
+
+}  // namespace
+
+std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
+                                     const std::vector<std::size_t>& factors,
+                                     const std::vector<double>& modelAvar) {
+  if (y.size() < 20 * (order + 2)) return std::nullopt;
+  const auto ar = fit::burg(y, order);
+  const std::size_t p = order, M = y.size() - p;
+  std::vector<double> e(M);
+  double eMean = 0;
+  for (std::size_t t = 0; t < M; ++t) {
+    double v = 0;
+    for (std::size_t i = 0; i <= p; ++i) v += ar.a[i] * (y[t + p - i] - ar.mean);
+    e[t] = v, eMean += v;
+  }
+  eMean /= double(M);
+  for (double& v : e) v -= eMean;
+  double sigma = robustSd(e);
+  if (!(sigma > 0)) return std::nullopt;
+  const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
+  auto ratioTo = [&arAvar](const std::vector<double>& avar, double rho) {
+    for (std::size_t k = 0; k < arAvar.size() && k < avar.size(); ++k)
+      if (arAvar[k] > 0) rho = std::max(rho, avar[k] / arAvar[k]);
+    return rho;
+  };
+  double rho = longRunRatio(e, sigma);
+  if (modelAvar.size() == factors.size()) rho = ratioTo(modelAvar, rho);
+  std::vector<double> c(p + 1), c2(p + 2, 0.0), c1(p + 2, 0.0);  // c_j; prefix sums of c_j^2, c_j
+  double a2 = 0;
+  for (std::size_t j = 0; j <= p; ++j) {
+    c[j] = (j ? c[j - 1] : 0.0) + ar.a[j];
+    a2 += ar.a[j] * ar.a[j];
+  }
+  for (std::size_t j = 0; j < p; ++j) c2[j + 1] = c2[j] + c[j] * c[j], c1[j + 1] = c1[j] + c[j];
+  const double A1 = c[p];
+  std::vector<double> tail(M + 1, 0.0);  // sum of e from t on
+  for (std::size_t t = M; t-- > 0;) tail[t] = tail[t + 1] + e[t];
+  LevelShift best;
+  double bestZ = -1;
+  for (std::size_t k = p + 1; k + p + 1 < M; ++k) {
+    double s = A1 * tail[k + p];
+    for (std::size_t j = 0; j < p; ++j) s += c[j] * e[k + j];
+    const double L = double(M - k), longPart = L - double(p);
+    const double sumSq = c2[p] + A1 * A1 * longPart, sum = c1[p] + A1 * longPart;
+    const double norm2 = sumSq - sum * sum / double(M);  // |u_k| after the mean is taken out
+    if (!(norm2 > 0)) continue;
+    const double z = std::fabs(s) / (sigma * std::sqrt(rho * norm2));
+    if (z > bestZ) bestZ = z, best.at = k + p, best.size = s / norm2;
+  }
+  if (!(bestZ > zLimit)) return std::nullopt;
+  // the record's own Allan variance without the shift (a scalar rho: the argmax stays)
+  std::vector<double> rest = y;
+  for (std::size_t k = best.at; k < rest.size(); ++k) rest[k] -= best.size;
+  Setup setup;
+  setup.rate = 1.0;  // an Allan variance of rates does not depend on the sample interval
+  setup.n = rest.size();
+  setup.factors = factors;
+  const double rhoAll = ratioTo(allanVariance(rest, setup), rho);
+  bestZ *= std::sqrt(rho / rhoAll);
+  best.rho = rho = rhoAll;
+  if (!(bestZ > zLimit)) return std::nullopt;
+  best.z = bestZ;
+  const std::size_t k = best.at - p;
+  double spike = 0;
+  for (std::size_t j = 0; j <= p && k + j < M; ++j) spike += ar.a[j] * e[k + j];
+  best.zSpike = std::fabs(spike) / (sigma * std::sqrt(rho * a2));
+  if (!(best.z > best.zSpike)) return std::nullopt;
+  return best;
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

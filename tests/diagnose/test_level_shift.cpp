@@ -1,0 +1,116 @@
+// The level-shift test of the one-step prediction residuals (level_shift.hpp) against closed forms:
+// white noise, where the whitening AR is ~0 and the step's estimate is a difference of two means;
+// a random walk, where it is ~differencing and the step is one large increment; a spike, which is
+// an additive outlier and no shift; and Gaussian records without a step at the test's level.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "errormodels/diagnose/level_shift.hpp"
+#include "errormodels/stats/special.hpp"
+
+using sinsim::errormodels::diagnose::detail::levelShift;
+
+namespace {
+
+constexpr std::size_t kOrder = 10;
+constexpr std::size_t kN = 20000;
+// 2 N Phi(-z) = 1e-3: the scan of every sample at the 0.999 level (Bonferroni), as selection.cpp
+const double kLimit = sinsim::errormodels::normalTwoSidedCritical(1e-3 / double(kN));
+
+// the diagnosis' half-octave tau grid up to N/8 (series_stats.hpp)
+const std::vector<std::size_t> kFactors = {1, 2, 3, 4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128, 181, 256, 362,
+                                           512, 724, 1024, 1448, 2048};
+
+std::vector<double> white(std::mt19937_64& g, double sd) {
+  std::normal_distribution<double> n(0.0, sd);
+  std::vector<double> y(kN);
+  for (auto& v : y) v = n(g);
+  return y;
+}
+
+}  // namespace
+
+// White noise of sd 1 and a step h = 0.2 at k0 = 12000: with A(q) = 1 the least-squares step
+// against the unknown mean is the difference of the means after and before, of standard error
+// sqrt(1/k0 + 1/(N - k0)) = 0.0144, so lambda_L = z sqrt(rho) = h / 0.0144 = 13.9 (the fitted
+// AR(10) and the robust scale move it by a few %). Over 40 seeds: the mean lambda_L within 10 % of
+// 13.9 (its spread across seeds is ~1: 4 sd of the mean is 0.6), each size within 4 standard
+// errors (0.058) of h, each located within 1000 samples (the change point's error is
+// O(sd^2 / h^2) = 25 samples, with a heavy tail where the statistic is flat near its maximum);
+// the inflation rho -- the largest of ~9 robust long-run variance ratios of white residuals (each
+// with ~40 % sd from 33-600 blocks) and of the record's Allan variance without the step to the
+// AR's (~1 +- 20 % at the longest tau) -- is a loss of power: <= 3 here, 1.6 on average at most.
+TEST_CASE("a bias step in white noise: located, sized and as significant as the closed form",
+          "[diagnose][level_shift]") {
+  std::mt19937_64 g(11);
+  const double h = 0.2, se = std::sqrt(1.0 / 12000.0 + 1.0 / 8000.0);
+  double zSum = 0, rhoSum = 0;
+  for (int seed = 0; seed < 40; ++seed) {
+    auto y = white(g, 1.0);
+    for (std::size_t k = 12000; k < kN; ++k) y[k] += h;
+    const auto s = levelShift(y, kOrder, kLimit, kFactors);
+    REQUIRE(s);
+    CHECK(std::fabs(double(s->at) - 12000.0) < 1000.0);
+    CHECK(std::fabs(s->size - h) < 4 * se);
+    CHECK(s->rho >= 1.0);
+    CHECK(s->rho <= 3.0);
+    zSum += s->z * std::sqrt(s->rho);
+    rhoSum += s->rho;
+  }
+  CHECK(zSum / 40 == Approx(h / se).epsilon(0.10));
+  CHECK(rhoSum / 40 < 1.6);
+}
+
+// A random walk (increments of sd 1) plus white noise of sd 0.1: the whitening AR is close to
+// differencing, so the step is one increment of size h = 12 against the innovations' sd ~1.0
+// (lambda_L ~ 12 before the inflation rho <= 3, above the limit 5.45): found, at the sample, and
+// sized to within 4 innovation sd.
+TEST_CASE("a bias step in a random walk is one large increment", "[diagnose][level_shift]") {
+  std::mt19937_64 g(12);
+  for (int seed = 0; seed < 10; ++seed) {
+    auto y = white(g, 0.1);
+    const auto inc = white(g, 1.0);
+    double walk = 0;
+    for (std::size_t k = 0; k < kN; ++k) y[k] += (walk += inc[k]) + (k >= 7000 ? 12.0 : 0.0);
+    const auto s = levelShift(y, kOrder, kLimit, kFactors);
+    REQUIRE(s);
+    CHECK(std::fabs(double(s->at) - 7000.0) <= 2.0);
+    CHECK(std::fabs(s->size - 12.0) < 4.0);
+  }
+}
+
+// A spike of 20 sd in white noise is an additive outlier: its lambda_A exceeds lambda_L, no shift.
+TEST_CASE("a spike is no level shift", "[diagnose][level_shift]") {
+  std::mt19937_64 g(13);
+  for (int seed = 0; seed < 10; ++seed) {
+    auto y = white(g, 1.0);
+    y[9000] += 20.0;
+    CHECK_FALSE(levelShift(y, kOrder, kLimit, kFactors));
+  }
+}
+
+// Gaussian records without a step (white; AR(2) a = [-1.2, 0.4]; a random walk under white noise)
+// at the 0.999 level per record: 50 seeds each, expected <= 0.05 flagged per family (the scan is
+// Bonferroni, conservative), so > 1 in one family (P ~ 0.1 %) fails.
+TEST_CASE("Gaussian records without a step show none at the test's level", "[diagnose][level_shift]") {
+  std::mt19937_64 g(14);
+  int flagged[3] = {0, 0, 0};
+  for (int seed = 0; seed < 50; ++seed) {
+    flagged[0] += bool(levelShift(white(g, 1.0), kOrder, kLimit, kFactors));
+    const auto w = white(g, 1.0);
+    std::vector<double> ar(kN, 0.0);
+    for (std::size_t k = 2; k < kN; ++k) ar[k] = 1.2 * ar[k - 1] - 0.4 * ar[k - 2] + w[k];
+    flagged[1] += bool(levelShift(ar, kOrder, kLimit, kFactors));
+    auto rw = white(g, 1.0);
+    const auto inc = white(g, 0.2);
+    double walk = 0;
+    for (std::size_t k = 0; k < kN; ++k) rw[k] += (walk += inc[k]);
+    flagged[2] += bool(levelShift(rw, kOrder, kLimit, kFactors));
+  }
+  CHECK(flagged[0] <= 1);
+  CHECK(flagged[1] <= 1);
+  CHECK(flagged[2] <= 1);
+}
