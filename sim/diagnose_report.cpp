@@ -92,6 +92,7 @@ std::string verdict(const dg::AxisDiagnosis& a, double threshold) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "missing: " : ", ") + f.effect;
+  if (a.unexplained || !a.unexplainedSteps.empty()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
   return s.empty() ? "misfit, no catalogue effect explains it" : s;
 }
 
@@ -224,6 +225,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
     page.plotRow({adevPlot(a, "Allan deviation — " + a.channel), psdPlot(a)});
     page.plotRow({acfPlot(a)});
     page.table(findingsTable(a, d.threshold));
+    for (const std::string& u : dg::unexplainedSentences(a)) page.paragraph("Unexplained: " + u + ".");
     if (imp) {
       const auto& after = imp->after.axis(a.channel);
       Plot p("Before → after — " + a.channel, "averaging time τ [s]", "σ(τ) [" + a.unit + "]");

@@ -215,6 +215,11 @@ nlohmann::json toJsonValue(const Improvement& imp);
 std::string summaryTable(const Diagnosis& d);
 std::string summaryTable(const Improvement& imp);
 
+/// What the channel leaves unexplained, one sentence each (for the terminal and the HTML page):
+/// the τ range the model with its findings still misses, the level steps no finding takes out.
+/// Empty when nothing is left.
+std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a);
+
 /// An effect of a channel ("gx".."az") in model-file syntax, e.g. {type: ramp, slope: 12 deg/h^2}:
 /// the one writer's inline form (errormodels/model_io.hpp: effectYaml) in the channel's units;
 /// "" for an empty spec.

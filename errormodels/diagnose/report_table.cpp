@@ -40,20 +40,31 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   if (head) o << "\n";
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
-  if (const auto& u = a.unexplained)
-    o << "  " << a.channel << " unexplained: ADEV " << num(u->from, 3) << ".." << num(u->to, 3) << " s "
-      << (u->direction > 0 ? "above" : "below") << " the model with its findings (x" << num(u->worstRatio, 3)
-      << "); no candidate of the catalogue lowers the criterion there\n";
-  if (!a.unexplainedSteps.empty()) {
-    o << "  " << a.channel << " unexplained: level step" << (a.unexplainedSteps.size() > 1 ? "s" : "") << " at";
-    for (const auto& st : a.unexplainedSteps)
-      o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
-        << a.unit << ")";
-    o << "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)\n";
-  }
+  for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";
 }
 
 }  // namespace
+
+std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a) {
+  std::vector<std::string> out;
+  if (const auto& u = a.unexplained) {
+    std::ostringstream o;
+    o << "ADEV " << num(u->from, 3) << ".." << num(u->to, 3) << " s " << (u->direction > 0 ? "above" : "below")
+      << " the model with its findings (x" << num(u->worstRatio, 3)
+      << "); no candidate of the catalogue lowers the criterion there";
+    out.push_back(o.str());
+  }
+  if (!a.unexplainedSteps.empty()) {
+    std::ostringstream o;
+    o << "level step" << (a.unexplainedSteps.size() > 1 ? "s" : "") << " at";
+    for (const auto& st : a.unexplainedSteps)
+      o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
+        << a.unit << ")";
+    o << "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)";
+    out.push_back(o.str());
+  }
+  return out;
+}
 
 std::string summaryTable(const Diagnosis& d) {
   std::ostringstream o;

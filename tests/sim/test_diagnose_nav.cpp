@@ -15,6 +15,7 @@
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/model_io.hpp"
 #include "sim/diagnose_nav.hpp"
+#include "sim/diagnose_report.hpp"
 #include "sim/measured.hpp"
 #include "sim/reference.hpp"
 
@@ -162,4 +163,33 @@ TEST_CASE("nav verdict: the same seed gives the same verdict, bit for bit, on 1 
   errormodels::diagnose::Diagnosis empty;
   CHECK(sim::diagnoseJsonWithNav(empty, &one) == sim::diagnoseJsonWithNav(empty, &two));
   CHECK(sim::navVerdictText(one) == sim::navVerdictText(two));
+}
+
+TEST_CASE("diagnose report: what a channel leaves unexplained is on the page, as in the terminal") {
+  namespace dg = errormodels::diagnose;
+  dg::Diagnosis d;
+  d.data = "rec.csv";
+  d.model = "m.yaml";
+  dg::AxisDiagnosis a;
+  a.channel = "gx";
+  a.unit = "deg/s";
+  a.unitFactor = M_PI / 180.0;
+  a.unexplained = dg::FailRange{"adev", 20.0, 400.0, +1, 3.5, 5};
+  a.unexplainedSteps = {{1234.5, 0.01 * M_PI / 180.0}, {2000.0, -0.02 * M_PI / 180.0}};
+  d.axes.push_back(a);
+  const std::vector<std::string> u = dg::unexplainedSentences(a);
+  REQUIRE(u.size() == 2);
+  CHECK(u[0].find("ADEV 20..400 s above") != std::string::npos);
+  // sizes in the channel's display unit: 0.01 deg/s and -0.02 deg/s
+  CHECK(u[1].find("t = 1234 s (+0.01 deg/s)") != std::string::npos);
+  CHECK(u[1].find("(-0.02 deg/s)") != std::string::npos);
+  const std::string html = diagnoseReportHtml(d);
+  for (const std::string& line : u) CHECK(html.find("Unexplained: " + line) != std::string::npos);
+  CHECK(html.find("1234 s (+0.01 deg/s)") != std::string::npos);
+  CHECK(html.find("gx — unexplained") != std::string::npos);  // the channel's heading says so
+  // A channel with nothing left: no such paragraph.
+  d.axes[0].unexplained.reset();
+  d.axes[0].unexplainedSteps.clear();
+  CHECK(dg::unexplainedSentences(d.axes[0]).empty());
+  CHECK(diagnoseReportHtml(d).find("Unexplained: ") == std::string::npos);
 }
