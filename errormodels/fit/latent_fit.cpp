@@ -12,6 +12,7 @@
 #include "common/progress.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/fit/golden_section.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/fit/whittle_selection.hpp"
 #include "errormodels/stats/allan.hpp"
@@ -146,21 +147,8 @@ SetFit solveFixedT(const Problem& p, const LatentTermSet& s, const std::vector<d
 /// Golden-section minimum of chi2 over log T_k in [lo, hi] (T_other fixed).
 SetFit goldenT(const Problem& p, const LatentTermSet& s, std::vector<double> T, std::size_t k,
                double lo, double hi) {
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = std::log(lo), b = std::log(hi);
   auto at = [&](double u) { T[k] = std::exp(u); return solveFixedT(p, s, T); };
-  double c = b - g * (b - a), d = a + g * (b - a);
-  SetFit fc = at(c), fd = at(d);
-  for (int it = 0; it < 28; ++it) {
-    if (fc.chi2 <= fd.chi2) {
-      b = d, d = c, fd = fc;
-      c = b - g * (b - a), fc = at(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + g * (b - a), fd = at(d);
-    }
-  }
-  return fc.chi2 <= fd.chi2 ? fc : fd;
+  return goldenSectionLog(lo, hi, 28, at, [](const SetFit& f) { return f.chi2; });
 }
 
 SetFit fitSet(const Problem& p, const LatentTermSet& s) {

@@ -9,6 +9,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "errormodels/fit/golden_section.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -120,22 +121,9 @@ TauFit evaluate(const WhittleBins& b, std::size_t nb, const LatentTermSet& s, co
 TauFit goldenT(const WhittleBins& b, std::size_t nb, const LatentTermSet& s, TauFit best, std::size_t k,
                double lo, double hi) {
   if (!(hi > lo)) return best;
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = std::log(lo), z = std::log(hi);
   std::vector<double> T = best.T;
   auto at = [&](double u) { T[k] = std::exp(u); return evaluate(b, nb, s, T, best.profile.theta); };
-  double c = z - g * (z - a), d = a + g * (z - a);
-  TauFit fc = at(c), fd = at(d);
-  for (int it = 0; it < 18; ++it) {
-    if (fc.profile.m2ll <= fd.profile.m2ll) {
-      z = d, d = c, fd = fc;
-      c = z - g * (z - a), fc = at(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + g * (z - a), fd = at(d);
-    }
-  }
-  const TauFit& m = fc.profile.m2ll <= fd.profile.m2ll ? fc : fd;
+  const TauFit m = goldenSectionLog(lo, hi, 18, at, [](const TauFit& f) { return f.profile.m2ll; });
   return m.profile.m2ll < best.profile.m2ll ? m : best;
 }
 
