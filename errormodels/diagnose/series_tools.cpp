@@ -17,7 +17,7 @@ double robustSd(const std::vector<double>& v) {
   const double med = median(v);
   std::vector<double> dev(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) dev[i] = std::fabs(v[i] - med);
-  return 1.482602218505602 * median(dev);
+  return kSdPerMad * median(dev);
 }
 
 double leastSquares(const Eigen::MatrixXd& X, const Eigen::VectorXd& y, Eigen::VectorXd& beta) {

@@ -25,6 +25,8 @@ BlockMeans blockMeans(const std::vector<double>& y, double dt, std::size_t block
 
 /// Median (the upper one for an even count); 0 for an empty vector.
 double median(std::vector<double> v);
+/// The Gaussian sd per median absolute deviation, 1 / Φ⁻¹(3/4).
+constexpr double kSdPerMad = 1.482602218505602;
 /// Robust standard deviation 1.4826 MAD (the sd for Gaussian values; spikes and steps barely move it).
 double robustSd(const std::vector<double>& v);
 /// Least squares y ~ X beta; returns the residual sum of squares.

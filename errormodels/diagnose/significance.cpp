@@ -52,7 +52,7 @@ std::vector<Increments> incrementScan(const std::vector<double>& P, const std::v
     in.median = median(in.d);
     std::vector<double> dev(in.d.size());
     for (std::size_t j = 0; j < in.d.size(); ++j) dev[j] = std::fabs(in.d[j] - in.median);
-    in.scale = 1.482602218505602 * median(dev);
+    in.scale = kSdPerMad * median(dev);  // robustSd, with the deviations kept for zMax
     if (in.scale > 0) in.zMax = *std::max_element(dev.begin(), dev.end()) / in.scale;
     out.push_back(std::move(in));
   }
