@@ -16,24 +16,41 @@ void symmetrize(Eigen::MatrixXd& P) {
     for (Eigen::Index i = j + 1; i < n; ++i) P(i, j) = P(j, i) = 0.5 * (P(i, j) + P(j, i));
 }
 
+// W entries of out.col(j) from row r on: each sum over c in ascending order, from +0 (or from the
+// entry itself when accumulating), kept in registers across the inner dimension.
+template <int W>
+inline void transposedBlock(const double* __restrict U, Eigen::Index rows, const double* v,
+                            Eigen::Index vStride, Eigen::Index inner, Eigen::Index r,
+                            double* __restrict o, bool accumulate) {
+  double s[W];
+  for (int q = 0; q < W; ++q) s[q] = accumulate ? o[r + q] : 0.0;
+  for (Eigen::Index c = 0; c < inner; ++c) {
+    const double vc = v[c * vStride];
+    const double* __restrict u = U + c * rows + r;
+    for (int q = 0; q < W; ++q) s[q] += u[q] * vc;
+  }
+  for (int q = 0; q < W; ++q) o[r + q] = s[q];
+}
+
 // out ← Σ_c U.col(c) V(j, c) per column j of out (out = U Vᵀ, or += with accumulate): the
 // update's products are thin (m columns of U against a few dozen rows), so each output column is
-// a handful of axpys down contiguous columns — no packing, no blocking.
+// summed down U's contiguous columns — no packing, no blocking — eight, four or two entries at a time
+// in registers (the same additions in the same order as one axpy per column of U, without storing
+// and reloading the column of out between them).
 SINSIM_WIDE_KERNEL
 void multiplyTransposed(const double* __restrict U, Eigen::Index rows,
                         const Eigen::Ref<const Eigen::MatrixXd>& V,
                         Eigen::Index cols, double* __restrict out, Eigen::Index ld,
                         bool accumulate) {
-  const Eigen::Index inner = V.cols();
+  const Eigen::Index inner = V.cols(), vStride = V.outerStride();
   for (Eigen::Index j = 0; j < cols; ++j) {
     double* __restrict o = out + j * ld;
-    if (!accumulate)
-      for (Eigen::Index i = 0; i < rows; ++i) o[i] = 0.0;
-    for (Eigen::Index c = 0; c < inner; ++c) {
-      const double v = V(j, c);
-      const double* __restrict u = U + c * rows;
-      for (Eigen::Index i = 0; i < rows; ++i) o[i] += u[i] * v;
-    }
+    const double* v = V.data() + j;
+    Eigen::Index r = 0;
+    for (; r + 8 <= rows; r += 8) transposedBlock<8>(U, rows, v, vStride, inner, r, o, accumulate);
+    for (; r + 4 <= rows; r += 4) transposedBlock<4>(U, rows, v, vStride, inner, r, o, accumulate);
+    for (; r + 2 <= rows; r += 2) transposedBlock<2>(U, rows, v, vStride, inner, r, o, accumulate);
+    for (; r < rows; ++r) transposedBlock<1>(U, rows, v, vStride, inner, r, o, accumulate);
   }
 }
 
