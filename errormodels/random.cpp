@@ -8,8 +8,7 @@
 // made at once and their fast-path candidates worked out in one vector pass (ziggurat.cpp); the
 // normals are then runs of accepted candidates copied as they are, with the sequential algorithm
 // taking over at each rejected word — the same words for the same normals as one at a time.
-// 5.7 ns per normal against 10.1 ns for the former Box-Muller with SIMD log/sin/cos (bench_errormodels
-// BM_NormalStream, CPU time): Philox4x64-10 itself is ~2.5 ns of it.
+// Speed: bench_errormodels BM_NormalStream (docs/monte-carlo.md).
 #include "errormodels/random.hpp"
 
 #include <algorithm>
