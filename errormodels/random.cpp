@@ -69,11 +69,13 @@ void NormalStream::refill() {
   std::uint64_t used = 0;
   int n = 0;
   for (;;) {
-    const int run = used < std::uint64_t(kWords) ? std::min(acceptedRun(ok, int(used)), kBlock - n) : 0;
-    std::memcpy(buf_.data() + n, cand + used, sizeof(double) * std::size_t(run));
-    n += run;
-    used += std::uint64_t(run);
-    if (n == kBlock) break;
+    if (used < std::uint64_t(kWords)) {
+      const int run = std::min(acceptedRun(ok, int(used)), kBlock - n);
+      std::memcpy(buf_.data() + n, cand + used, sizeof(double) * std::size_t(run));
+      n += run;
+      used += std::uint64_t(run);
+      if (n == kBlock) break;
+    }
     // Word `used` was rejected (or lies beyond the candidates): the sequential algorithm.
     for (;;) {
       const std::uint64_t u = word(used++);

@@ -73,8 +73,10 @@ __attribute__((target("avx2"))) void candidatesAvx2(const std::uint64_t* w, int 
 
 // GCC 12's avx512fintrin.h builds its set1/cast results from an "undefined" vector, which
 // -Wmaybe-uninitialized reports at every use; nothing here reads an undefined lane.
+#if !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 __attribute__((target("avx512f"))) void candidatesAvx512(const std::uint64_t* w, int n,
                                                          double* cand, std::uint64_t* ok) {
   const double* x = zigguratTables().x;
@@ -95,7 +97,9 @@ __attribute__((target("avx512f"))) void candidatesAvx512(const std::uint64_t* w,
     ok[k / 64] |= std::uint64_t(m) << (k % 64);
   }
 }
+#if !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 #endif
 
 using Kernel = void (*)(const std::uint64_t*, int, double*, std::uint64_t*);
