@@ -11,6 +11,19 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+/// The current model (the base at its fitted level with the accepted noises) as a conditional
+/// test sees it.
+struct ModelNow {
+  const std::vector<double>& avar;  // AVAR on the tau grid [SI^2]
+  /// Variance of a record's least-squares trend (trendSlope) under it [SI^2/s^2], and the degrees
+  /// of freedom of that estimate (the Monte Carlo realisations it is the mean square of).
+  double trendVar = 0, trendDof = 0;
+  /// The trend variance [SI^2/s^2] of the current model with the Gaussian noise (a candidate
+  /// without a signal, or none) that best fits a series of AVAR `avar` on the tau grid [SI^2]:
+  /// what a noise the record shows but the model lacks adds to a realised trend.
+  std::function<double(const std::vector<double>& avar)> trendVarWith;
+};
+
 struct Candidate {
   std::string effect;          // catalogue type
   bool freeSize = true;        // theta fitted >= 0 (g per unit theta) or fixed (g absolute AVAR)
@@ -19,8 +32,9 @@ struct Candidate {
   std::size_t parameters = 1;
   std::vector<double> g;       // AVAR contribution at each tau [SI^2]
   double zSpecial = 0.0;       // its own test, Gaussian-equivalent
-  /// A test that depends on the current model's AVAR at the tau grid (warm-up), or empty.
-  std::function<double(const std::vector<double>& modelAvar)> zConditional;
+  /// A test of the candidate given the current model (the ramp's trend against the scatter the
+  /// model predicts for it), Gaussian-equivalent, or empty.
+  std::function<double(const ModelNow& model)> zConditional;
   std::string evidence;
   /// The fitted deterministic signal [SI] per sample (ramp, warm-up, sinusoid, temperature,
   /// outliers): removed from the record before the base AR is refitted. Empty otherwise.

@@ -106,6 +106,8 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
+  for (const auto& r : real) w.trendVar += r.trend * r.trend / double(real.size());
+  w.trendDof = double(real.size());
   if (auto a = baseAr(model, c, record.rate_hz)) {
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
     w.arOrder = a->size() - 1;

@@ -29,7 +29,8 @@
 //   drop      selection by trial: each candidate is added to the model (the level s and every
 //             free size refitted) and the fall of the penalised criterion
 //               chi2 + ln(points) x parameters - z^2 of the members' own tests
-//             (lattice, PSD line, one-sign increments, first step, isolated samples) is its drop.
+//             (lattice, PSD line, one-sign increments or the trend given the model, first step,
+//             isolated samples) is its drop.
 //   score     sqrt(max(0, drop)), capped at 40 (Gaussian-equivalent).
 //   findings  greedy: the largest drop is accepted when its score >= threshold (calibrated on
 //             null channels, docs/diagnose.md), the others are tried again given it, and so on;

@@ -30,6 +30,9 @@ struct ChannelWork {
   /// (selection.cpp): the AR order (0: no AR base), the accepted signals' sum and the closed-form
   /// AVAR of the AR refitted on the record without them.
   std::size_t arOrder = 0;
+  /// Mean square of the realisations' least-squares trends (the model's trend variance at level
+  /// s = 1) [SI^2/s^2] and their number.
+  double trendVar = 0, trendDof = 0;
   std::vector<double> removed, baseAvar;
   /// On a record with level jumps (levelSteps, significance.hpp): ln AVAR of the record without
   /// the accepted signals and without its steps, and per candidate whether its own signal takes

@@ -27,11 +27,37 @@ struct Trials {
 };
 
 /// The candidate's own test (lattice, PSD line, one-sign increments, first step, largest
-/// residual) as a chi-square(1) term of the criterion: z^2 of its Gaussian-equivalent z.
-double ownEvidence(const Candidate& c, const std::vector<double>& currentAvar) {
+/// residual, the trend given the model) as a chi-square(1) term of the criterion: z^2 of its
+/// Gaussian-equivalent z.
+double ownEvidence(const Candidate& c, const ModelNow& now) {
   double z = c.zSpecial;
-  if (c.zConditional) z = std::max(z, c.zConditional(currentAvar));
+  if (c.zConditional) z = std::max(z, c.zConditional(now));
   return z * z;
+}
+
+/// Variance of a record's least-squares trend [SI^2/s^2] that a noise of AVAR g on the tau grid
+/// [s] makes over a record of T [s]: 8 g(T/2) / T^2, the variance of the half-record means'
+/// difference over (T/2)^2, with g carried from the last two grid points (N/8 at most) to T/2
+/// along their log-log slope (clamped to [-1, 2], white to ramp-like). It is the trend variance
+/// of white noise times 4/3 and of a random walk times 10/9 (least squares: 12 s^2/(N T^2) and
+/// 6 K^2/(5 T)): on the high side, so an accepted noise never makes a trend look significant.
+double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T) {
+  const std::size_t K = g.size();
+  if (K == 0 || !(g[K - 1] > 0)) return 0.0;
+  double slope = 1.0;
+  if (K >= 2 && g[K - 2] > 0)
+    slope = std::clamp(std::log(g[K - 1] / g[K - 2]) / std::log(tau[K - 1] / tau[K - 2]), -1.0, 2.0);
+  return 8.0 * g[K - 1] * std::pow(0.5 * T / tau[K - 1], slope) / (T * T);
+}
+
+/// The trend variance of the current model: the realisations' (w.trendVar) at the fitted level
+/// plus each accepted noise's (trendVarianceOf).
+double currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
+  const double T = double(w.y->size()) / w.rate;
+  double v = sol.s * w.trendVar;
+  for (std::size_t j = 0; j < set.size(); ++j)
+    v += (set[j]->freeSize ? sol.theta[j] : 1.0) * trendVarianceOf(set[j]->g, w.d.adev.x, T);
+  return v;
 }
 
 /// Closed-form AVAR on the tau grid of the AR base re-estimated (Burg, its order) on the record
@@ -154,6 +180,28 @@ void remeasure(ChannelWork& w, Trials& t) {
   markJumps(w, x);
 }
 
+/// ModelNow::trendVarWith: the current set refitted to the series of AVAR `avar`, alone and with
+/// each Gaussian candidate (no signal) whose effect is not taken, the best by the penalised
+/// criterion; its trend variance.
+double trendVarWithNoise(const ChannelWork& w, const std::vector<const Candidate*>& set,
+                         const std::set<std::string>& taken, double penalty, const std::vector<double>& avar) {
+  AllanProblem p = w.prob;
+  for (std::size_t k = 0; k < p.L.size() && k < avar.size(); ++k) p.L[k] = std::log(std::max(avar[k], 1e-300));
+  auto sol = solveAllan(p, set, w.sol.theta);
+  double bestCrit = sol.chi2, bestVar = currentTrendVar(w, set, sol);
+  auto start = w.sol.theta;
+  start.push_back(-1.0);
+  for (const auto& c : w.cands) {
+    if (!c.signal.empty() || taken.count(c.effect)) continue;
+    auto trial = set;
+    trial.push_back(&c);
+    const auto s = solveAllan(p, trial, start);
+    const double crit = s.chi2 + penalty * double(c.parameters);
+    if (crit < bestCrit) bestCrit = crit, bestVar = currentTrendVar(w, trial, s);
+  }
+  return bestVar;
+}
+
 /// Trial of every candidate whose effect is not accepted yet: added to the current set, the
 /// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
 /// parameters. On a record with jumps, the smaller of that drop and the same on the record without
@@ -165,6 +213,8 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   const auto set = allanSet(w);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
+  ModelNow now{currentAvar, currentTrendVar(w, set, w.sol), w.trendDof, nullptr};
+  now.trendVarWith = [&](const std::vector<double>& avar) { return trendVarWithNoise(w, set, taken, penalty, avar); };
   AllanProblem jumpFree = w.prob;
   double chi2JumpFree = 0;
   if (!w.jumpFreeL.empty()) {
@@ -185,7 +235,7 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
       auto refitted = solveAllan(refitProblem, trial, start);
       if (refitted.chi2 < t.sol[i].chi2) t.sol[i] = std::move(refitted), t.refit[i] = 1;
     }
-    const double own = ownEvidence(w.cands[i], currentAvar) - penalty * double(w.cands[i].parameters);
+    const double own = ownEvidence(w.cands[i], now) - penalty * double(w.cands[i].parameters);
     t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + own;
     if (!w.jumpFreeL.empty() && !w.explainsJumps[i]) {
       AllanProblem p = t.refit[i] ? refitProblem : jumpFree;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -115,6 +116,7 @@ SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
     out.psd.push_back(sum / double(bins.size()));
   }
   out.acf = acfFromWelch(p.psd, s);
+  out.trend = trendSlope(y, 1.0 / s.rate);
   return out;
 }
 

@@ -24,6 +24,7 @@ struct SeriesStats {
   std::vector<double> avar;  // per factor [SI^2]
   std::vector<double> psd;   // per band (mean of its bins) [SI^2/Hz]
   std::vector<double> acf;   // normalised, lags 0..acfLags
+  double trend = 0;          // least-squares slope [SI/s] (trendSlope)
 };
 /// The grids for n samples at rate [Hz]; InputError when the PSD segment exceeds the record.
 Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o);

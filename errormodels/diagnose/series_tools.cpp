@@ -41,6 +41,16 @@ BlockMeans blockMeans(const std::vector<double>& y, double dt, std::size_t block
   return out;
 }
 
+double trendSlope(const std::vector<double>& y, double dt) {
+  const std::size_t N = y.size();
+  double st = 0, sy = 0, stt = 0, sty = 0;
+  for (std::size_t k = 0; k < N; ++k) {
+    const double t = (double(k) + 0.5) * dt;
+    st += t, sy += y[k], stt += t * t, sty += t * y[k];
+  }
+  return (double(N) * sty - st * sy) / (double(N) * stt - st * st);
+}
+
 std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m) {
   std::vector<double> out(y.size() / m);
   for (std::size_t j = 0; j < out.size(); ++j) {

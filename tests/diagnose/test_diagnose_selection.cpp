@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/diagnose/significance.hpp"
 #include "errormodels/model_io.hpp"
@@ -194,4 +195,79 @@ TEST_CASE("channels on worker threads give the same diagnosis as one thread", "[
   const auto one = dg::diagnose(r, spec, o1), two = dg::diagnose(r, spec, o2);
   CHECK(one.axes.size() == 6);
   CHECK(dg::toJson(one) == dg::toJson(two));
+}
+
+// The ramp's trend test given the model (detectors/ramp.cpp, ModelNow): after a Gauss-Markov
+// noise (sigma 0.05 deg/s, tau 1 s) is accepted, a ramp of R = 8e-4 deg/s^2 over 300 s at 100 Hz
+// stands against the trend scatter the white base and the GM predict: the GM acts at long tau as
+// white noise of density sqrt(2 sigma^2 tau) = 0.071 deg/s/sqrt(Hz), so the least-squares trend's
+// sd is sqrt(12 (0.01^2 + 0.071^2) / T^3) = 4.8e-5 deg/s^2 (5.5e-5 with the 4/3 margin of
+// trendVarianceOf): t = 14.5, a Gaussian-equivalent z of 6.4 with 16 realisations, beyond the
+// 5.5 threshold in each seed but with probability ~ 0.2 (z scatter +-1). Its Allan excess alone
+// is 1.8x the model's ADEV at the last tau (37.5 s) only, and the one-sign test is weak on a
+// white-like base: without the trend test the ramp was missed in all five seeds. At least 4 of 5
+// required (P(<= 3 of 5) < 0.03 at a per-seed miss rate of 0.2).
+TEST_CASE("a ramp beside a Gauss-Markov noise is found by its trend against the model", "[diagnose][selection]") {
+  const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n";
+  const std::string gm = "    - {type: gauss_markov, sigma: 0.05 deg/s, tau: 1 s}\n";
+  int found = 0;
+  for (std::uint64_t seed : {31, 32, 33, 34, 35}) {
+    const auto r = simulate(base + gm + "    - {type: ramp, slope: 0.0008 deg/s/s}\n", 30000, seed);
+    const auto d = dg::diagnose(r, errorModelFromString(base, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    found += reportedList(d).find("ramp") != std::string::npos;
+  }
+  CHECK(found >= 4);
+}
+
+// The ramp's conditional test against its law, with the model's trend variance given in closed
+// form (least squares on white noise of sd s: Var(slope) = s^2 / sum (t_k - tbar)^2, sum =
+// dt^2 N (N^2 - 1) / 12) and dof so large that the Student-t is Gaussian: on white noise z = |t| is
+// half-normal, P(z > 2.576) = 1 % and P(z > 1) = 31.7 %; with a ramp of 6 trend sd's, z ~ |N(6, 1)|.
+// 200 seeds: beyond 2.576 at most 6 (P(>= 7) = 0.5 % for Binomial(200, 0.01)); beyond 1 within
+// 63.4 +- 21 (3.2 sd of the binomial count); the ramp's mean z within 6 +- 0.3 (4 sd of a mean
+// of 200 unit-variance values). A test that compared the trend with the wrong scatter (the
+// increments' own, a factor sqrt(N/m) off) or took the wrong slope fails one of the three.
+TEST_CASE("the ramp's trend test given the model is Gaussian on white noise", "[diagnose][selection]") {
+  namespace d = dg::detail;
+  constexpr std::size_t N = 4096;
+  const double sd = 0.01 * std::sqrt(kRate) * M_PI / 180;  // [rad/s] of 0.01 deg/s/sqrt(Hz)
+  const double dt = 1.0 / kRate;
+  const double trendSd = sd / std::sqrt(dt * dt * double(N) * (double(N) * double(N) - 1) / 12);
+  const d::Setup setup = d::makeSetup(kRate, N, dg::DiagnoseOptions{});
+  std::vector<double> tau, avar;
+  for (auto m : setup.factors) tau.push_back(double(m) * dt), avar.push_back(sd * sd / double(m));
+  const d::ModelNow now{avar, trendSd * trendSd, 1e12, nullptr};
+  auto zOf = [&](const Record& r, const std::vector<double>& y) {
+    for (const auto& c : d::buildCandidates(r, 0, y, 0.0, tau, setup, {"white"}))
+      if (c.effect == "ramp") return c.zConditional(now);
+    return -1.0;
+  };
+  int over2576 = 0, over1 = 0;
+  double rampMean = 0;
+  for (std::uint64_t seed = 100; seed < 300; ++seed) {
+    auto r = simulate("gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n", N, seed);
+    const double z = zOf(r, r.gyro[0]);
+    over2576 += z > 2.576, over1 += z > 1.0;
+    for (std::size_t k = 0; k < N; ++k) r.gyro[0][k] += 6.0 * trendSd * (double(k) + 0.5) * dt;
+    rampMean += zOf(r, r.gyro[0]) / 200.0;
+  }
+  CHECK(over2576 <= 6);
+  CHECK(over1 >= 43);
+  CHECK(over1 <= 84);
+  CHECK(rampMean == Approx(6.0).margin(0.3));
+}
+
+// On records the model describes exactly (white + GM, the model of the first ramp test) no ramp is
+// reported: the trend's t with 16 realisations passes the 5.5 threshold alone with probability
+// ~ 1e-8, and with the Allan terms (calibrated on null channels) the rate is the threshold's.
+TEST_CASE("the ramp's trend test reports no ramp on null records", "[diagnose][selection]") {
+  const std::string model = "gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n"
+                            "    - {type: gauss_markov, sigma: 0.05 deg/s, tau: 1 s}\n";
+  for (std::uint64_t seed : {41, 42, 43, 44, 45}) {
+    const auto d = dg::diagnose(simulate(model, 30000, seed), errorModelFromString(model, "base.yaml"),
+                                gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    CHECK(reportedList(d).find("ramp") == std::string::npos);
+  }
 }

@@ -9,17 +9,6 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
-/// Least-squares slope of y against t = (k + 0.5) dt [SI/s].
-double trendSlope(const std::vector<double>& y, double dt) {
-  const std::size_t N = y.size();
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  for (std::size_t k = 0; k < N; ++k) {
-    const double t = (double(k) + 0.5) * dt;
-    st += t, sy += y[k], stt += t * t, sty += t * y[k];
-  }
-  return (double(N) * sty - st * sy) / (double(N) * stt - st * st);
-}
-
 /// Constant-slope test: the increments D_j = ybar_{j+1} - ybar_j of window means of m samples
 /// have mean R m dt for a ramp and 0 for any noise with stationary increments (random walk,
 /// flicker, white): t = mean(D) / (sd(D) / sqrt(n)), n - 1 dof (conservative for white noise,
@@ -59,6 +48,21 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   c.g = ctx.shape([](double t) { return t * t / 2.0; });
   double tBest = 0;
   c.zSpecial = oneSignTest(ctx, tBest);
+  // Conditional test: the record's trend against the scatter of a least-squares trend under the
+  // current model (its realisations' trends and the accepted noises') with the Gaussian noise that
+  // best fits the record without its trend (ModelNow::trendVarWith): a realised random walk has a
+  // trend of variance 6 K^2 / (5 T), and a walk the model lacks must not pass for a ramp. The
+  // one-sign test above sees a ramp only against the increments' own scatter (white noise's
+  // increments are negatively correlated, so it is weak there: a 1.5x ramp on a white base gives
+  // t ~ 1); this one weighs the trend by what the model predicts. Student's t with the
+  // realisations as dof.
+  std::vector<double> rest(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c.signal[k];
+  c.zConditional = [slope, detrended = allanVariance(rest, ctx.setup)](const ModelNow& m) {
+    const double var = m.trendVarWith ? m.trendVarWith(detrended) : m.trendVar;
+    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
+    return zFromStudentT(std::fabs(slope) / std::sqrt(var), m.trendDof);
+  };
   c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
   // The size written is the least-squares slope: the realised trend of this record, which the
