@@ -495,9 +495,17 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
     if (std::isfinite(c.whittleScore)) bestWhittle = std::min(bestWhittle, c.whittleScore);
   std::vector<bool> drift(cands.size(), false);
   std::vector<std::size_t> order;
+  // Quantization is a sample-level term: averaged over a block it is (e_end - e_start) / L, far
+  // below the white noise. Where no periodogram bin above the blocks is in the fitted range
+  // (B >= 2 m_1: the Allan range starts at the blocks' scale, as on real accelerometers whose
+  // short-tau features the start scan skips), the blocks alone would read it as a block-scale
+  // MA(1); its presence then stays the Whittle's decision.
+  const bool seesQuantization = 2.0 * kPi / double(B) < wMax;
+  const bool whittleQuantization = cands.front().terms.quantization;
   for (std::size_t i = 0; i < cands.size(); ++i) {
     auto& c = cands[i];
     if (!(c.whittleScore - bestWhittle <= kBlockScoredRange)) continue;
+    if (!seesQuantization && c.terms.quantization != whittleQuantization) continue;
     const BlockSetFit f = blockFitSet(means, &bins, wMax, c.terms, c.whittleModel, p.minT, tHi);
     if (!f.valid) continue;
     // S or S + drift, whichever scores lower (a drift costs the chi^2_1 1 % point).

@@ -45,6 +45,10 @@
 //     removed is significant under that set's Whittle model (chi^2_1 at 1 %). The parameters and
 //     1-sigma are the Allan fit's of the chosen set (steps 2-5); step 6 still weighs the sets by
 //     their Allan scores.
+//  8. With LatentFitOptions::blockSelection (default), the drift-free sets within 15 of the best
+//     Whittle score are rescored by the exact Gaussian likelihood of the record's block means (a
+//     Kalman filter; the periodogram above the blocks' band) and the set, with or without drift,
+//     chosen by that score (block_likelihood.hpp). Parameters and 1-sigma stay the Allan fit's.
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
 #pragma once
 
