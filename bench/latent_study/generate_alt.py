@@ -23,8 +23,6 @@ rate, duration]).
     python3 bench/latent_study/generate_alt.py --rate 100 --duration 7200 --seeds 40 \\
         | build/bench/latent_fit_study --stdin
 """
-import argparse
-import json
 import math
 import sys
 
@@ -32,7 +30,8 @@ import numpy as np
 from scipy.signal import lfilter
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
-from generate import CASES, parameters  # noqa: E402  the design point only
+import generate  # noqa: E402  the design point and the record writer only
+from generate import CASES, parameters  # noqa: E402
 
 OVERSAMPLE = 8
 
@@ -86,29 +85,8 @@ def record(case, rate, duration, seed):
     return terms, p, x
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--rate", type=float, action="append", help="Hz (repeatable; default 100)")
-    ap.add_argument("--duration", type=float, action="append", help="s (repeatable; default 1200)")
-    ap.add_argument("--case", action="append", help="(repeatable; default the five latent cases)")
-    ap.add_argument("--seeds", type=int, default=40)
-    ap.add_argument("--first-seed", type=int, default=0)
-    a = ap.parse_args()
-    out = sys.stdout.buffer
-    for seed in range(a.first_seed, a.first_seed + a.seeds):
-        for rate in a.rate or [100.0]:
-            for duration in a.duration or [1200.0]:
-                for case in a.case or CASES:
-                    terms, p, x = record(case, rate, duration, seed)
-                    head = {"case": case, "rate": rate, "duration": duration, "seed": seed,
-                            "terms": terms, "params": p, "n": len(x)}
-                    out.write((json.dumps(head) + "\n").encode())
-                    out.write(x.astype("<f8").tobytes())
-                    out.flush()
-
-
 if __name__ == "__main__":
     try:
-        main()
+        generate.main(record, rates=(100.0,), durations=(1200.0,), seeds=40, doc=__doc__)
     except BrokenPipeError:
         pass

@@ -23,18 +23,19 @@
 //       flicker B^2         flickerComponents: GMs two per decade (the bias_instability effect's
 //                           construction, sigma^2 = B^2 ln 10 / (2 pi) each) with T from L/4 to
 //                           10 N dt; those faster than L/4 are folded into r.
-//  3. The level (and the drift's slope) are fixed effects, profiled out exactly by the diffuse
-//     (restricted) likelihood: the columns 1 and t_j are filtered with the data (de Jong 1991, the
-//     augmented Kalman filter): -2 log L = sum ln F_j + e'F^-1 e - a' A^-1 a + ln det A, A and a
-//     the columns' innovation products. Every set shares the same fixed effects, so the
-//     likelihoods compare. The GLS slope and its variance come out of A (the drift test).
+//  3. The level is a fixed effect profiled out exactly by the diffuse (restricted) likelihood: the
+//     columns 1 and t_j are filtered with the data (de Jong 1991, the augmented Kalman filter):
+//     -2 log L = sum ln F_j + e'F^-1 e - a'A^-1 a + ln A_11, A and a the columns' innovation
+//     products (X = [1]: the level alone; every set shares it, so the likelihoods compare). With
+//     drift the slope is profiled out too (X = [1, t], the same ln A_11): the two differ by the GLS
+//     slope's slope^2 / var. A set without drift keeps the trend's information (a walk's).
 //  4. Per set, -2 log L(blocks) + the Whittle -2 log L of the periodogram bins between 2 pi / B
 //     (the blocks' first null; the ordinates below are in the block means) and the Allan range's
-//     top frequency: minimised over log variances and log T by BFGS from the set's Whittle fit.
-//     Score = that + latentPenalty (the same per-term costs as the Allan and Whittle scores).
-//  5. The sets scored: the drift-free sets within kBlockScoredRange of the best Whittle score.
-//     The best score S wins; S + drift when the GLS slope under S's model is significant
-//     (slope^2 / var > 6.63, chi^2_1 at 1 %).
+//     top frequency: minimised over log variances and log T by BFGS from the set's Whittle fit
+//     (and again with drift where the slope could pay its cost).
+//  5. The sets scored (latent_fit.cpp blockChoice): the drift-free sets within kBlockScoredRange of
+//     the best Whittle score; a set's score is min(S, S + drift + 6.63 (chi^2_1 at 1 %: a ramp's
+//     sign is free)) + latentPenalty. The lowest wins.
 #pragma once
 
 #include <cstddef>

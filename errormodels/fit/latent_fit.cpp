@@ -425,6 +425,39 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
 }
 
 
+/// In `order` (indices into cands, best first), the first set S, or S + drift where drift(i), whose
+/// Allan fit is valid (the other of the two when only it is): {the chosen index, its i in order}.
+template <class Drift>
+std::optional<std::pair<std::size_t, std::size_t>> firstValid(const std::vector<LatentCandidate>& cands,
+                                                              const std::vector<std::size_t>& order, Drift drift) {
+  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
+    for (std::size_t k = 0; k < cands.size(); ++k)
+      if (cands[k].terms == t && cands[k].valid) return k;
+    return std::nullopt;
+  };
+  for (std::size_t i : order) {
+    LatentTermSet withDrift = cands[i].terms;
+    withDrift.drift = true;
+    const auto plain = find(cands[i].terms), drifted = find(withDrift);
+    const auto chosen = drift(i) ? (drifted ? drifted : plain) : (plain ? plain : drifted);
+    if (chosen) return std::make_pair(*chosen, i);
+  }
+  return std::nullopt;
+}
+
+/// cands reordered: the chosen, then `order` without it, then the sets in neither.
+std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& cands, std::size_t chosen,
+                                         const std::vector<std::size_t>& order) {
+  std::vector<LatentCandidate> out{cands[chosen]};
+  std::vector<bool> placed(cands.size(), false);
+  placed[chosen] = true;
+  for (std::size_t i : order)
+    if (!placed[i]) out.push_back(cands[i]), placed[i] = true;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (!placed[i]) out.push_back(cands[i]);
+  return out;
+}
+
 /// The Whittle choice (latent_fit.hpp step 7): every set without drift or AR scored by
 /// whittleFitSet from its Allan fit. In Whittle order, the first set S for which S (or S + drift
 /// when the removed line's slope b is significant under S's Whittle model: b^2 / v_S > the chi^2_1
@@ -435,13 +468,10 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
                                            std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
   const double wMax = kPi * p.dt / p.tau.front();  // f = 1 / (2 tau) at the first Allan point
   const double tHi = std::max(p.tau.back(), 2.0 * p.minT);  // the Allan fit's GM range
-  std::vector<LatentModel> whittleModel(cands.size());
-  for (std::size_t i = 0; i < cands.size(); ++i) {
-    auto& c = cands[i];
+  for (auto& c : cands) {
     if (c.terms.drift || c.terms.ar) continue;
     const WhittleSetFit w = whittleFitSet(bins, wMax, c.terms, c.model, p.minT, tHi);
     if (w.valid) c.whittleScore = w.m2LogLik + latentPenalty(c.terms, penalty);
-    whittleModel[i] = w.model;
     c.whittleModel = w.model;
   }
   std::vector<std::size_t> order;
@@ -449,27 +479,10 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
     if (std::isfinite(cands[i].whittleScore)) order.push_back(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].whittleScore < cands[b].whittleScore; });
-  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
-    for (std::size_t k = 0; k < cands.size(); ++k)
-      if (cands[k].terms == t && cands[k].valid) return k;
-    return std::nullopt;
-  };
-  std::optional<std::size_t> chosen;
-  for (std::size_t i : order) {
-    LatentTermSet withDrift = cands[i].terms;
-    withDrift.drift = true;
-    const bool drift = bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, whittleModel[i]);
-    const auto plain = find(cands[i].terms), drifted = find(withDrift);
-    chosen = drift ? (drifted ? drifted : plain) : (plain ? plain : drifted);
-    if (chosen) break;
-  }
-  if (!chosen) return cands;
-  std::vector<LatentCandidate> out{cands[*chosen]};
-  for (std::size_t i : order)
-    if (i != *chosen) out.push_back(cands[i]);
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (i != *chosen && !std::isfinite(cands[i].whittleScore)) out.push_back(cands[i]);
-  return out;
+  const auto chosen = firstValid(cands, order, [&](std::size_t i) {
+    return bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, cands[i].whittleModel);
+  });
+  return chosen ? chosenFirst(cands, chosen->first, order) : cands;
 }
 
 /// Blocks the block likelihood aims at (block_likelihood.hpp step 1): 2^12 keep a GM of T >= ~3 L
@@ -480,9 +493,9 @@ constexpr std::size_t kMinBlocks = 64;
 
 /// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
 /// (whittleChoice's output): the drift-free sets within kBlockScoredRange of the best Whittle
-/// score rescored; in block-score order, the first set S (S + drift when the GLS slope under S is
-/// significant) with a valid Allan fit. Returns cands reordered (the chosen, the block-scored by
-/// score, the rest); unchanged when the record is too short or no set qualifies.
+/// score rescored; in block-score order, the first set S (S + drift where that scores lower) with
+/// a valid Allan fit. Returns cands reordered (the chosen, the block-scored by score, the rest);
+/// unchanged when the record is too short or no set qualifies.
 std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bins, const std::vector<double>& x,
                                          std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
   const std::size_t B = std::max<std::size_t>({1, x.size() / kTargetBlocks, p.m.front()});
@@ -516,29 +529,10 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].blockScore < cands[b].blockScore; });
-  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
-    for (std::size_t k = 0; k < cands.size(); ++k)
-      if (cands[k].terms == t && cands[k].valid) return k;
-    return std::nullopt;
-  };
-  std::optional<std::size_t> chosen;
-  for (std::size_t i : order) {
-    LatentTermSet withDrift = cands[i].terms;
-    withDrift.drift = true;
-    const auto plain = find(cands[i].terms), drifted = find(withDrift);
-    chosen = drift[i] ? (drifted ? drifted : plain) : (plain ? plain : drifted);
-    if (chosen) {
-      cands[*chosen].blockScore = cands[i].blockScore;
-      break;
-    }
-  }
+  const auto chosen = firstValid(cands, order, [&](std::size_t i) { return bool(drift[i]); });
   if (!chosen) return cands;
-  std::vector<LatentCandidate> out{cands[*chosen]};
-  for (std::size_t i : order)
-    if (i != *chosen) out.push_back(cands[i]);
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (i != *chosen && !std::isfinite(cands[i].blockScore)) out.push_back(cands[i]);
-  return out;
+  cands[chosen->first].blockScore = cands[chosen->second].blockScore;  // S + drift: S's score
+  return chosenFirst(cands, chosen->first, order);
 }
 
 }  // namespace
