@@ -99,10 +99,12 @@ void BM_LatentFit(benchmark::State& state) {
   static const std::vector<double> x = latentRecord(11);
   LatentFitOptions o;
   o.sampleInterval = 1e-3;
-  o.whittleSelection = state.range(0) == 1;  // 0: the set by the Allan score alone
+  // 0: the set by the Allan score alone, 1: by the Whittle likelihood, 2: rescored by the block likelihood
+  o.whittleSelection = state.range(0) >= 1;
+  o.blockSelection = state.range(0) == 2;
   for (auto _ : state) benchmark::DoNotOptimize(fitLatentModel(x, o));
 }
-BENCHMARK(BM_LatentFit)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LatentFit)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_LatentFitSixChannels(benchmark::State& state) {
   static std::vector<std::vector<double>> channels;
@@ -110,7 +112,8 @@ void BM_LatentFitSixChannels(benchmark::State& state) {
     for (unsigned c = 0; c < 6; ++c) channels.push_back(latentRecord(11 + c));
   LatentFitOptions o;
   o.sampleInterval = 1e-3;
-  o.whittleSelection = state.range(0) == 1;
+  o.whittleSelection = state.range(0) >= 1;
+  o.blockSelection = state.range(0) == 2;
   for (auto _ : state) {
     std::vector<std::size_t> chosen(6);
     auto work = [&](std::size_t first) {
@@ -122,6 +125,6 @@ void BM_LatentFitSixChannels(benchmark::State& state) {
     benchmark::DoNotOptimize(chosen);
   }
 }
-BENCHMARK(BM_LatentFitSixChannels)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_LatentFitSixChannels)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 }  // namespace

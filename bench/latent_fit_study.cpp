@@ -10,6 +10,7 @@
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 200 |
 //       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
 //           [--allan-selection]  (the term set by the Allan GLS score, not the Whittle likelihood)
+//           [--whittle-selection]  (by the Whittle likelihood, not rescored by the block likelihood)
 //           [--min-right F --min-coverage F --expect N [--per-cell] [--min-ar-miss F]]
 //           [--min-coverage-averaged F]  (pooled over all seeds: LatentFit::averaged)
 //           (exit 1 below a floor: the ctest slices; --per-cell: in every cell and parameter)
@@ -304,7 +305,13 @@ struct Tally {
         std::printf(" %s %.4g+-%.2g (%.4g)", p.name.c_str(), p.value, p.stdError,
                     t == params.end() ? NAN : t->second);
       }
-      if (f.whittleSelected) {
+      if (f.blockSelected) {
+        std::printf("\n    block score above the chosen:");
+        for (std::size_t k = 1; k < f.candidates.size() && k < 5; ++k)
+          if (std::isfinite(f.candidates[k].blockScore))
+            std::printf(" [%s] %+.2f", f.candidates[k].terms.name().c_str(),
+                        f.candidates[k].blockScore - f.candidates.front().blockScore);
+      } else if (f.whittleSelected) {
         std::printf("\n    Whittle score above the chosen:");
         for (std::size_t k = 1; k < f.candidates.size() && k < 5; ++k)
           std::printf(" [%s] %+.2f", f.candidates[k].terms.name().c_str(),
@@ -471,6 +478,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--per-cell")) { floors.perCell = true; continue; }
     if (!std::strcmp(argv[i], "--detectability")) { detectability = true; continue; }
     if (!std::strcmp(argv[i], "--allan-selection")) { base.whittleSelection = false; continue; }
+    if (!std::strcmp(argv[i], "--whittle-selection")) { base.blockSelection = false; continue; }
     if (i + 1 >= argc) break;
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];

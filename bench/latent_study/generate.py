@@ -150,21 +150,24 @@ def record(case, rate, duration, seed):
     return terms, p, x
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--rate", type=float, action="append", help="Hz (repeatable; default 100 and 1000)")
-    ap.add_argument("--duration", type=float, action="append", help="s (repeatable; default 1200 and 7200)")
+def main(make=None, rates=(100.0, 1000.0), durations=(1200.0, 7200.0), seeds=200, doc=__doc__):
+    """Writes records of make(case, rate, duration, seed) -> (terms, params, x) (default `record`)
+    for the command line's cells; generate_alt.py calls it with its own generator and defaults."""
+    make = make or record
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
+    ap.add_argument("--rate", type=float, action="append", help=f"Hz (repeatable; default {rates})")
+    ap.add_argument("--duration", type=float, action="append", help=f"s (repeatable; default {durations})")
     ap.add_argument("--case", action="append", help="(repeatable; default the five latent cases)")
-    ap.add_argument("--seeds", type=int, default=200)
+    ap.add_argument("--seeds", type=int, default=seeds)
     ap.add_argument("--first-seed", type=int, default=0)
     a = ap.parse_args()
     out = sys.stdout.buffer
     # seed-major order: a stream cut short still has every cell at a similar number of seeds
     for seed in range(a.first_seed, a.first_seed + a.seeds):
-        for rate in a.rate or [100.0, 1000.0]:
-            for duration in a.duration or [1200.0, 7200.0]:
+        for rate in a.rate or list(rates):
+            for duration in a.duration or list(durations):
                 for case in a.case or CASES:
-                    terms, p, x = record(case, rate, duration, seed)
+                    terms, p, x = make(case, rate, duration, seed)
                     head = {"case": case, "rate": rate, "duration": duration, "seed": seed,
                             "terms": terms, "params": p, "n": len(x)}
                     out.write((json.dumps(head) + "\n").encode())

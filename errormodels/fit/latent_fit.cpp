@@ -12,6 +12,7 @@
 #include "common/progress.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/fit/block_likelihood.hpp"
 #include "errormodels/fit/golden_section.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/fit/whittle_selection.hpp"
@@ -281,7 +282,10 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
     }
     if (!f.allPositive) continue;
     const double score = f.chi2 + latentPenalty(s, penalty);
-    if (!best || score < best->score) best = LatentCandidate{s, modelOf(p, f), f.chi2, score, true};
+    if (!best || score < best->score) {
+      best = LatentCandidate{};
+      best->terms = s, best->model = modelOf(p, f), best->chi2 = f.chi2, best->score = score, best->valid = true;
+    }
   }
   if (!best) throw NumericalError("latent fit: no candidate set has all its terms positive");
   return best->model;
@@ -420,8 +424,39 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
                              fmt(q.value));
 }
 
-/// The chi^2_1 1 % point: the drift's slope test (the sign of a ramp is free: no boundary).
-constexpr double kDriftSlopeChi2 = 6.635;
+
+/// In `order` (indices into cands, best first), the first set S, or S + drift where drift(i), whose
+/// Allan fit is valid (the other of the two when only it is): {the chosen index, its i in order}.
+template <class Drift>
+std::optional<std::pair<std::size_t, std::size_t>> firstValid(const std::vector<LatentCandidate>& cands,
+                                                              const std::vector<std::size_t>& order, Drift drift) {
+  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
+    for (std::size_t k = 0; k < cands.size(); ++k)
+      if (cands[k].terms == t && cands[k].valid) return k;
+    return std::nullopt;
+  };
+  for (std::size_t i : order) {
+    LatentTermSet withDrift = cands[i].terms;
+    withDrift.drift = true;
+    const auto plain = find(cands[i].terms), drifted = find(withDrift);
+    const auto chosen = drift(i) ? (drifted ? drifted : plain) : (plain ? plain : drifted);
+    if (chosen) return std::make_pair(*chosen, i);
+  }
+  return std::nullopt;
+}
+
+/// cands reordered: the chosen, then `order` without it, then the sets in neither.
+std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& cands, std::size_t chosen,
+                                         const std::vector<std::size_t>& order) {
+  std::vector<LatentCandidate> out{cands[chosen]};
+  std::vector<bool> placed(cands.size(), false);
+  placed[chosen] = true;
+  for (std::size_t i : order)
+    if (!placed[i]) out.push_back(cands[i]), placed[i] = true;
+  for (std::size_t i = 0; i < cands.size(); ++i)
+    if (!placed[i]) out.push_back(cands[i]);
+  return out;
+}
 
 /// The Whittle choice (latent_fit.hpp step 7): every set without drift or AR scored by
 /// whittleFitSet from its Allan fit. In Whittle order, the first set S for which S (or S + drift
@@ -433,40 +468,71 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
                                            std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
   const double wMax = kPi * p.dt / p.tau.front();  // f = 1 / (2 tau) at the first Allan point
   const double tHi = std::max(p.tau.back(), 2.0 * p.minT);  // the Allan fit's GM range
-  std::vector<LatentModel> whittleModel(cands.size());
-  for (std::size_t i = 0; i < cands.size(); ++i) {
-    auto& c = cands[i];
+  for (auto& c : cands) {
     if (c.terms.drift || c.terms.ar) continue;
     const WhittleSetFit w = whittleFitSet(bins, wMax, c.terms, c.model, p.minT, tHi);
     if (w.valid) c.whittleScore = w.m2LogLik + latentPenalty(c.terms, penalty);
-    whittleModel[i] = w.model;
+    c.whittleModel = w.model;
   }
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (std::isfinite(cands[i].whittleScore)) order.push_back(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].whittleScore < cands[b].whittleScore; });
-  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
-    for (std::size_t k = 0; k < cands.size(); ++k)
-      if (cands[k].terms == t && cands[k].valid) return k;
-    return std::nullopt;
-  };
-  std::optional<std::size_t> chosen;
-  for (std::size_t i : order) {
-    LatentTermSet withDrift = cands[i].terms;
-    withDrift.drift = true;
-    const bool drift = bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, whittleModel[i]);
-    const auto plain = find(cands[i].terms), drifted = find(withDrift);
-    chosen = drift ? (drifted ? drifted : plain) : (plain ? plain : drifted);
-    if (chosen) break;
+  const auto chosen = firstValid(cands, order, [&](std::size_t i) {
+    return bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, cands[i].whittleModel);
+  });
+  return chosen ? chosenFirst(cands, chosen->first, order) : cands;
+}
+
+/// Blocks the block likelihood aims at (block_likelihood.hpp step 1): 2^12 keep a GM of T >= ~3 L
+/// at 20 min; a Kalman step costs O(states^2) until its gain is steady.
+constexpr std::size_t kTargetBlocks = 4096;
+/// Fewer blocks than this: the Whittle choice stands (the block means say little).
+constexpr std::size_t kMinBlocks = 64;
+
+/// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
+/// (whittleChoice's output): the drift-free sets within kBlockScoredRange of the best Whittle
+/// score rescored; in block-score order, the first set S (S + drift where that scores lower) with
+/// a valid Allan fit. Returns cands reordered (the chosen, the block-scored by score, the rest);
+/// unchanged when the record is too short or no set qualifies.
+std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bins, const std::vector<double>& x,
+                                         std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
+  const std::size_t B = std::max<std::size_t>({1, x.size() / kTargetBlocks, p.m.front()});
+  if (x.size() / B < kMinBlocks) return cands;
+  const BlockMeans means = blockMeans(x, p.dt, B);
+  const double wMax = kPi * p.dt / p.tau.front();
+  const double tHi = std::max(p.tau.back(), 2.0 * p.minT);
+  double bestWhittle = std::numeric_limits<double>::infinity();
+  for (const auto& c : cands)
+    if (std::isfinite(c.whittleScore)) bestWhittle = std::min(bestWhittle, c.whittleScore);
+  std::vector<bool> drift(cands.size(), false);
+  std::vector<std::size_t> order;
+  // Quantization is a sample-level term: averaged over a block it is (e_end - e_start) / L, far
+  // below the white noise. Where no periodogram bin above the blocks is in the fitted range
+  // (B >= 2 m_1: the Allan range starts at the blocks' scale, as on real accelerometers whose
+  // short-tau features the start scan skips), the blocks alone would read it as a block-scale
+  // MA(1); its presence then stays the Whittle's decision.
+  const bool seesQuantization = 2.0 * kPi / double(B) < wMax;
+  const bool whittleQuantization = cands.front().terms.quantization;
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    auto& c = cands[i];
+    if (!(c.whittleScore - bestWhittle <= kBlockScoredRange)) continue;
+    if (!seesQuantization && c.terms.quantization != whittleQuantization) continue;
+    const BlockSetFit f = blockFitSet(means, &bins, wMax, c.terms, c.whittleModel, p.minT, tHi);
+    if (!f.valid) continue;
+    // S or S + drift, whichever scores lower (a drift costs the chi^2_1 1 % point).
+    const double plain = f.m2LogLik, drifted = f.m2LogLikDrift + kDriftSlopeChi2;
+    drift[i] = drifted < plain;
+    c.blockScore = std::min(plain, drifted) + latentPenalty(c.terms, penalty);
+    order.push_back(i);
   }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cands[a].blockScore < cands[b].blockScore; });
+  const auto chosen = firstValid(cands, order, [&](std::size_t i) { return bool(drift[i]); });
   if (!chosen) return cands;
-  std::vector<LatentCandidate> out{cands[*chosen]};
-  for (std::size_t i : order)
-    if (i != *chosen) out.push_back(cands[i]);
-  for (std::size_t i = 0; i < cands.size(); ++i)
-    if (i != *chosen && !std::isfinite(cands[i].whittleScore)) out.push_back(cands[i]);
-  return out;
+  cands[chosen->first].blockScore = cands[chosen->second].blockScore;  // S + drift: S's score
+  return chosenFirst(cands, chosen->first, order);
 }
 
 }  // namespace
@@ -474,7 +540,8 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
 namespace {
 
 LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& avar,
-                   std::size_t samples, const LatentFitOptions& options, const WhittleBins* bins) {
+                   std::size_t samples, const LatentFitOptions& options, const WhittleBins* bins,
+                   const std::vector<double>* record) {
   const double dt = options.sampleInterval;
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent fit: sample interval must be > 0");
   if (m.size() != avar.size()) throw InputError("latent fit: m and avar differ in length");
@@ -533,6 +600,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   const bool whittle = bins != nullptr && options.whittleSelection;
   if (whittle) {
     cands = whittleChoice(p, *bins, cands, penalty);
+    if (options.blockSelection && record) cands = blockChoice(p, *bins, *record, cands, penalty);
     omegaModel = cands.front().model;
   }
   // Final: Omega from the winner, the winner refitted; every set rescored under that Omega for
@@ -564,6 +632,7 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   out.modelAvar = latentAllanVariance(out.model, dt, p.m);
   out.candidates = cands;
   out.whittleSelected = whittle && std::isfinite(cands.front().whittleScore);
+  out.blockSelected = whittle && std::isfinite(cands.front().blockScore);
   out.averaged = averaged;
   out.consistent = out.pValue >= 1e-3;
   if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
@@ -576,8 +645,9 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
 namespace {
 
 LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double>& avar, std::size_t samples,
-                     const LatentFitOptions& options, const WhittleBins* bins) {
-  LatentFit fit = fitRange(m, avar, samples, options, bins);
+                     const LatentFitOptions& options, const WhittleBins* bins,
+                     const std::vector<double>* record = nullptr) {
+  LatentFit fit = fitRange(m, avar, samples, options, bins, record);
   if (!options.scanStart || fit.consistent) return fit;
   LatentFit best = fit;
   for (std::size_t start = 1; start < fit.tau.size() && fit.tau.size() - start >= 6; ++start) {
@@ -586,7 +656,7 @@ LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double
     LatentFit f;
     progress::checkpoint("scanning the start of the tau range", start, fit.tau.size());
     try {
-      f = fitRange(m, avar, samples, o, bins);
+      f = fitRange(m, avar, samples, o, bins, record);
     } catch (const Error&) {
       break;
     }
@@ -624,7 +694,7 @@ LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& o
   const LatentAllanPoints c = latentAllanPoints(x, options.sampleInterval);
   if (!options.whittleSelection) return fitScanned(c.m, c.avar, x.size(), options, nullptr);
   const WhittleBins bins = whittleBins(x, options.sampleInterval);
-  return fitScanned(c.m, c.avar, x.size(), options, &bins);
+  return fitScanned(c.m, c.avar, x.size(), options, &bins, &x);
 }
 
 }  // namespace sinsim::errormodels::fit

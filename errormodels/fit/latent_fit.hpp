@@ -45,6 +45,10 @@
 //     removed is significant under that set's Whittle model (chi^2_1 at 1 %). The parameters and
 //     1-sigma are the Allan fit's of the chosen set (steps 2-5); step 6 still weighs the sets by
 //     their Allan scores.
+//  8. With LatentFitOptions::blockSelection (default), the drift-free sets within 15 of the best
+//     Whittle score are rescored by the exact Gaussian likelihood of the record's block means (a
+//     Kalman filter; the periodogram above the blocks' band) and the set, with or without drift,
+//     chosen by that score (block_likelihood.hpp). Parameters and 1-sigma stay the Allan fit's.
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
 #pragma once
 
@@ -108,6 +112,10 @@ struct LatentFitOptions {
   /// (whittle_selection.hpp) instead of the Allan GLS score; the parameters and their 1-sigma stay
   /// the Allan fit's. Only the record overload fitLatentModel(x, ...) has a periodogram.
   bool whittleSelection = true;
+  /// With whittleSelection: the sets near the Whittle's best are rescored by the exact Gaussian
+  /// likelihood of the record's block means with the periodogram above them (block_likelihood.hpp),
+  /// and the set chosen by that score.
+  bool blockSelection = true;
 };
 
 /// The score's penalty of a term set: penaltyPerTerm * terms + penaltyPerParameter * parameters.
@@ -144,6 +152,9 @@ struct LatentCandidate {
   bool valid = false;  ///< every variance strictly positive
   /// -2 log L (Whittle) + latentPenalty, NaN where not scored (drift, AR, no record, invalid).
   double whittleScore = std::numeric_limits<double>::quiet_NaN();
+  LatentModel whittleModel;  ///< the Whittle fit behind whittleScore
+  /// -2 log L (block means + periodogram above them) + latentPenalty, NaN where not scored.
+  double blockScore = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct LatentFit {
@@ -164,6 +175,7 @@ struct LatentFit {
   /// selection: the chosen, then the sets with a Whittle score by it, then the rest by score.
   std::vector<LatentCandidate> candidates;
   bool whittleSelected = false;  ///< the set was chosen by the Whittle score
+  bool blockSelected = false;    ///< ... rescored by the block likelihood (then the order is by blockScore)
   /// Every parameter of the valid sets averaged over them (LatentAveragedParameter): the
   /// selection-aware statement, also for terms the chosen set lacks.
   std::vector<LatentAveragedParameter> averaged;

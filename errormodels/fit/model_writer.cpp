@@ -187,12 +187,17 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
          << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
          << "; chi2 " << num(f.chi2, 4) << " / " << f.dof << " dof (p = " << num(f.pValue, 3) << ")";
-  if (f.whittleSelected) b.line << "; set chosen by the Whittle likelihood of the periodogram";
+  if (f.blockSelected)
+    b.line << "; set chosen by the exact likelihood of the block means with the periodogram above them";
+  else if (f.whittleSelected)
+    b.line << "; set chosen by the Whittle likelihood of the periodogram";
   if (const LatentCandidate* r = f.runnerUp()) {
-    const bool w = f.whittleSelected && std::isfinite(r->whittleScore);
-    b.line << "; runner-up " << r->terms.name() << " (" << (w ? "Whittle " : "") << "score "
-           << num(w ? r->whittleScore - f.candidates.front().whittleScore : r->score - f.candidates.front().score, 3)
-           << " higher)";
+    const LatentCandidate& c = f.candidates.front();
+    const bool k = f.blockSelected && std::isfinite(r->blockScore);
+    const bool w = !k && f.whittleSelected && std::isfinite(r->whittleScore);
+    const double delta = k ? r->blockScore - c.blockScore : w ? r->whittleScore - c.whittleScore : r->score - c.score;
+    b.line << "; runner-up " << r->terms.name() << " (" << (k ? "block " : w ? "Whittle " : "") << "score "
+           << num(delta, 3) << " higher)";
   }
   b.endComment();
   for (const auto& w : f.warnings) {
