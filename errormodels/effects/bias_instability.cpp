@@ -17,13 +17,13 @@
 // Each component is integrated exactly over the IMU intervals (gm_process.hpp).
 #include <cmath>
 
+#include "errormodels/flicker_gms.hpp"
 #include "errormodels/gm_process.hpp"
 #include "errormodels/held_process.hpp"
 
 namespace sinsim::errormodels {
 namespace {
 
-constexpr int kPerDecade = 2;
 constexpr double kWidenDecades = 1.5;
 
 class FlickerState final : public AxisErrorState {
@@ -48,9 +48,8 @@ class BiasInstability final : public Effect {
   BiasInstability(double B, double tauLo, double tauHi) {
     const double lo = tauLo * std::pow(10.0, -kWidenDecades);
     const double hi = tauHi * std::pow(10.0, kWidenDecades);
-    const int n = int(std::ceil(kPerDecade * std::log10(hi / lo) - 1e-9));
-    for (int j = 0; j < n; ++j) taus_.push_back(lo * std::pow(10.0, (j + 0.5) / kPerDecade));
-    sigma_ = B * std::sqrt(std::log(10.0) / (M_PI * kPerDecade));
+    taus_ = flickerGmTaus(lo, hi);
+    sigma_ = B * std::sqrt(flickerGmVariance());
   }
   std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
     return std::make_unique<FlickerState>(ctx.site->axis, sigma_, taus_, ctx);

@@ -8,6 +8,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "errormodels/flicker_gms.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -59,16 +60,15 @@ Component gmComponent(double s2, double T, double dt, std::size_t B) {
   return k;
 }
 
-/// Unit-B^2 flicker as GMs two per decade (bias_instability.cpp's construction and sigma), from
+/// Unit-B^2 flicker as GMs two per decade (flicker_gms.hpp, as the bias_instability effect), from
 /// dt / 10 to 10 N dt; those faster than L / 4 are white at the block level and folded into r.
 std::vector<Component> flickerComponents(double dt, std::size_t B, std::size_t M) {
-  constexpr int kPerDecade = 2;
-  const double s2 = std::log(10.0) / (kPi * kPerDecade);
+  const double s2 = flickerGmVariance();
   const double L = dt * double(B), lo = dt / 10.0, hi = 10.0 * L * double(M);
   std::vector<Component> out;
   Component folded;
   for (int j = 0;; ++j) {
-    const double T = lo * std::pow(10.0, (j + 0.5) / kPerDecade);
+    const double T = flickerGmTau(lo, j);
     if (T > hi) break;
     const Component k = gmComponent(s2, T, dt, B);
     if (T < L / 4.0) folded.r += k.r + k.h * k.h * k.p0;  // its block-mean variance

@@ -3,6 +3,7 @@
 // (effects/bias_instability.cpp: GM components, 2 per decade over tau_range widened 1.5 decades,
 // each of variance B^2 ln10 / (2 pi)). The floor is 0.664 B within -2.5 %/+1 % over tau_range.
 #include "errormodels/diagnose/detector.hpp"
+#include "errormodels/flicker_gms.hpp"
 #include "errormodels/gm_process.hpp"
 
 #include <algorithm>
@@ -12,25 +13,23 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
-/// The GM components of the plug-in per unit B^2: n time constants from wlo, 2 per decade.
+/// The GM components of the plug-in per unit B^2 (flicker_gms.hpp).
 struct Components {
-  double wlo = 0;  // [s]
-  int n = 0;
-  double s2 = 0;   // variance of each per unit B^2
-  double tc(int j) const { return wlo * std::pow(10.0, (j + 0.5) / 2); }
+  std::vector<double> taus;  // [s]
+  double s2 = 0;             // variance of each per unit B^2
 };
 
 /// AVAR per unit B^2 at tau [s]: the sum of its components' GM closed forms.
 double avar(const Components& m, double t) {
   double v = 0;
-  for (int j = 0; j < m.n; ++j) v += gaussMarkovAllanVariance(m.s2, m.tc(j), t);
+  for (double tc : m.taus) v += gaussMarkovAllanVariance(m.s2, tc, t);
   return v;
 }
 
 /// Autocovariance per unit B^2 of the samples (interval averages over dt) at lags 0..maxLag.
 std::vector<double> acov(const Components& m, double dt, std::size_t maxLag) {
   std::vector<double> r(maxLag + 1, 0.0);
-  for (int j = 0; j < m.n; ++j) addGaussMarkovIntervalAcov(m.s2, m.tc(j), dt, r);
+  for (double tc : m.taus) addGaussMarkovIntervalAcov(m.s2, tc, dt, r);
   return r;
 }
 
@@ -41,10 +40,8 @@ std::vector<Candidate> detect_bias_instability(const DetectorContext& ctx) {
   const double dt = ctx.dt;
   const double lo = std::max(10 * dt, ctx.T / 1000), hi = ctx.T / 2;
   Components m;
-  m.wlo = lo * std::pow(10.0, -1.5);
-  const double whi = hi * std::pow(10.0, 1.5);
-  m.n = int(std::ceil(2 * std::log10(whi / m.wlo) - 1e-9));
-  m.s2 = std::log(10.0) / (M_PI * 2);
+  m.taus = flickerGmTaus(lo * std::pow(10.0, -1.5), hi * std::pow(10.0, 1.5));
+  m.s2 = flickerGmVariance();
   Candidate c;
   c.effect = "bias_instability";
   c.acov = [m, dt](std::size_t maxLag) { return acov(m, dt, maxLag); };

@@ -1,0 +1,31 @@
+// Flicker (bias instability) as a sum of first-order Gauss-Markov processes, two per decade of
+// correlation time, each of variance B² ln 10 / (2π) (effects/bias_instability.cpp explains the
+// construction): the one recipe the effect, its detector and the block-mean likelihood share.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "common/constants.hpp"
+
+namespace sinsim::errormodels {
+
+inline constexpr int kFlickerGmsPerDecade = 2;
+
+/// Variance of each component per unit B² [-].
+inline double flickerGmVariance() { return std::log(10.0) / (kPi * kFlickerGmsPerDecade); }
+
+/// Correlation time [s] of component j counted from lo [s]: the centre of its half decade.
+inline double flickerGmTau(double lo, int j) {
+  return lo * std::pow(10.0, (j + 0.5) / kFlickerGmsPerDecade);
+}
+
+/// The components' correlation times covering [lo, hi] [s].
+inline std::vector<double> flickerGmTaus(double lo, double hi) {
+  const int n = int(std::ceil(kFlickerGmsPerDecade * std::log10(hi / lo) - 1e-9));
+  std::vector<double> taus;
+  for (int j = 0; j < n; ++j) taus.push_back(flickerGmTau(lo, j));
+  return taus;
+}
+
+}  // namespace sinsim::errormodels
