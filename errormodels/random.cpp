@@ -24,25 +24,10 @@ namespace {
 constexpr int kCalls = NormalStream::kBlock / 4;  // made at once: 64 words, one per normal
 constexpr int kWords = 4 * kCalls;
 
-// The length of the run of accepted candidates from word k (< kWords); runs stop at kWords, a
-// multiple of 64.
-int acceptedRun(const std::uint64_t ok[2], int k) {
-  int run = 0;
-  while (k < kWords) {
-    const int avail = 64 - k % 64;
-    const std::uint64_t rejected = ~(ok[k / 64] >> (k % 64));
-    const int len = rejected ? std::min(int(__builtin_ctzll(rejected)), avail) : avail;
-    run += len;
-    k += len;
-    if (len < avail) break;
-  }
-  return run;
-}
-
 }  // namespace
 
 void NormalStream::refill() {
-  static_assert(kWords % 8 == 0 && kWords <= 128, "the candidate kernels' word count");
+  static_assert(kWords == 64, "the candidate kernels take a block of 64 words");
   const ZigguratTables& T = zigguratTables();
   Philox gen;
   alignas(64) std::uint64_t w[kWords];
@@ -52,8 +37,7 @@ void NormalStream::refill() {
     for (int q = 0; q < 4; ++q) w[4 * j + q] = r.v[q];
   }
   alignas(64) double cand[kWords];
-  std::uint64_t ok[2];
-  zigguratCandidates(w, kWords, cand, ok);
+  const std::uint64_t ok = zigguratCandidates(w, cand);
   // Word k of the block: made at once, or by call k / 4 (kept while its words are used).
   std::uint64_t extra[4];
   std::uint64_t extraCall = ~std::uint64_t(0);
@@ -69,8 +53,10 @@ void NormalStream::refill() {
   std::uint64_t used = 0;
   int n = 0;
   for (;;) {
-    if (used < std::uint64_t(kWords)) {
-      const int run = std::min(acceptedRun(ok, int(used)), kBlock - n);
+    if (used < std::uint64_t(kWords)) {  // the run of accepted candidates from word `used`
+      const std::uint64_t rejected = ~ok >> used;
+      const int run = std::min(rejected ? int(__builtin_ctzll(rejected)) : kWords - int(used),
+                               kBlock - n);
       std::memcpy(buf_.data() + n, cand + used, sizeof(double) * std::size_t(run));
       n += run;
       used += std::uint64_t(run);

@@ -37,27 +37,29 @@ ZigguratTables buildTables() {
   return t;
 }
 
-void candidatesScalar(const std::uint64_t* w, int n, double* cand, std::uint64_t* ok) {
+constexpr int kWords = 64;  // a block's words: one per normal
+
+std::uint64_t candidatesScalar(const std::uint64_t* w, double* cand) {
   const ZigguratTables& T = zigguratTables();
-  for (int k = 0; k < n; k += 64) ok[k / 64] = 0;
-  for (int k = 0; k < n; ++k) {
+  std::uint64_t ok = 0;
+  for (int k = 0; k < kWords; ++k) {
     const std::uint64_t u = w[k];
     const unsigned i = unsigned(u & 0xff);
     const double x = zigguratUniform(u) * T.x[i];
     cand[k] = zigguratSign(x, u);
-    ok[k / 64] |= std::uint64_t(x < T.x[i + 1]) << (k % 64);
+    ok |= std::uint64_t(x < T.x[i + 1]) << k;
   }
+  return ok;
 }
 
 #ifdef SINSIM_ZIGGURAT_X86
-__attribute__((target("avx2"))) void candidatesAvx2(const std::uint64_t* w, int n, double* cand,
-                                                    std::uint64_t* ok) {
+__attribute__((target("avx2"))) std::uint64_t candidatesAvx2(const std::uint64_t* w, double* cand) {
   const double* x = zigguratTables().x;
   const __m256i layer = _mm256_set1_epi64x(0xff), sign = _mm256_set1_epi64x(0x100);
   const __m256i exponent = _mm256_set1_epi64x(0x3ff0000000000000ll);
   const __m256d one = _mm256_set1_pd(1.0);
-  for (int k = 0; k < n; k += 64) ok[k / 64] = 0;
-  for (int k = 0; k < n; k += 4) {
+  std::uint64_t ok = 0;
+  for (int k = 0; k < kWords; k += 4) {
     const __m256i u = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(w + k));
     const __m256i i = _mm256_and_si256(u, layer);
     const __m256d U = _mm256_sub_pd(
@@ -67,24 +69,26 @@ __attribute__((target("avx2"))) void candidatesAvx2(const std::uint64_t* w, int 
     const unsigned m = unsigned(_mm256_movemask_pd(_mm256_cmp_pd(v, next, _CMP_LT_OQ)));
     const __m256i s = _mm256_slli_epi64(_mm256_and_si256(u, sign), 55);
     _mm256_storeu_pd(cand + k, _mm256_castsi256_pd(_mm256_xor_si256(_mm256_castpd_si256(v), s)));
-    ok[k / 64] |= std::uint64_t(m) << (k % 64);
+    ok |= std::uint64_t(m) << k;
   }
+  return ok;
 }
 
 // GCC 12's avx512fintrin.h builds its set1/cast results from an "undefined" vector, which
-// -Wmaybe-uninitialized reports at every use; nothing here reads an undefined lane.
+// -W(maybe-)uninitialized reports at every use; nothing here reads an undefined lane.
 #if !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
-__attribute__((target("avx512f"))) void candidatesAvx512(const std::uint64_t* w, int n,
-                                                         double* cand, std::uint64_t* ok) {
+__attribute__((target("avx512f"))) std::uint64_t candidatesAvx512(const std::uint64_t* w,
+                                                                  double* cand) {
   const double* x = zigguratTables().x;
   const __m512i layer = _mm512_set1_epi64(0xff), sign = _mm512_set1_epi64(0x100);
   const __m512i exponent = _mm512_set1_epi64(0x3ff0000000000000ll);
   const __m512d one = _mm512_set1_pd(1.0);
-  for (int k = 0; k < n; k += 64) ok[k / 64] = 0;
-  for (int k = 0; k < n; k += 8) {
+  std::uint64_t ok = 0;
+  for (int k = 0; k < kWords; k += 8) {
     const __m512i u = _mm512_loadu_si512(w + k);
     const __m512i i = _mm512_and_si512(u, layer);
     const __m512d U = _mm512_sub_pd(
@@ -94,15 +98,16 @@ __attribute__((target("avx512f"))) void candidatesAvx512(const std::uint64_t* w,
     const __mmask8 m = _mm512_cmp_pd_mask(v, next, _CMP_LT_OQ);
     const __m512i s = _mm512_slli_epi64(_mm512_and_si512(u, sign), 55);
     _mm512_storeu_pd(cand + k, _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(v), s)));
-    ok[k / 64] |= std::uint64_t(m) << (k % 64);
+    ok |= std::uint64_t(m) << k;
   }
+  return ok;
 }
 #if !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
 #endif
 
-using Kernel = void (*)(const std::uint64_t*, int, double*, std::uint64_t*);
+using Kernel = std::uint64_t (*)(const std::uint64_t*, double*);
 
 Kernel kernelOf(ZigguratKernel k) {
 #ifdef SINSIM_ZIGGURAT_X86
@@ -141,16 +146,15 @@ bool zigguratKernelAvailable(ZigguratKernel k) {
   }
 }
 
-void zigguratCandidates(const std::uint64_t* w, int n, double* cand, std::uint64_t* ok) {
+std::uint64_t zigguratCandidates(const std::uint64_t* w, double* cand) {
   static const Kernel best = bestKernel();
-  best(w, n, cand, ok);
+  return best(w, cand);
 }
 
-void zigguratCandidates(const std::uint64_t* w, int n, double* cand, std::uint64_t* ok,
-                        ZigguratKernel kernel) {
+std::uint64_t zigguratCandidates(const std::uint64_t* w, double* cand, ZigguratKernel kernel) {
   if (!zigguratKernelAvailable(kernel))
     throw std::logic_error("ziggurat: this CPU lacks the requested kernel");
-  kernelOf(kernel)(w, n, cand, ok);
+  return kernelOf(kernel)(w, cand);
 }
 
 }  // namespace sinsim::errormodels

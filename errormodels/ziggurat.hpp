@@ -51,11 +51,10 @@ enum class ZigguratKernel { scalar, avx2, avx512 };
 /// Whether this CPU runs the kernel.
 bool zigguratKernelAvailable(ZigguratKernel k);
 
-/// The fast path of n words (n a multiple of 8, at most 128) taken as if each were a draw's first
-/// word: cand[k] = ±U x_i of w[k], and bit k % 64 of ok[k / 64] set when it is accepted at once.
-/// The best available kernel unless one is named.
-void zigguratCandidates(const std::uint64_t* w, int n, double* cand, std::uint64_t* ok);
-void zigguratCandidates(const std::uint64_t* w, int n, double* cand, std::uint64_t* ok,
-                        ZigguratKernel kernel);
+/// The fast path of a block's 64 words taken as if each were a draw's first word: cand[k] = ±U x_i
+/// of w[k]; returns the mask whose bit k is set when w[k] is accepted at once. The best available
+/// kernel unless one is named.
+std::uint64_t zigguratCandidates(const std::uint64_t* w, double* cand);
+std::uint64_t zigguratCandidates(const std::uint64_t* w, double* cand, ZigguratKernel kernel);
 
 }  // namespace sinsim::errormodels
