@@ -21,13 +21,13 @@ namespace sinsim::errormodels {
 
 namespace {
 
-constexpr int kCalls = NormalStream::kBlock / 4;  // made at once: 64 words, one per normal
-constexpr int kWords = 4 * kCalls;
+constexpr int kWords = kZigguratBlockWords;  // made at once, one per normal
+constexpr int kCalls = kWords / 4;
 
 }  // namespace
 
 void NormalStream::refill() {
-  static_assert(kWords == 64, "the candidate kernels take a block of 64 words");
+  static_assert(kWords == NormalStream::kBlock, "a block's normals come from the fast path's words");
   const ZigguratTables& T = zigguratTables();
   Philox gen;
   alignas(64) std::uint64_t w[kWords];

@@ -37,12 +37,10 @@ ZigguratTables buildTables() {
   return t;
 }
 
-constexpr int kWords = 64;  // a block's words: one per normal
-
 std::uint64_t candidatesScalar(const std::uint64_t* w, double* cand) {
   const ZigguratTables& T = zigguratTables();
   std::uint64_t ok = 0;
-  for (int k = 0; k < kWords; ++k) {
+  for (int k = 0; k < kZigguratBlockWords; ++k) {
     const std::uint64_t u = w[k];
     const unsigned i = unsigned(u & 0xff);
     const double x = zigguratUniform(u) * T.x[i];
@@ -59,7 +57,7 @@ __attribute__((target("avx2"))) std::uint64_t candidatesAvx2(const std::uint64_t
   const __m256i exponent = _mm256_set1_epi64x(0x3ff0000000000000ll);
   const __m256d one = _mm256_set1_pd(1.0);
   std::uint64_t ok = 0;
-  for (int k = 0; k < kWords; k += 4) {
+  for (int k = 0; k < kZigguratBlockWords; k += 4) {
     const __m256i u = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(w + k));
     const __m256i i = _mm256_and_si256(u, layer);
     const __m256d U = _mm256_sub_pd(
@@ -88,7 +86,7 @@ __attribute__((target("avx512f"))) std::uint64_t candidatesAvx512(const std::uin
   const __m512i exponent = _mm512_set1_epi64(0x3ff0000000000000ll);
   const __m512d one = _mm512_set1_pd(1.0);
   std::uint64_t ok = 0;
-  for (int k = 0; k < kWords; k += 8) {
+  for (int k = 0; k < kZigguratBlockWords; k += 8) {
     const __m512i u = _mm512_loadu_si512(w + k);
     const __m512i i = _mm512_and_si512(u, layer);
     const __m512d U = _mm512_sub_pd(

@@ -48,6 +48,9 @@ inline double zigguratSign(double x, std::uint64_t u) {
 /// same bits).
 enum class ZigguratKernel { scalar, avx2, avx512 };
 
+/// The words the fast path takes at once: one per normal, one bit each in the acceptance mask.
+constexpr int kZigguratBlockWords = 64;
+
 /// Whether this CPU runs the kernel.
 bool zigguratKernelAvailable(ZigguratKernel k);
 
