@@ -14,7 +14,9 @@
 // a zero diagonal), records what is wrong in `problems` and returns nullptr, or builds the effect.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <string>
@@ -105,11 +107,27 @@ class DirectAxisErrorState : public AxisErrorState {
     u[axis()] += static_cast<D*>(this)->D::integral(iv);
   }
   void applyBlock(Vec3* u, const Interval* iv, std::size_t n) final {
+    static_cast<D*>(this)->D::addIntegrals(u, iv, n, axis());
+  }
+  /// u[i][a] += integral(iv[i]) in order; a class D may hide it with a faster one of its own
+  /// (the same draws in the same order, the same operations).
+  void addIntegrals(Vec3* u, const Interval* iv, std::size_t n, int a) {
     D* d = static_cast<D*>(this);
-    const int a = axis();
     for (std::size_t i = 0; i < n; ++i) u[i][a] += d->D::integral(iv[i]);
   }
 };
+
+/// For a faster addIntegrals: calls chunk(iv + i, m, I) for consecutive chunks of at most kMax
+/// intervals (I: their m integrals to fill, in order) and adds I to u[.][a].
+template <std::size_t kMax, class Chunk>
+void addIntegralsInChunks(Vec3* u, const Interval* iv, std::size_t n, int a, Chunk&& chunk) {
+  double I[kMax];
+  for (std::size_t i = 0; i < n; i += kMax) {
+    const std::size_t m = std::min(kMax, n - i);
+    chunk(iv + i, m, I);
+    for (std::size_t k = 0; k < m; ++k) u[i + k][a] += I[k];
+  }
+}
 
 struct InstanceContext {
   double imuRate = 0.0;  ///< nominal IMU output rate [Hz]

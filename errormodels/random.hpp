@@ -15,8 +15,11 @@
 
 #include <Random123/philox.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace sinsim::errormodels {
 
@@ -42,6 +45,18 @@ class NormalStream {
   double next() {
     if (pos_ == kBlock) refill();
     return buf_[pos_++];
+  }
+
+  /// The next n draws into out, as n calls of next() would give them.
+  void fill(double* out, std::size_t n) {
+    while (n > 0) {
+      if (pos_ == kBlock) refill();
+      const std::size_t m = std::min(n, std::size_t(kBlock - pos_));
+      std::memcpy(out, buf_.data() + pos_, m * sizeof(double));
+      out += m;
+      n -= m;
+      pos_ += int(m);
+    }
   }
 
   /// The n-th normal of the stream (random access: regenerates only the block holding it).

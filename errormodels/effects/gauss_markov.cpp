@@ -20,6 +20,12 @@ class ContinuousGm final : public DirectAxisErrorState<ContinuousGm> {
   ContinuousGm(int axis, double sigma, double tau, NormalStream s)
       : DirectAxisErrorState(axis), gm_(sigma, tau, s) {}
   double integral(const Interval& iv) override { return gm_.integral(iv.dt); }
+  void addIntegrals(Vec3* u, const Interval* iv, std::size_t n, int a) {
+    constexpr std::size_t kChunk = ExactGaussMarkov::kMaxChunk;
+    addIntegralsInChunks<kChunk>(u, iv, n, a, [this](const Interval* c, std::size_t m, double* I) {
+      gm_.integrals(m, [c](std::size_t i) { return c[i].dt; }, I);
+    });
+  }
 
  private:
   ExactGaussMarkov gm_;

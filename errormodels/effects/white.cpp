@@ -22,6 +22,14 @@ class ContinuousWhite final : public DirectAxisErrorState<ContinuousWhite> {
   double integral(const Interval& iv) override {
     return scale_.get(iv.dt, [this](double dt) { return n_ * std::sqrt(dt); }) * s_.next();
   }
+  // integral() over chunks of intervals: the same draws and operations, the draws taken at once.
+  void addIntegrals(Vec3* u, const Interval* iv, std::size_t n, int a) {
+    addIntegralsInChunks<128>(u, iv, n, a, [this](const Interval* c, std::size_t m, double* I) {
+      s_.fill(I, m);
+      for (std::size_t i = 0; i < m; ++i)
+        I[i] = scale_.get(c[i].dt, [this](double h) { return n_ * std::sqrt(h); }) * I[i];
+    });
+  }
 
  private:
   double n_;  // [signal·sqrt(s)]
