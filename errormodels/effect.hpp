@@ -25,6 +25,7 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "errormodels/effect_schema.hpp"
+#include "errormodels/flicker_gms.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/random.hpp"
 #include "common/types.hpp"
@@ -190,6 +191,9 @@ double whiteDensityOf(const EffectSpec& spec);
 /// Driving-noise standard deviation sigma_e [signal] of an `ar` effect: `sigma`, or
 /// `output_sigma`/sqrt(G) with G the variance gain of its `a` (effects/ar.cpp).
 double arDrivingSigmaOf(const EffectSpec& spec);
+/// The Gauss-Markov components of a `bias_instability` (B or floor, tau_range; flicker_gms.hpp):
+/// the ones its realisations draw. Throws InputError naming the key when tau_range is not valid.
+FlickerGms biasInstabilityGmsOf(const EffectSpec& spec);
 /// Refuses a process rate [Hz] slower than the IMU (throws InputError naming the effect).
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx);
 

@@ -28,4 +28,23 @@ inline std::vector<double> flickerGmTaus(double lo, double hi) {
   return taus;
 }
 
+/// Decades the components reach beyond a bias_instability's tau_range on each side: what keeps
+/// its Allan floor flat up to the range's ends (effects/bias_instability.cpp).
+inline constexpr double kFlickerWidenDecades = 1.5;
+
+/// The Gauss-Markov components of a bias_instability: each of standard deviation sigma.
+struct FlickerGms {
+  double sigma = 0.0;        ///< [signal]
+  std::vector<double> taus;  ///< correlation times [s]
+};
+
+/// The components of a bias_instability of coefficient B [signal] over tau_range [lo, hi] [s].
+inline FlickerGms biasInstabilityGms(double B, double lo, double hi) {
+  FlickerGms g;
+  g.taus = flickerGmTaus(lo * std::pow(10.0, -kFlickerWidenDecades),
+                         hi * std::pow(10.0, kFlickerWidenDecades));
+  g.sigma = B * std::sqrt(flickerGmVariance());
+  return g;
+}
+
 }  // namespace sinsim::errormodels

@@ -24,8 +24,6 @@
 namespace sinsim::errormodels {
 namespace {
 
-constexpr double kWidenDecades = 1.5;
-
 class FlickerState final : public AxisErrorState {
  public:
   FlickerState(int axis, double sigma, const std::vector<double>& taus, const InstanceContext& ctx)
@@ -45,12 +43,7 @@ class FlickerState final : public AxisErrorState {
 
 class BiasInstability final : public Effect {
  public:
-  BiasInstability(double B, double tauLo, double tauHi) {
-    const double lo = tauLo * std::pow(10.0, -kWidenDecades);
-    const double hi = tauHi * std::pow(10.0, kWidenDecades);
-    taus_ = flickerGmTaus(lo, hi);
-    sigma_ = B * std::sqrt(flickerGmVariance());
-  }
+  explicit BiasInstability(const FlickerGms& g) : taus_(g.taus), sigma_(g.sigma) {}
   std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const override {
     return std::make_unique<FlickerState>(ctx.site->axis, sigma_, taus_, ctx);
   }
@@ -73,20 +66,45 @@ const std::vector<ParamSchema>& paramsOf_bias_instability() {
   return p;
 }
 
+namespace {
+
+// The components a spec asks for, or the key and the message of what is wrong with it.
+struct ReadComponents {
+  FlickerGms gms;
+  std::string key, problem;
+};
+
+ReadComponents readComponents(const EffectSpec& spec) {
+  ReadComponents r;
+  const double floorPerB = std::sqrt(2.0 * std::log(2.0) / M_PI);  // ≈ 0.664
+  const double B = spec.has("B") ? valueOr(spec, "B", NAN) : valueOr(spec, "floor", NAN) / floorPerB;
+  const std::vector<double> range = valuesOf(spec, "tau_range");
+  r.key = "tau_range";
+  if (range.size() != 2)
+    r.problem = "expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]";
+  else if (!(range[0] > 0 && range[1] > range[0]))
+    r.problem = "expected 0 < shortest < longest";
+  else
+    r.gms = biasInstabilityGms(B, range[0], range[1]);
+  return r;
+}
+
+}  // namespace
+
+FlickerGms biasInstabilityGmsOf(const EffectSpec& spec) {
+  const ReadComponents r = readComponents(spec);
+  if (!r.problem.empty()) throw InputError(r.key + ": " + r.problem);
+  return r.gms;
+}
+
 std::unique_ptr<Effect> buildEffect_bias_instability(const EffectSpec& spec, const EffectSite&,
                                                      SpecProblems& problems) {
-  double B = spec.has("B") ? valueOr(spec, "B", NAN)
-                           : valueOr(spec, "floor", NAN) / std::sqrt(2.0 * std::log(2.0) / M_PI);
-  const std::vector<double> range = valuesOf(spec, "tau_range");
-  if (range.size() != 2) {
-    problems.add("tau_range", "expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]");
+  const ReadComponents r = readComponents(spec);
+  if (!r.problem.empty()) {
+    problems.add(r.key, r.problem);
     return nullptr;
   }
-  if (!(range[0] > 0 && range[1] > range[0])) {
-    problems.add("tau_range", "expected 0 < shortest < longest");
-    return nullptr;
-  }
-  return std::make_unique<BiasInstability>(B, range[0], range[1]);
+  return std::make_unique<BiasInstability>(r.gms);
 }
 
 }  // namespace sinsim::errormodels

@@ -118,8 +118,9 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
 
 // The filter's model from a file (relative to the scenario) or an inline model map, read into an
 // ErrorModelSpec by the one model reader and converted by filterModelFromSpec; the problems of a
-// model file are recorded at filter.model with the model file's own line and key.
-void parseFilter(const ConfigNode& root, const std::string& baseDir, FilterConfig& f) {
+// model file are recorded at filter.model with the model file's own line and key. `step`: the
+// GNSS interval [s] (the filter's step).
+void parseFilter(const ConfigNode& root, const std::string& baseDir, double step, FilterConfig& f) {
   const ConfigNode n = root["filter"];
   if (!n.exists()) return;
   n.allowKeys({"model"});
@@ -147,7 +148,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, FilterConfi
     }
   }
   std::vector<Diagnostic> problems;
-  f.sensors = filterModelFromSpec(spec, problems);
+  f.sensors = filterModelFromSpec(spec, step, problems);
   for (const Diagnostic& d : problems) m.error(d.str());
   f.enabled = problems.empty();
 }
@@ -171,7 +172,7 @@ AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, dou
   parseInitialErrors(root, c.initialErrors);
   parseAlignment(root, c.alignment);
   parseGnss(root, duration, c.gnss);
-  parseFilter(root, baseDir, c.filter);
+  parseFilter(root, baseDir, 1.0 / c.gnss.rate, c.filter);
   if (root.has("filter") && !c.gnss.enabled)
     root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
   if (c.gnss.enabled && !root.has("filter"))

@@ -12,14 +12,33 @@ using errormodels::EffectList;
 using errormodels::EffectSpec;
 using errormodels::Sensor;
 
-const char* kSupported = "white, bias, random_walk, gauss_markov, ar; scale_factor on the triad";
+const char* kSupported =
+    "white, bias, random_walk, gauss_markov, bias_instability, ar; scale_factor on the triad";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
 }
 
+// A bias_instability's Gauss-Markov components, the ones the simulation draws: a state each, but
+// a component faster than the filter step (which the step's series cannot take, and which the
+// step averages away) enters as white noise of its low-frequency density, N² = 2 σ² τ.
+void addFlicker(const EffectSpec& e, double step, SensorAxisModel& axis) {
+  const errormodels::FlickerGms g = errormodels::biasInstabilityGmsOf(e);
+  for (double tau : g.taus) {
+    if (tau < step) {
+      const double N2 = 2.0 * g.sigma * g.sigma * tau;
+      axis.whiteDensity = std::sqrt(axis.whiteDensity * axis.whiteDensity + N2);
+      continue;
+    }
+    StateBlock b = gaussMarkovState(g.sigma, tau);
+    b.name = "bias_instability";
+    axis.blocks.push_back(std::move(b));
+  }
+}
+
 // Adds one effect of an axis to the filter's model of that axis.
-void addEffect(const EffectSpec& e, SensorAxisModel& axis, std::vector<Diagnostic>& problems) {
+void addEffect(const EffectSpec& e, double step, SensorAxisModel& axis,
+               std::vector<Diagnostic>& problems) {
   using errormodels::valueOr;
   try {
     if (e.type == "white") {
@@ -38,6 +57,8 @@ void addEffect(const EffectSpec& e, SensorAxisModel& axis, std::vector<Diagnosti
       const double rate = valueOr(e, "rate", 0.0);
       axis.blocks.push_back(rate > 0.0 ? sampledGaussMarkovState(sigma, tau, rate)
                                        : gaussMarkovState(sigma, tau));
+    } else if (e.type == "bias_instability") {
+      addFlicker(e, step, axis);
     } else if (e.type == "ar") {
       axis.blocks.push_back(arState(errormodels::valuesOf(e, "a"),
                                     errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));
@@ -81,7 +102,7 @@ void addScaleFactors(const errormodels::SensorSpec& ss, Eigen::Vector3d& mean, E
 
 }  // namespace
 
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
                                       std::vector<Diagnostic>& problems) {
   FilterSensorModel m;
   for (Sensor s : {Sensor::gyro, Sensor::accel}) {
@@ -93,7 +114,7 @@ FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
       std::vector<Diagnostic> repeated;  // an `all` effect's problem is reported once, at x
       for (EffectList l : {EffectList::all, errormodels::axisList(axis)})
         for (const EffectSpec& e : ss.list(l))
-          if (e.enabled) addEffect(e, am, axis > 0 && l == EffectList::all ? repeated : problems);
+          if (e.enabled) addEffect(e, step, am, axis > 0 && l == EffectList::all ? repeated : problems);
       if (scaleMean[axis] != 0.0 || scaleVar[axis] != 0.0) {  // after the axis's own states
         StateBlock b = scaleFactorState(std::sqrt(scaleVar[axis]));
         b.x0(0) = scaleMean[axis];
@@ -104,9 +125,9 @@ FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
   return m;
 }
 
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec) {
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step) {
   std::vector<Diagnostic> problems;
-  FilterSensorModel m = filterModelFromSpec(spec, problems);
+  FilterSensorModel m = filterModelFromSpec(spec, step, problems);
   if (!problems.empty()) throw ConfigError(problems);
   return m;
 }

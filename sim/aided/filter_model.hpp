@@ -8,13 +8,17 @@
 //                    `rate` the held discrete walk is modelled by the continuous walk of the same K)
 //   gauss_markov   → 1 state σ, τ (with a `rate`: the held discrete GM, φ = exp(−h/τ), exactly,
 //                    as an AR(1) at that rate)
+//   bias_instability → its Gauss-Markov components (errormodels/flicker_gms.hpp, two per decade
+//                    over tau_range widened 1.5 decades each side: those the simulation draws), a
+//                    state each; a component faster than the filter step enters as white noise of
+//                    its low-frequency density (N² += 2 σ² τ)
 //   ar             → p companion states at the model's own rate
 //   scale_factor   → (triad, `value` or `diagonal`, optional `sigma`) 1 constant state per axis
 //                    with a mean or a sigma, prior mean the diagonal entry, prior sigma `sigma`;
 //                    after the axis's other states (several scale_factor effects add)
 // Disabled effects (`enabled: no`) are skipped. Every other effect (a scale_factor `matrix` with
-// off-diagonal entries, misalignment, g-sensitivity; bias_instability, ramp, sinusoid,
-// temperature, warmup, outliers, quantization) has no filter state here and is refused, naming
+// off-diagonal entries, misalignment, g-sensitivity; ramp, sinusoid, temperature, warmup,
+// outliers, quantization) has no filter state here and is refused, naming
 // the model file, line and key.
 #pragma once
 
@@ -26,14 +30,14 @@
 
 namespace sinsim::sim::aided {
 
-/// The filter's sensor model of `spec`. Problems (effects the filter cannot represent) are
-/// appended to `problems` with the effect's file, line and key path; the returned model then holds
-/// the effects that could be converted.
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec,
+/// The filter's sensor model of `spec` for a filter step of `step` [s] (the GNSS interval).
+/// Problems (effects the filter cannot represent) are appended to `problems` with the effect's
+/// file, line and key path; the returned model then holds the effects that could be converted.
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
                                       std::vector<Diagnostic>& problems);
 
 /// The same, throwing ConfigError with every problem when there is any.
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec);
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step);
 
 /// Exact equality of two state blocks (every matrix entry, rate and name).
 bool operator==(const StateBlock& a, const StateBlock& b);

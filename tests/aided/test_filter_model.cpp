@@ -143,13 +143,42 @@ TEST_CASE("filter model file: equal to the same model inline and to the states b
   requireClose(m, byHand());
 }
 
+TEST_CASE("filter model: a bias_instability becomes its Gauss-Markov components, the fast ones "
+          "white noise") {
+  // B = 10 deg/h over [1 s, 100 s]: components of variance B² ln 10 / (π d) each (d = 2 a
+  // decade) at τ_j = 10^-1.5 s · 10^((j + 0.5)/2), j = 0..9 (the range widened 1.5 decades each
+  // side; effects/bias_instability.cpp). GNSS at 2 Hz: a 0.5 s step, so τ_0 = 0.056 s and
+  // τ_1 = 0.18 s become white noise of density² 2 σ² τ, the other eight a state each.
+  const auto dir = test::freshTempDir("sinsim-filter-model-flicker");
+  test::writeText(dir / "bi.yaml",
+                  "gyro:\n  x: [{type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s]}]\n");
+  std::string scenario = kScenario;
+  scenario.replace(scenario.find("rate: 1 Hz"), 10, "rate: 2 Hz");
+  const sim::Scenario sc = sim::parseScenario(scenario + "filter: {model: bi.yaml}\n", "fm.yaml",
+                                              dir.string());
+  const SensorAxisModel& x = sc.aiding.filter.sensors.gyro[0];
+  const double B = 10.0 * kPi / 180.0 / 3600.0, s2 = B * B * std::log(10.0) / (2.0 * kPi);
+  auto tau = [](int j) { return std::pow(10.0, -1.5 + (j + 0.5) / 2.0); };
+  REQUIRE(x.blocks.size() == 8);
+  for (int j = 2; j < 10; ++j) {
+    const StateBlock& b = x.blocks[std::size_t(j - 2)];
+    INFO("component " << j);
+    CHECK(b.name == "bias_instability");
+    CHECK(b.F(0, 0) == Approx(-1.0 / tau(j)).epsilon(1e-12));
+    CHECK(b.P0(0, 0) == Approx(s2).epsilon(1e-12));
+    CHECK(b.Qc(0, 0) == Approx(2.0 * s2 / tau(j)).epsilon(1e-12));
+  }
+  CHECK(x.whiteDensity * x.whiteDensity == Approx(2.0 * s2 * (tau(0) + tau(1))).epsilon(1e-12));
+  CHECK(sc.aiding.filter.sensors.gyro[1].blocks.empty());  // x's own list only
+}
+
 TEST_CASE("filter model file: effects without filter states are refused with file, line, key") {
   const auto dir = test::freshTempDir("sinsim-filter-model-bad");
   test::writeText(dir / "bad.yaml", R"(gyro:
   triad:
     - {type: scale_factor, matrix: [[100 ppm, 10 ppm, 0], [0, 100 ppm, 0], [0, 0, 100 ppm]]}
   all:
-    - {type: bias_instability, B: 10 deg/h, tau_range: [1 s, 100 s]}
+    - {type: sinusoid, amplitude: 0.01 deg/s, frequency: 2 Hz, phase: 0 deg}
 accel:
   y:
     - {type: ramp, slope: 1 mg/h}
@@ -167,11 +196,11 @@ accel:
     CHECK(m.find("filter.model") != std::string::npos);
     // a scale factor with off-diagonal (misalignment) entries: no states for those
     CHECK(m.find("bad.yaml:3: gyro.triad[0]: scale_factor: off-diagonal") != std::string::npos);
-    CHECK(m.find("bad.yaml:5: gyro.all[0]: bias_instability:") != std::string::npos);
+    CHECK(m.find("bad.yaml:5: gyro.all[0]: sinusoid:") != std::string::npos);
     CHECK(m.find("bad.yaml:8: accel.y[0]: ramp:") != std::string::npos);
     CHECK(m.find("accel.y[1]") == std::string::npos);  // the supported white is not blamed
-    // bias_instability sits in `all`: reported once, not once per axis.
-    CHECK(m.find("bias_instability") == m.rfind("bias_instability"));
+    // the sinusoid sits in `all`: reported once, not once per axis.
+    CHECK(m.find("sinusoid:") == m.rfind("sinusoid:"));
   }
 }
 
