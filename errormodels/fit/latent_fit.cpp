@@ -485,12 +485,6 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
   return chosen ? chosenFirst(cands, chosen->first, order) : cands;
 }
 
-/// Blocks the block likelihood aims at (block_likelihood.hpp step 1): 2^12 keep a GM of T >= ~3 L
-/// at 20 min; a Kalman step costs O(states^2) until its gain is steady.
-constexpr std::size_t kTargetBlocks = 4096;
-/// Fewer blocks than this: the Whittle choice stands (the block means say little).
-constexpr std::size_t kMinBlocks = 64;
-
 /// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
 /// (whittleChoice's output): the drift-free sets within kBlockScoredRange of the best Whittle
 /// score rescored; in block-score order, the first set S (S + drift where that scores lower) with
@@ -498,7 +492,7 @@ constexpr std::size_t kMinBlocks = 64;
 /// unchanged when the record is too short or no set qualifies.
 std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bins, const std::vector<double>& x,
                                          std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
-  const std::size_t B = std::max<std::size_t>({1, x.size() / kTargetBlocks, p.m.front()});
+  const std::size_t B = blockSize(x.size(), p.m.front());
   if (x.size() / B < kMinBlocks) return cands;
   const BlockMeans means = blockMeans(x, p.dt, B);
   const double wMax = kPi * p.dt / p.tau.front();
