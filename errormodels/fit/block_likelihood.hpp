@@ -35,7 +35,9 @@
 //     (and again with drift where the slope could pay its cost).
 //  5. The sets scored (latent_fit.cpp blockChoice): the drift-free sets within kBlockScoredRange of
 //     the best Whittle score; a set's score is min(S, S + drift + 6.63 (chi^2_1 at 1 %: a ramp's
-//     sign is free)) + latentPenalty. The lowest wins.
+//     sign is free)) + latentPenalty. The lowest wins, except that a set whose slowest GM does not
+//     beat its walk-for-that-GM partner by a one-parameter cost is that partner (latent_fit.cpp
+//     withoutWalkLikeGms).
 #pragma once
 
 #include <algorithm>
