@@ -13,7 +13,10 @@
 //           [--whittle-selection]  (by the Whittle likelihood, not rescored by the block likelihood)
 //           [--min-right F --min-coverage F --expect N [--per-cell] [--min-ar-miss F]]
 //           [--min-coverage-averaged F]  (pooled over all seeds: LatentFit::averaged)
+//           [--max-walk-as-gm F]  (pooled over the cases with a walk: read as one more GM)
 //           (exit 1 below a floor: the ctest slices; --per-cell: in every cell and parameter)
+//   STUDY_PROBE=1 (2: every block-scored set) prints per seed the block criterion of the true set at
+//   the true parameters, fitted and re-optimised from the truth, against the chosen set
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 100 --case ar2+rw
 //       --case ar2+gm | build/bench/latent_fit_study --stdin
 //           (records with an AR term are fitted by fit/ar_slow_fit.hpp, `fit --kind ar+slow`)
@@ -35,6 +38,7 @@
 #include <nlohmann/json.hpp>
 
 #include "errormodels/fit/ar_slow_fit.hpp"
+#include "errormodels/fit/block_likelihood.hpp"
 #include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/fit/whittle_selection.hpp"
 #include "errormodels/fit/allan_fit.hpp"
@@ -244,6 +248,75 @@ void printDetectability(const std::string& label, const fit::LatentTermSet& trut
   std::fflush(stdout);
 }
 
+/// The true model of a record from its parameters (generate.py's names).
+fit::LatentModel trueModel(const std::map<std::string, double>& params) {
+  fit::LatentModel m;
+  auto get = [&](const char* n) { const auto i = params.find(n); return i == params.end() ? 0.0 : i->second; };
+  m.quantization = get("quantization"), m.white = get("white"), m.flicker = get("flicker");
+  m.randomWalk = get("random_walk"), m.drift = get("drift");
+  for (const char* g : {"gm1", "gm2"})
+    if (params.count(std::string(g) + ".tau"))
+      m.gm.push_back({get((std::string(g) + ".sigma").c_str()), get((std::string(g) + ".tau").c_str())});
+  return m;
+}
+
+std::string describeModel(const fit::LatentModel& m) {
+  char buf[400];
+  std::string out;
+  std::snprintf(buf, sizeof buf, "N %.3g Q %.3g B %.3g K %.3g", m.white, m.quantization, m.flicker, m.randomWalk);
+  out = buf;
+  for (const auto& g : m.gm) std::snprintf(buf, sizeof buf, " gm(%.3g, %.4g s)", g.sigma, g.tau), out += buf;
+  return out;
+}
+
+/// STUDY_PROBE: per seed, the block criterion (block_likelihood.hpp step 4) of the true set at the
+/// true parameters, at its fitted optimum (as scored in the fit) and re-optimised from the truth,
+/// against the chosen set's score: a fitted optimum above the truth's score is an optimiser miss,
+/// a chosen set below the truth's optimum is the criterion's (or the data's) choice.
+void probeTruth(const fit::LatentFit& f, const fit::LatentTermSet& truth, const std::map<std::string, double>& params,
+                const std::vector<double>& x, double rate, const fit::LatentFitOptions& base, int seed) {
+  if (truth.ar || truth.drift || !f.blockSelected) return;
+  const double dt = 1.0 / rate;
+  const std::size_t B = fit::blockSize(x.size(), f.m.front());
+  const fit::BlockMeans means = fit::blockMeans(x, dt, B);
+  const fit::WhittleBins bins = fit::whittleBins(x, dt);
+  const double wMax = kPi * dt / f.tau.front(), minT = base.minGmTauSamples * dt;
+  const double tHi = std::max(f.tau.back(), 2.0 * minT);
+  const fit::BlockObjective objective(means, &bins, wMax, truth.flicker);
+  const fit::LatentModel tm = trueModel(params);
+  const double pen = fit::latentPenalty(truth, base);
+  const double atTruth = objective(tm, false) + pen;
+  const fit::BlockSetFit fromTruth = fit::blockFitSet(means, &bins, wMax, truth, tm, minT, tHi);
+  double fitted = NAN, whittleGap = NAN, bestWhittle = INFINITY;
+  for (const auto& c : f.candidates) {
+    if (std::isfinite(c.whittleScore)) bestWhittle = std::min(bestWhittle, c.whittleScore);
+    if (c.terms == truth) fitted = c.blockScore, whittleGap = c.whittleScore;
+  }
+  whittleGap -= bestWhittle;
+  const double chosen = f.candidates.front().blockScore;
+  std::printf("  probe seed %d B %zu blocks %zu tau %.3g..%.3g s chosen [%s]%s: truth at true params %+.2f, "
+              "fitted %+.2f, re-optimised from truth %+.2f (relative to the chosen); truth's Whittle gap %.2f\n",
+              seed, B, means.y.size(), f.tau.front(), f.tau.back(), f.terms.name().c_str(),
+              f.terms == truth ? " (right)" : "", atTruth - chosen, fitted - chosen,
+              fromTruth.m2LogLik + pen - chosen, whittleGap);
+  // The two parts of the criterion (blocks, periodogram above them): the truth against the best
+  // block-scored other set (drift-free).
+  for (const auto& c : f.candidates) {
+    if (c.terms == truth || c.terms.drift || !std::isfinite(c.blockScore)) continue;
+    const fit::BlockSetFit w = fit::blockFitSet(means, &bins, wMax, c.terms, c.whittleModel, minT, tHi);
+    const fit::BlockSetFit t = fit::blockFitSet(means, &bins, wMax, truth, tm, minT, tHi);
+    std::printf("    truth - [%s]: blocks %+.2f, periodogram %+.2f, penalty %+.2f\n", c.terms.name().c_str(),
+                t.blocks.m2LogLik - w.blocks.m2LogLik, (t.m2LogLik - t.blocks.m2LogLik) - (w.m2LogLik - w.blocks.m2LogLik),
+                pen - fit::latentPenalty(c.terms, base));
+    break;
+  }
+  if (std::getenv("STUDY_PROBE") == std::string("2"))
+    for (const auto& c : f.candidates)
+      if (std::isfinite(c.blockScore))
+        std::printf("    [%s] block %+.6f whittle %.4f allan %s model %s\n", c.terms.name().c_str(), c.blockScore - chosen,
+                    c.whittleScore - bestWhittle, c.valid ? "valid" : "invalid", describeModel(c.whittleModel).c_str());
+}
+
 /// Whether this record carries every generating term detectably for the criterion: the truth
 /// set, fitted to it, scores below every valid strict subset of it (each term's chi^2 drop beats
 /// its penalty). When false the record is explained as well by fewer terms: a miss there is the
@@ -264,6 +337,9 @@ struct Tally {
   int right = 0, fitted = 0, failed = 0;
   int arOnlyMissed = 0, jointMissed = 0;  ///< AR cases: seeds with a long-tau point outside 99 %
   int detectable = 0, rightDetectable = 0;  ///< seeds with truthDetectable, and right among them
+  /// Records with a walk whose chosen set is the truth with the walk read as one more GM (drift
+  /// aside): the swap withoutWalkLikeGms (latent_fit.cpp) holds to the nested test's 1 %.
+  int walkAsGm = 0;
   std::map<std::string, int> covered, seen, chosen;
   /// Over every fitted seed (issue 11's floor): the chosen set has the parameter and its estimate
   /// lies within 2 stated sigma of the truth. A dropped term is a miss.
@@ -319,7 +395,13 @@ struct Tally {
       }
       std::printf("\n");
     }
+    if (std::getenv("STUDY_PROBE")) probeTruth(f, truth, params, x, rate, base, seed);
     ++chosen[f.terms.name()];
+    if (truth.randomWalk) {
+      fit::LatentTermSet swapped = truth, got = f.terms;
+      swapped.randomWalk = false, swapped.gm += 1, got.drift = swapped.drift;
+      walkAsGm += got == swapped;
+    }
     for (const auto& [name, value] : params)
       for (const auto& p : f.parameters)
         if (p.name == name && std::fabs(p.value - value) <= 2.0 * p.stdError) ++coveredAll[name];
@@ -364,6 +446,7 @@ struct Tally {
       std::printf(" %s %d (inclusion %.2f)", name.c_str(), c == coveredAveraged.end() ? 0 : c->second,
                   w == inclusion.end() ? 0.0 : w->second / std::max(fitted, 1));
     }
+    if (walkAsGm > 0) std::printf("\n   the walk read as a GM: %d/%d", walkAsGm, fitted + failed);
     if (arOnlyMissed + jointMissed > 0)
       std::printf("\n   a long-tau point (tau >= duration/40) outside the 99 %% band: AR alone %d/%d, AR + slow %d/%d",
                   arOnlyMissed, fitted, jointMissed, fitted);
@@ -386,6 +469,8 @@ struct Floors {
   /// Pooled over every seed, cell and true parameter: the selection-aware (averaged) statement
   /// covers the truth with 2 sigma (a term the sets never carry is a miss).
   double minCoverageAveraged = 0.0;
+  /// Pooled over the cells with a walk: at most this fraction of records has it read as a GM.
+  double maxWalkAsGm = 1.0;
   int expect = 0;
   bool perCell = false;
 };
@@ -435,6 +520,10 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detec
     if ((tally.fitted + tally.failed) % 10 == 0) tally.print();
   }
   std::printf("== final\n");
+  int walkRecords = 0, walkAsGm = 0;
+  for (const auto& [label, tally] : tallies)
+    if (tally.names.end() != std::find(tally.names.begin(), tally.names.end(), "random_walk"))
+      walkRecords += tally.fitted + tally.failed, walkAsGm += tally.walkAsGm;
   int records = 0, right = 0, checks = 0, covered = 0, checksAll = 0, coveredAll = 0, coveredAveraged = 0;
   for (const auto& [label, tally] : tallies) {
     tally.print();
@@ -449,7 +538,9 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detec
   std::printf("pooled: right set %d/%d, 2-sigma coverage %d/%d among right sets; over all seeds %d/%d with the "
               "chosen set's sigma, %d/%d selection-aware\n",
               right, records, covered, checks, coveredAll, checksAll, coveredAveraged, checksAll);
-  bool ok = records >= floors.expect && coveredAveraged >= floors.minCoverageAveraged * checksAll;
+  std::printf("the walk read as a GM: %d/%d records with a walk\n", walkAsGm, walkRecords);
+  bool ok = records >= floors.expect && coveredAveraged >= floors.minCoverageAveraged * checksAll &&
+            walkAsGm <= floors.maxWalkAsGm * walkRecords;
   if (floors.perCell) {
     for (const auto& [label, tally] : tallies) {
       const std::string s = cellShortfall(tally, floors);
@@ -459,8 +550,9 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detec
   } else {
     ok = ok && right >= floors.minRight * records && covered >= floors.minCoverage * checks;
   }
-  if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g, selection-aware >= %g)\n",
-                       floors.expect, floors.minRight, floors.minCoverage, floors.minCoverageAveraged);
+  if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g, selection-aware >= %g, "
+                       "walk read as a GM <= %g)\n", floors.expect, floors.minRight, floors.minCoverage,
+                       floors.minCoverageAveraged, floors.maxWalkAsGm);
   return ok ? 0 : 1;
 }
 
@@ -487,6 +579,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--min-coverage")) floors.minCoverage = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--min-coverage-averaged")) floors.minCoverageAveraged = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--expect")) floors.expect = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--max-walk-as-gm")) floors.maxWalkAsGm = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--min-ar-miss")) floors.minArMiss = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--penalty-per-parameter")) base.penaltyPerParameter = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};

@@ -32,11 +32,7 @@ BlockMeans blockMeans(const std::vector<double>& x, double dt, std::size_t perBl
 
 namespace {
 
-/// One state of the block state-space model (block_likelihood.hpp step 2), and r, its share of
-/// the block's own noise variance; p0 the state's variance before the first block.
-struct Component {
-  double f = 0, h = 0, q = 0, c = 0, r = 0, p0 = 0;
-};
+using Component = BlockComponent;
 
 /// The discrete AR(1) at dt of variance s2 and correlation time T, averaged over B samples.
 Component gmComponent(double s2, double T, double dt, std::size_t B) {
@@ -270,36 +266,42 @@ BlockLikelihood blockLikelihood(const BlockMeans& b, const LatentModel& model) {
   return filter(b, componentsOf(model, b.dt, b.perBlock, fl));
 }
 
+BlockObjective::BlockObjective(const BlockMeans& b, const WhittleBins* high, double wMax, bool flicker)
+    : b_(b), high_(high) {
+  if (flicker) flicker_ = flickerComponents(b.dt, b.perBlock, b.y.size());
+  if (!high) return;
+  const double wLow = 2.0 * kPi / double(b.perBlock);
+  while (b0_ < high->wHigh.size() && (b0_ == 0 || high->wHigh[b0_ - 1] < wLow)) ++b0_;
+  b1_ = b0_;
+  while (b1_ < high->wHigh.size() && high->wHigh[b1_] <= wMax) ++b1_;
+}
+
+double BlockObjective::operator()(const LatentModel& m, bool drift) const {
+  if (m.flicker > 0.0 && flicker_.empty()) throw InputError("block likelihood: objective built without flicker");
+  const BlockLikelihood l = filter(b_, componentsOf(m, b_.dt, b_.perBlock, flicker_));
+  double v = drift ? l.m2LogLikDrift : l.m2LogLik;
+  if (b1_ > b0_) {
+    const std::vector<double> f = whittleExpectedLevels(*high_, m);
+    for (std::size_t i = b0_; i < b1_; ++i) {
+      if (!(f[i] > 0.0)) return std::numeric_limits<double>::infinity();
+      v += 2.0 * high_->count[i] * (std::log(f[i]) + high_->level[i] / f[i]);
+    }
+  }
+  return v;
+}
+
 BlockSetFit blockFitSet(const BlockMeans& b, const WhittleBins* high, double wMax, const LatentTermSet& set,
                         const LatentModel& start, double minT, double maxT) {
   if (set.drift || set.ar) throw InputError("block likelihood: sets with drift or AR are not scored");
   if (set.gm != int(start.gm.size())) throw InputError("block likelihood: the start lacks the set's GM terms");
-  const std::vector<Component> fl =
-      set.flicker ? flickerComponents(b.dt, b.perBlock, b.y.size()) : std::vector<Component>{};
-  // The periodogram bins above the blocks' first null 2 pi / B and up to wMax.
-  std::size_t b0 = 0, b1 = 0;
-  if (high) {
-    const double wLow = 2.0 * kPi / double(b.perBlock);
-    while (b0 < high->wHigh.size() && (b0 == 0 || high->wHigh[b0 - 1] < wLow)) ++b0;
-    b1 = b0;
-    while (b1 < high->wHigh.size() && high->wHigh[b1] <= wMax) ++b1;
-  }
+  const BlockObjective objectiveOf(b, high, wMax, set.flicker);
   auto objective = [&](const std::vector<double>& p, bool drift) {
     const LatentModel m = modelOf(set, p);
     for (const GmTerm& g : m.gm)
       if (!(g.tau >= minT && g.tau <= maxT)) return std::numeric_limits<double>::infinity();
     for (std::size_t k = 1; k < m.gm.size(); ++k)
       if (m.gm[k].tau < 1.5 * m.gm[k - 1].tau) return std::numeric_limits<double>::infinity();
-    const BlockLikelihood l = filter(b, componentsOf(m, b.dt, b.perBlock, fl));
-    double v = drift ? l.m2LogLikDrift : l.m2LogLik;
-    if (b1 > b0) {
-      const std::vector<double> f = whittleExpectedLevels(*high, m);
-      for (std::size_t i = b0; i < b1; ++i) {
-        if (!(f[i] > 0.0)) return std::numeric_limits<double>::infinity();
-        v += 2.0 * high->count[i] * (std::log(f[i]) + high->level[i] / f[i]);
-      }
-    }
-    return v;
+    return objectiveOf(m, drift);
   };
   LatentModel s = start;
   for (GmTerm& g : s.gm) g.tau = std::clamp(g.tau, minT, maxT);

@@ -35,9 +35,12 @@
 //     (and again with drift where the slope could pay its cost).
 //  5. The sets scored (latent_fit.cpp blockChoice): the drift-free sets within kBlockScoredRange of
 //     the best Whittle score; a set's score is min(S, S + drift + 6.63 (chi^2_1 at 1 %: a ramp's
-//     sign is free)) + latentPenalty. The lowest wins.
+//     sign is free)) + latentPenalty. The lowest wins, except that a set whose slowest GM does not
+//     beat its walk-for-that-GM partner by a one-parameter cost is that partner (latent_fit.cpp
+//     withoutWalkLikeGms).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -69,6 +72,29 @@ struct BlockLikelihood {
 /// +inf for a model whose block variance is not positive. Throws InputError for an AR term.
 BlockLikelihood blockLikelihood(const BlockMeans& b, const LatentModel& model);
 
+/// One state of the block state-space model (step 2), and r, its share of the block's own noise
+/// variance; p0 the state's variance before the first block.
+struct BlockComponent {
+  double f = 0, h = 0, q = 0, c = 0, r = 0, p0 = 0;
+};
+
+/// The criterion of step 4 for one model: -2 log L of the block means (the level, and with
+/// `drift` the slope, profiled out) + the Whittle -2 log L of the periodogram bins above the
+/// blocks' first null up to wMax [rad/sample] (none when high is nullptr). `flicker`: whether
+/// models with flicker will be evaluated (its components are built once). +inf where a bin's
+/// expectation is not positive.
+class BlockObjective {
+ public:
+  BlockObjective(const BlockMeans& b, const WhittleBins* high, double wMax, bool flicker);
+  double operator()(const LatentModel& m, bool drift) const;
+
+ private:
+  const BlockMeans& b_;
+  const WhittleBins* high_;
+  std::vector<BlockComponent> flicker_;
+  std::size_t b0_ = 0, b1_ = 0;  ///< the bins used, [b0_, b1_)
+};
+
 /// One set's fit (step 4). high: the Whittle bins (nullptr: blocks alone); wMax [rad/sample] the
 /// highest frequency used; minT, maxT [s] the GM tau range.
 struct BlockSetFit {
@@ -83,6 +109,16 @@ struct BlockSetFit {
 inline constexpr double kDriftSlopeChi2 = 6.635;
 BlockSetFit blockFitSet(const BlockMeans& b, const WhittleBins* high, double wMax, const LatentTermSet& set,
                         const LatentModel& start, double minT, double maxT);
+
+/// Blocks the block likelihood aims at (step 1): 2^12 keep a GM of T >= ~3 L at 20 min; a Kalman
+/// step costs O(states^2) until its gain is steady.
+inline constexpr std::size_t kTargetBlocks = 4096;
+/// Fewer blocks than this: the Whittle choice stands (the block means say little).
+inline constexpr std::size_t kMinBlocks = 64;
+/// B of step 1 for N samples whose first fitted Allan point is m1.
+inline std::size_t blockSize(std::size_t samples, std::size_t m1) {
+  return std::max<std::size_t>({1, samples / kTargetBlocks, m1});
+}
 
 /// Sets further than this above the best Whittle score are not scored by the blocks.
 inline constexpr double kBlockScoredRange = 15.0;

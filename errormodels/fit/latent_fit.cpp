@@ -485,11 +485,33 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
   return chosen ? chosenFirst(cands, chosen->first, order) : cands;
 }
 
-/// Blocks the block likelihood aims at (block_likelihood.hpp step 1): 2^12 keep a GM of T >= ~3 L
-/// at 20 min; a Kalman step costs O(states^2) until its gain is steady.
-constexpr std::size_t kTargetBlocks = 4096;
-/// Fewer blocks than this: the Whittle choice stands (the block means say little).
-constexpr std::size_t kMinBlocks = 64;
+/// `order` (block-scored indices into cands) without the sets whose slowest GM the record cannot
+/// tell from a random walk. A random walk is the T -> inf limit of a GM (sigma^2 = K^2 T / 2), so a
+/// set S with a GM and no walk contains, at the boundary 1/T = 0, the set S' with that GM replaced
+/// by the walk: S against S' is one parameter (1/T) at a boundary, and S only says more than S'
+/// when its -2 log L is lower by that boundary test's 1 % point, the cost of a one-parameter term
+/// (5.41; the additive costs charge the swap only the GM's second parameter, 2.41, which lets a
+/// walk pass for a slow GM in ~6 % of records, P(chi^2_1 / 2 > 2.41)). S is then really S', as a
+/// set whose fit puts a variance at zero is really a smaller set. S' must have been scored.
+std::vector<std::size_t> withoutWalkLikeGms(const std::vector<LatentCandidate>& cands,
+                                            const std::vector<std::size_t>& order, const LatentFitOptions& penalty) {
+  const double nested = penalty.penaltyPerTerm + penalty.penaltyPerParameter;
+  auto raw = [&](std::size_t i) { return cands[i].blockScore - latentPenalty(cands[i].terms, penalty); };
+  std::vector<std::size_t> out;
+  for (std::size_t i : order) {
+    const LatentTermSet& t = cands[i].terms;
+    bool walkLike = false;
+    if (t.gm > 0 && !t.randomWalk) {
+      LatentTermSet walk = t;
+      walk.gm -= 1;
+      walk.randomWalk = true;
+      for (std::size_t k : order)
+        if (cands[k].terms == walk) walkLike = raw(k) - raw(i) < nested;
+    }
+    if (!walkLike) out.push_back(i);
+  }
+  return out;
+}
 
 /// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
 /// (whittleChoice's output): the drift-free sets within kBlockScoredRange of the best Whittle
@@ -498,7 +520,7 @@ constexpr std::size_t kMinBlocks = 64;
 /// unchanged when the record is too short or no set qualifies.
 std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bins, const std::vector<double>& x,
                                          std::vector<LatentCandidate> cands, const LatentFitOptions& penalty) {
-  const std::size_t B = std::max<std::size_t>({1, x.size() / kTargetBlocks, p.m.front()});
+  const std::size_t B = blockSize(x.size(), p.m.front());
   if (x.size() / B < kMinBlocks) return cands;
   const BlockMeans means = blockMeans(x, p.dt, B);
   const double wMax = kPi * p.dt / p.tau.front();
@@ -529,6 +551,7 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].blockScore < cands[b].blockScore; });
+  order = withoutWalkLikeGms(cands, order, penalty);
   const auto chosen = firstValid(cands, order, [&](std::size_t i) { return bool(drift[i]); });
   if (!chosen) return cands;
   cands[chosen->first].blockScore = cands[chosen->second].blockScore;  // S + drift: S's score
