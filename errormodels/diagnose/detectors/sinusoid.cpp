@@ -132,13 +132,20 @@ class LinePeriodogram {
   std::vector<std::complex<double>> U_;  // per block, kTerms moments
 };
 
-/// The periodogram's peak within +-1.5 Welch bins of the line: a coarse scan (the periodogram of
-/// the full record has many side lobes inside 3 Welch bins), then golden section.
-double refineFrequency(const DetectorContext& ctx, double lineFreq) {
+/// The search window of a Welch line at lineFreq [Hz]: +-1.5 Welch bins, inside (0, Nyquist].
+struct LineWindow {
+  double fa = 0, fb = 0;  // [Hz]
+};
+LineWindow lineWindow(const DetectorContext& ctx, double lineFreq) {
   const double df = ctx.record.rate_hz / double(ctx.setup.psdSegment);
-  const double fa = std::max(df * 0.25, lineFreq - 1.5 * df), fb = std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df);
-  const LinePeriodogram pg(ctx, 0.5 * (fa + fb), 0.5 * (fb - fa));
-  double bestF = lineFreq, bestP = -1;
+  return {std::max(df * 0.25, lineFreq - 1.5 * df), std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df)};
+}
+
+/// The periodogram's peak within the window: a coarse scan (the periodogram of the full record
+/// has many side lobes inside 3 Welch bins), then golden section.
+double refineFrequency(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w) {
+  const double fa = w.fa, fb = w.fb;
+  double bestF = 0.5 * (fa + fb), bestP = -1;
   const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(ctx.N) / double(ctx.setup.psdSegment))));
   for (int i = 0; i <= scan; ++i) {
     const double f = fa + (fb - fa) * i / scan;
@@ -155,6 +162,33 @@ double refineFrequency(const DetectorContext& ctx, double lineFreq) {
   return 0.5 * (a + b);
 }
 
+/// The line confirmed on the whole record's periodogram: its ordinate at the refined frequency f0
+/// against the median of the record's Fourier ordinates j / T in the window (those within 2 / T
+/// of f0, the line's own main lobe, left out). A continuum's ordinate is S(f) times an Exp(1)
+/// variate (chi^2_2 / 2; Priestley 1981 sec. 6.1.3), whose median is ln 2, so
+/// x = I(f0) ln 2 / median and P(max over the window > x) <= 2 M e^-x for M ordinates (Bonferroni;
+/// the factor 2 for the continuous search between them). Returns the Gaussian-equivalent z.
+/// Why: the Welch test's neighbourhood is one-sided in its lowest bins (k - 12 .. k - 3 does not
+/// exist there), so a red continuum (a Gauss-Markov or telegraph bias beyond its corner, a walk)
+/// stands out against the lower, higher-frequency bins; its "line" then refines to the window's low
+/// edge and has no peak in the fine ordinates (S(edge) / S(centre) <= 4 for f^-2 at bin 3). A line
+/// concentrates its power in one of the T / L fine ordinates per Welch bin: a line just at the Welch
+/// test's limit stands ~T / L times above the fine median.
+double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w, double f0) {
+  const double T = double(ctx.N) * ctx.dt;
+  std::vector<double> ords;
+  for (double j = std::ceil(w.fa * T); j / T <= w.fb; j += 1)
+    if (std::fabs(j / T - f0) > 2 / T) ords.push_back(pg.power(j / T, ctx.N));
+  if (ords.size() < 8) return 40.0;  // too few ordinates to judge: the Welch test stands alone
+  std::nth_element(ords.begin(), ords.begin() + std::ptrdiff_t(ords.size() / 2), ords.end());
+  const double median = ords[ords.size() / 2];
+  if (!(median > 0)) return 40.0;
+  const double x = pg.power(f0, ctx.N) * std::log(2.0) / median;
+  const double lnP = std::log(2.0 * double(ords.size())) - x;
+  if (lnP >= 0) return 0.0;
+  return lnP < -700 ? 40.0 : std::min(40.0, zFromTwoSidedP(std::exp(lnP)));
+}
+
 }  // namespace
 
 std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
@@ -164,7 +198,10 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), lineZ, lineF);
   if (!(lineZ > 0 && lineF > 0)) return {};
   const Units& u = ctx.units;
-  const double f0 = refineFrequency(ctx, lineF);
+  const LineWindow win = lineWindow(ctx, lineF);
+  const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
+  const double f0 = refineFrequency(ctx, pg, win);
+  lineZ = std::min(lineZ, fineLineZ(ctx, pg, win, f0));
   double ac, bs;
   power(ctx, f0, ac, bs);  // y ~ ac cos(w t) + bs sin(w t), t = (k + 0.5) dt
   const double At = std::hypot(ac, bs);
