@@ -1,7 +1,6 @@
 // Temperature: block means of the channel against block means of the sensor temperature,
 // polynomials of degree 1 and 2 in (T - T0) by least squares, T0 the first temperature.
 #include "errormodels/diagnose/detector.hpp"
-#include "errormodels/diagnose/significance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,37 +45,6 @@ void describeTemperature(const std::vector<double>& coef, double T0, const Units
   f.params["T0"] = T0;
 }
 
-/// The temperature's test given the model: the record's least-squares coefficient on the
-/// temperature, c = x'(y - ybar) / x'x with x = T - mean T per sample, against the scatter the
-/// current model predicts for it. For white noise Var c = sigma^2 / x'x and the least-squares
-/// trend's variance is sigma^2 / t't (t' t = dt^2 N (N^2 - 1) / 12), so
-///   Var c = V_trend t't / x'x,
-/// V_trend the model's trend variance (ModelNow, the ramp's test: realisations, accepted noises
-/// and the Gaussian noise the record without the temperature's line still shows). For red noise
-/// (walk, Gauss-Markov) and a temperature that rises and settles this overstates Var c (exact /
-/// this: 0.82 for a walk and a settling of time constant T/4, 0.51 for T/10; at most 1.03, for a
-/// half-cosine, the regressor with the least high-frequency content): the test is on the safe
-/// side. Student's t with the realisations as dof, as the ramp's. Without it the temperature had
-/// no own test and a 1.5x thermal drift (its Allan term rises only at the last tau points) was
-/// left unexplained or named a ramp.
-std::function<double(const ModelNow&)> conditionalTest(const DetectorContext& ctx) {
-  const auto& TK = ctx.record.temperature;
-  double tm = 0, ym = 0;
-  for (std::size_t k = 0; k < ctx.N; ++k) tm += TK[k] / double(ctx.N), ym += ctx.y[k] / double(ctx.N);
-  double xx = 0, xy = 0;
-  for (std::size_t k = 0; k < ctx.N; ++k) xx += (TK[k] - tm) * (TK[k] - tm), xy += (TK[k] - tm) * (ctx.y[k] - ym);
-  if (!(xx > 0)) return {};
-  const double c = xy / xx, n = double(ctx.N);
-  const double tt = ctx.dt * ctx.dt * n * (n * n - 1) / 12;
-  std::vector<double> rest(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c * (TK[k] - tm);
-  return [c, ratio = tt / xx, avar = allanVariance(rest, ctx.setup)](const ModelNow& m) {
-    const double var = (m.trendVarWith ? m.trendVarWith(avar) : m.trendVar) * ratio;
-    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
-    return zFromStudentT(std::fabs(c) / std::sqrt(var), m.trendDof);
-  };
-}
-
 }  // namespace
 
 std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
@@ -90,7 +58,10 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
   const Units& u = ctx.units;
   Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
   std::vector<Candidate> out;
-  const auto zGivenModel = conditionalTest(ctx);
+  // The temperature's test given the model: without it a thermal drift of 1.5x the base's Allan
+  // deviation (its Allan term rises only at the last tau points) was left unexplained or named a
+  // ramp. One regressor, the temperature itself (both polynomial candidates share the test).
+  const auto zGivenModel = regressorTestGivenModel(ctx, TK);
   for (int degree = 1; degree <= 2; ++degree) {
     Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), degree + 1);
     for (std::size_t j = 0; j < nb; ++j) {
