@@ -15,18 +15,22 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
+/// A Welch bin that stands out: its Gaussian-equivalent z (look-elsewhere corrected) and frequency.
+struct WelchLine {
+  double z = 0, freq = 0;  // [-], [Hz]
+};
+
 /// Narrow-line test on the raw Welch PSD: each bin against the median of its neighbourhood
 /// (bins k-12..k-3 and k+3..k+12; the Hann main lobe is +-2 bins), chi-square with the Welch EDF
 /// nu = 2 K / 1.056 (K segments, 50 % overlap Hann: Welch 1967, Percival & Walden 1993 eq. 292b),
-/// Bonferroni over the bins tested. Returns z (two-sided Gaussian equivalent) and the frequency
-/// [Hz]; z = 0 and freq = 0 when no bin stands out.
-void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
-  z = 0, freq = 0;
+/// Bonferroni over the bins tested. Returns up to `count` bins beyond the limit, most significant
+/// first, each more than 3 bins from the ones before (a line's main lobe, or one red stretch).
+std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
   const std::size_t nbins = p.psd.size();
-  if (nbins < 40) return;
+  if (nbins < 40) return {};
   const double nu = 2.0 * double(p.segments) / 1.056;
   const double medFactor = std::pow(1 - 2 / (9 * nu), 3);  // median of chi2_nu / nu (Wilson-Hilferty)
-  double bestP = 1.0;
+  std::vector<std::pair<double, std::size_t>> hits;  // (p of the bin, bin)
   std::size_t tested = 0;
   for (std::size_t k = 3; k + 3 < nbins; ++k) {
     std::vector<double> nb;
@@ -41,16 +45,21 @@ void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
     ++tested;
     const double ratio = p.psd[k] / ref;
     if (ratio < 4) continue;
-    const double pk = regularizedGammaQ(nu / 2, ratio * nu / 2);  // P(chi2_nu / nu > ratio)
-    if (pk < bestP) bestP = pk, freq = p.f[k];
+    hits.push_back({regularizedGammaQ(nu / 2, ratio * nu / 2), k});  // P(chi2_nu / nu > ratio)
   }
-  if (freq <= 0) return;
-  const double pAll = std::min(1.0, double(tested) * bestP);
-  if (pAll >= 1) {
-    freq = 0;
-    return;
+  std::sort(hits.begin(), hits.end());
+  std::vector<WelchLine> out;
+  std::vector<std::size_t> taken;
+  for (const auto& [pk, k] : hits) {
+    const double pAll = std::min(1.0, double(tested) * pk);
+    if (pAll >= 1 || out.size() >= count) break;
+    bool near = false;
+    for (auto t : taken) near = near || (k > t ? k - t : t - k) <= 3;
+    if (near) continue;
+    taken.push_back(k);
+    out.push_back({pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, p.f[k]});
   }
-  z = pAll > 0 ? zFromTwoSidedP(pAll) : 40.0;
+  return out;
 }
 
 /// Periodogram of the record at f [Hz]: y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt;
@@ -194,14 +203,21 @@ double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const Li
 std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   WelchOptions wo;
   wo.segment_length = ctx.setup.psdSegment;
-  double lineZ = 0, lineF = 0;
-  psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), lineZ, lineF);
-  if (!(lineZ > 0 && lineF > 0)) return {};
+  // The most significant Welch bins, each confirmed on the whole record's periodogram; the line
+  // is the one whose smaller z is largest. A red continuum's lowest bins can be the most
+  // significant by the Welch test and then fail the confirmation: the real line behind them (a
+  // test stand's 0.564 Hz beside a 10x Gauss-Markov in the ADIS16405 injections) must not be lost.
+  double lineZ = 0, f0 = 0;
+  for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4)) {
+    if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
+    const LineWindow win = lineWindow(ctx, line.freq);
+    const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
+    const double f = refineFrequency(ctx, pg, win);
+    const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
+    if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
+  }
+  if (!(f0 > 0)) return {};
   const Units& u = ctx.units;
-  const LineWindow win = lineWindow(ctx, lineF);
-  const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
-  const double f0 = refineFrequency(ctx, pg, win);
-  lineZ = std::min(lineZ, fineLineZ(ctx, pg, win, f0));
   double ac, bs;
   power(ctx, f0, ac, bs);  // y ~ ac cos(w t) + bs sin(w t), t = (k + 0.5) dt
   const double At = std::hypot(ac, bs);
