@@ -240,11 +240,14 @@ def report(rows):
 
 
 def in_subset(row, subset):
-    """--subset: ooc = one out-of-catalogue effect, two = two catalogue effects (the cases of two
-    floors, to iterate on a benchmark slice without its other records)."""
+    """--subset: ooc = one out-of-catalogue effect, two = two catalogue effects, weak = one
+    catalogue effect at 1.5x (the cases of three floors, to iterate on a benchmark slice without
+    its other records)."""
     hid = [h["effect"] for h in row["hidden"]]
     if subset == "ooc":
         return len(hid) == 1 and hid[0] in g.OUT_OF_CATALOGUE
+    if subset == "weak":
+        return len(hid) == 1 and hid[0] in g.CATALOGUE and row["hidden"][0]["size"] == 1.5
     return len(hid) == 2 and all(x in g.CATALOGUE for x in hid)
 
 
@@ -285,9 +288,10 @@ def main():
     ap.add_argument("--pool", choices=sorted(POOLS), default="all", help="where hidden effects are drawn from")
     ap.add_argument("--hidden-only", action="store_true",
                     help="diagnose only the hidden channel (studies: no clean-channel counts)")
-    ap.add_argument("--subset", choices=["ooc", "two"], default=None,
-                    help="diagnose only the records with one out-of-catalogue effect (ooc) or two "
-                         "catalogue effects (two), on their hidden channel; the same draws")
+    ap.add_argument("--subset", choices=["ooc", "two", "weak"], default=None,
+                    help="diagnose only the records with one out-of-catalogue effect (ooc), two "
+                         "catalogue effects (two) or one at 1.5x (weak), on their hidden channel; "
+                         "the same draws")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")
     ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",

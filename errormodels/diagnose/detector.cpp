@@ -2,6 +2,9 @@
 #include "errormodels/diagnose/detector.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "errormodels/diagnose/significance.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -12,6 +15,33 @@ const std::vector<DetectorType>& detectorTypes() {
 #undef SINSIM_DETECTOR
   };
   return types;
+}
+
+// For white noise Var c = sigma^2 / x'x and the least-squares trend's variance is sigma^2 / t't
+// (t't = dt^2 N (N^2 - 1) / 12), hence Var c = V_trend t't / x'x. For red noise this overstates
+// Var c when x has no more of its variance at the lowest frequencies than a line: computed
+// exactly (x' Sigma x / (x'x)^2 against this) for a walk and a GM of T/30, 0.51-0.95 for settling
+// curves of time constant T/10-T/4, 0.83 for a step, at most 1.03 for a half-cosine (the shape
+// with the least high-frequency content). The line's V_trend includes the Gaussian noise the
+// record without x's fit still shows (ModelNow::trendVarWith), so a walk the model lacks does not
+// pass for x.
+std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
+                                                               const std::vector<double>& x, double trials) {
+  double xm = 0, ym = 0;
+  for (std::size_t k = 0; k < ctx.N; ++k) xm += x[k] / double(ctx.N), ym += ctx.y[k] / double(ctx.N);
+  double xx = 0, xy = 0;
+  for (std::size_t k = 0; k < ctx.N; ++k) xx += (x[k] - xm) * (x[k] - xm), xy += (x[k] - xm) * (ctx.y[k] - ym);
+  if (!(xx > 0)) return {};
+  const double c = xy / xx, n = double(ctx.N);
+  const double tt = ctx.dt * ctx.dt * n * (n * n - 1) / 12;
+  std::vector<double> rest(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c * (x[k] - xm);
+  return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup)](const ModelNow& m) {
+    const double var = (m.trendVarWith ? m.trendVarWith(avar) : m.trendVar) * ratio;
+    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
+    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), m.trendDof);
+    return trials > 1 ? zFromTwoSidedP(std::min(1.0, trials * std::erfc(z / std::sqrt(2.0)))) : z;
+  };
 }
 
 std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,

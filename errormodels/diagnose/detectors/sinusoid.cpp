@@ -15,18 +15,22 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
+/// A Welch bin that stands out: its Gaussian-equivalent z (look-elsewhere corrected) and frequency.
+struct WelchLine {
+  double z = 0, freq = 0;  // [-], [Hz]
+};
+
 /// Narrow-line test on the raw Welch PSD: each bin against the median of its neighbourhood
 /// (bins k-12..k-3 and k+3..k+12; the Hann main lobe is +-2 bins), chi-square with the Welch EDF
 /// nu = 2 K / 1.056 (K segments, 50 % overlap Hann: Welch 1967, Percival & Walden 1993 eq. 292b),
-/// Bonferroni over the bins tested. Returns z (two-sided Gaussian equivalent) and the frequency
-/// [Hz]; z = 0 and freq = 0 when no bin stands out.
-void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
-  z = 0, freq = 0;
+/// Bonferroni over the bins tested. Returns up to `count` bins beyond the limit, most significant
+/// first, each more than 3 bins from the ones before (a line's main lobe, or one red stretch).
+std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
   const std::size_t nbins = p.psd.size();
-  if (nbins < 40) return;
+  if (nbins < 40) return {};
   const double nu = 2.0 * double(p.segments) / 1.056;
   const double medFactor = std::pow(1 - 2 / (9 * nu), 3);  // median of chi2_nu / nu (Wilson-Hilferty)
-  double bestP = 1.0;
+  std::vector<std::pair<double, std::size_t>> hits;  // (p of the bin, bin)
   std::size_t tested = 0;
   for (std::size_t k = 3; k + 3 < nbins; ++k) {
     std::vector<double> nb;
@@ -41,16 +45,21 @@ void psdLineTest(const PowerSpectrum& p, double& z, double& freq) {
     ++tested;
     const double ratio = p.psd[k] / ref;
     if (ratio < 4) continue;
-    const double pk = regularizedGammaQ(nu / 2, ratio * nu / 2);  // P(chi2_nu / nu > ratio)
-    if (pk < bestP) bestP = pk, freq = p.f[k];
+    hits.push_back({regularizedGammaQ(nu / 2, ratio * nu / 2), k});  // P(chi2_nu / nu > ratio)
   }
-  if (freq <= 0) return;
-  const double pAll = std::min(1.0, double(tested) * bestP);
-  if (pAll >= 1) {
-    freq = 0;
-    return;
+  std::sort(hits.begin(), hits.end());
+  std::vector<WelchLine> out;
+  std::vector<std::size_t> taken;
+  for (const auto& [pk, k] : hits) {
+    const double pAll = std::min(1.0, double(tested) * pk);
+    if (pAll >= 1 || out.size() >= count) break;
+    bool near = false;
+    for (auto t : taken) near = near || (k > t ? k - t : t - k) <= 3;
+    if (near) continue;
+    taken.push_back(k);
+    out.push_back({pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, p.f[k]});
   }
-  z = pAll > 0 ? zFromTwoSidedP(pAll) : 40.0;
+  return out;
 }
 
 /// Periodogram of the record at f [Hz]: y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt;
@@ -132,13 +141,20 @@ class LinePeriodogram {
   std::vector<std::complex<double>> U_;  // per block, kTerms moments
 };
 
-/// The periodogram's peak within +-1.5 Welch bins of the line: a coarse scan (the periodogram of
-/// the full record has many side lobes inside 3 Welch bins), then golden section.
-double refineFrequency(const DetectorContext& ctx, double lineFreq) {
+/// The search window of a Welch line at lineFreq [Hz]: +-1.5 Welch bins, inside (0, Nyquist].
+struct LineWindow {
+  double fa = 0, fb = 0;  // [Hz]
+};
+LineWindow lineWindow(const DetectorContext& ctx, double lineFreq) {
   const double df = ctx.record.rate_hz / double(ctx.setup.psdSegment);
-  const double fa = std::max(df * 0.25, lineFreq - 1.5 * df), fb = std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df);
-  const LinePeriodogram pg(ctx, 0.5 * (fa + fb), 0.5 * (fb - fa));
-  double bestF = lineFreq, bestP = -1;
+  return {std::max(df * 0.25, lineFreq - 1.5 * df), std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df)};
+}
+
+/// The periodogram's peak within the window: a coarse scan (the periodogram of the full record
+/// has many side lobes inside 3 Welch bins), then golden section.
+double refineFrequency(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w) {
+  const double fa = w.fa, fb = w.fb;
+  double bestF = 0.5 * (fa + fb), bestP = -1;
   const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(ctx.N) / double(ctx.setup.psdSegment))));
   for (int i = 0; i <= scan; ++i) {
     const double f = fa + (fb - fa) * i / scan;
@@ -155,16 +171,53 @@ double refineFrequency(const DetectorContext& ctx, double lineFreq) {
   return 0.5 * (a + b);
 }
 
+/// The line confirmed on the whole record's periodogram: its ordinate at the refined frequency f0
+/// against the median of the record's Fourier ordinates j / T in the window (those within 2 / T
+/// of f0, the line's own main lobe, left out). A continuum's ordinate is S(f) times an Exp(1)
+/// variate (chi^2_2 / 2; Priestley 1981 sec. 6.1.3), whose median is ln 2, so
+/// x = I(f0) ln 2 / median and P(max over the window > x) <= 2 M e^-x for M ordinates (Bonferroni;
+/// the factor 2 for the continuous search between them). Returns the Gaussian-equivalent z.
+/// Why: the Welch test's neighbourhood is one-sided in its lowest bins (k - 12 .. k - 3 does not
+/// exist there), so a red continuum (a Gauss-Markov or telegraph bias beyond its corner, a walk)
+/// stands out against the lower, higher-frequency bins; its "line" then refines to the window's low
+/// edge and has no peak in the fine ordinates (S(edge) / S(centre) <= 4 for f^-2 at bin 3). A line
+/// concentrates its power in one of the T / L fine ordinates per Welch bin: a line just at the Welch
+/// test's limit stands ~T / L times above the fine median.
+double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w, double f0) {
+  const double T = double(ctx.N) * ctx.dt;
+  std::vector<double> ords;
+  for (double j = std::ceil(w.fa * T); j / T <= w.fb; j += 1)
+    if (std::fabs(j / T - f0) > 2 / T) ords.push_back(pg.power(j / T, ctx.N));
+  if (ords.size() < 8) return 40.0;  // too few ordinates to judge: the Welch test stands alone
+  std::nth_element(ords.begin(), ords.begin() + std::ptrdiff_t(ords.size() / 2), ords.end());
+  const double median = ords[ords.size() / 2];
+  if (!(median > 0)) return 40.0;
+  const double x = pg.power(f0, ctx.N) * std::log(2.0) / median;
+  const double lnP = std::log(2.0 * double(ords.size())) - x;
+  if (lnP >= 0) return 0.0;
+  return lnP < -700 ? 40.0 : std::min(40.0, zFromTwoSidedP(std::exp(lnP)));
+}
+
 }  // namespace
 
 std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   WelchOptions wo;
   wo.segment_length = ctx.setup.psdSegment;
-  double lineZ = 0, lineF = 0;
-  psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), lineZ, lineF);
-  if (!(lineZ > 0 && lineF > 0)) return {};
+  // The most significant Welch bins, each confirmed on the whole record's periodogram; the line
+  // is the one whose smaller z is largest. A red continuum's lowest bins can be the most
+  // significant by the Welch test and then fail the confirmation: the real line behind them (a
+  // test stand's 0.564 Hz beside a 10x Gauss-Markov in the ADIS16405 injections) must not be lost.
+  double lineZ = 0, f0 = 0;
+  for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4)) {
+    if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
+    const LineWindow win = lineWindow(ctx, line.freq);
+    const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
+    const double f = refineFrequency(ctx, pg, win);
+    const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
+    if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
+  }
+  if (!(f0 > 0)) return {};
   const Units& u = ctx.units;
-  const double f0 = refineFrequency(ctx, lineF);
   double ac, bs;
   power(ctx, f0, ac, bs);  // y ~ ac cos(w t) + bs sin(w t), t = (k + 0.5) dt
   const double At = std::hypot(ac, bs);

@@ -58,6 +58,10 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
   const Units& u = ctx.units;
   Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
   std::vector<Candidate> out;
+  // The temperature's test given the model: without it a thermal drift of 1.5x the base's Allan
+  // deviation (its Allan term rises only at the last tau points) was left unexplained or named a
+  // ramp. One regressor, the temperature itself (both polynomial candidates share the test).
+  const auto zGivenModel = regressorTestGivenModel(ctx, TK);
   for (int degree = 1; degree <= 2; ++degree) {
     Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), degree + 1);
     for (std::size_t j = 0; j < nb; ++j) {
@@ -76,6 +80,7 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
     c.parameters = std::size_t(degree);
     c.g = allanVariance(sig, ctx.setup);
     c.signal = sig;
+    c.zConditional = zGivenModel;
     c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
                  num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
                  " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance";

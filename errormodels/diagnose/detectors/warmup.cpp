@@ -11,8 +11,9 @@ namespace sinsim::errormodels::diagnose::detail {
 namespace {
 
 struct Settling {
-  double A = 0;    // amplitude at t = 0 [SI]
-  double tau = 0;  // time constant [s]
+  double A = 0;       // amplitude at t = 0 [SI]
+  double tau = 0;     // time constant [s]
+  double octaves = 1; // of the time constants searched
 };
 
 Settling fitSettling(const DetectorContext& ctx) {
@@ -41,6 +42,7 @@ Settling fitSettling(const DetectorContext& ctx) {
   }
   Settling s;
   s.tau = std::exp(0.5 * (a + b));
+  s.octaves = std::max(1.0, (hi - lo) / std::log(2.0));
   rss(s.tau, beta);
   s.A = beta[1];
   return s;
@@ -91,6 +93,14 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   c.signal = w;
   double tStart = 0;
   c.zSpecial = startTest(ctx, tStart);
+  // The settling given the model: the record's coefficient on exp(-t / tau_w) against the scatter
+  // the current model predicts for it (regressorTestGivenModel), Bonferroni over the octaves of
+  // tau_w searched (neighbouring time constants give strongly correlated shapes: an upper bound).
+  // The start test above compares the first window step with the later ones' own scatter, not
+  // with what the model (and the effects it has accepted) predicts.
+  std::vector<double> shapeX(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) shapeX[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  c.zConditional = regressorTestGivenModel(ctx, shapeX, s.octaves);
   c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
                num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
   const Dimension signalDim = ctx.signal;
