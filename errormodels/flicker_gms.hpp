@@ -20,13 +20,19 @@ inline double flickerGmTau(double lo, int j) {
   return lo * std::pow(10.0, (j + 0.5) / kFlickerGmsPerDecade);
 }
 
-/// The components' correlation times covering [lo, hi] [s].
+/// The components' correlation times covering [lo, hi] [s] (0 < lo < hi, at most a few dozen
+/// decades apart: the caller checks).
 inline std::vector<double> flickerGmTaus(double lo, double hi) {
-  const int n = int(std::ceil(kFlickerGmsPerDecade * std::log10(hi / lo) - 1e-9));
+  const double decades = std::log10(hi) - std::log10(lo);  // hi / lo may overflow
+  const int n = int(std::ceil(kFlickerGmsPerDecade * decades - 1e-9));
   std::vector<double> taus;
   for (int j = 0; j < n; ++j) taus.push_back(flickerGmTau(lo, j));
   return taus;
 }
+
+/// The widest tau_range a bias_instability may span [decades] (with the widening, 54 components
+/// an axis, each drawn at every IMU interval).
+inline constexpr double kFlickerMaxDecades = 24.0;
 
 /// Decades the components reach beyond a bias_instability's tau_range on each side: what keeps
 /// its Allan floor flat up to the range's ends (effects/bias_instability.cpp).

@@ -84,6 +84,9 @@ ReadComponents readComponents(const EffectSpec& spec) {
     r.problem = "expected [shortest, longest] averaging time, e.g. [1 s, 1000 s]";
   else if (!(range[0] > 0 && range[1] > range[0]))
     r.problem = "expected 0 < shortest < longest";
+  else if (!(std::log10(range[1]) - std::log10(range[0]) <= kFlickerMaxDecades))
+    r.problem = "spans more than " + std::to_string(int(kFlickerMaxDecades)) +
+                " decades (two Gauss-Markov components a decade are drawn at every interval)";
   else
     r.gms = biasInstabilityGms(B, range[0], range[1]);
   return r;

@@ -85,6 +85,19 @@ accel:
   CHECK(hasDiagnostic(ds, 15, "accel.all[1]", "missing parameter"));
 }
 
+TEST_CASE("bias_instability: a tau_range that is reversed or too wide is refused, not dropped") {
+  // [1e-300 s, 1e12 s]: its ratio overflows a double; the component count once came out of an
+  // infinite logarithm and the effect silently drew nothing.
+  auto ds = diagnosticsOf(R"(gyro:
+  x: [{type: bias_instability, B: 10 deg/h, tau_range: [1e-300 s, 1e12 s]}]
+  y: [{type: bias_instability, B: 10 deg/h, tau_range: [100 s, 1 s]}]
+  z: [{type: bias_instability, B: 10 deg/h, tau_range: [1e-11 s, 1e12 s]}]
+)");
+  CHECK(hasDiagnostic(ds, 2, "gyro.x[0].tau_range", "spans more than 24 decades"));
+  CHECK(hasDiagnostic(ds, 3, "gyro.y[0].tau_range", "0 < shortest < longest"));
+  CHECK(ds.size() == 2);  // 23 decades are accepted
+}
+
 TEST_CASE("same seed gives bit-identical output; the stream of run k is regenerated alone") {
   const std::string text = R"(
 gyro:
