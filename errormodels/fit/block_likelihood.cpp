@@ -152,7 +152,7 @@ BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps)
     const double z[3] = {b.y[j], 1.0, (double(j) - mid) * L};
     double e[3];
     for (int col = 0; col < 3; ++col) {
-      double* mc = &m[std::size_t(col) * n];
+      double* mc = m.data() + std::size_t(col) * n;  // (m is empty without states)
       double pred = 0.0;
       for (std::size_t i = 0; i < n; ++i) pred += h[i] * mc[i];
       e[col] = z[col] - pred;
