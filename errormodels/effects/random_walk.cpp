@@ -26,8 +26,9 @@ class ContinuousWalk final : public DirectAxisErrorState<ContinuousWalk> {
   }
   // integral() over chunks of intervals: the same draws and operations, the draws taken at once.
   void addIntegrals(Vec3* u, const Interval* iv, std::size_t n, int a) {
-    addIntegralsInChunks<64>(u, iv, n, a, [this](const Interval* c, std::size_t m, double* I) {
-      double w[2 * 64];
+    constexpr std::size_t kChunk = 64;
+    addIntegralsInChunks<kChunk>(u, iv, n, a, [this](const Interval* c, std::size_t m, double* I) {
+      double w[2 * kChunk];
       s_.fill(w, 2 * m);
       double b = b_;
       for (std::size_t i = 0; i < m; ++i) {
