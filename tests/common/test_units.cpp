@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
 
@@ -14,7 +15,7 @@ using sinsim::parseQuantityAs;
 using Catch::Matchers::Contains;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using sinsim::kPi;
 constexpr double kRel = 1e-14;
 }
 

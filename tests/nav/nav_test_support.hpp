@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 #include "nav/earth.hpp"
 #include "nav/strapdown.hpp"
@@ -13,7 +14,7 @@ namespace navtest {
 
 using namespace sinsim::nav;
 
-constexpr double kPi = 3.14159265358979323846;
+using sinsim::kPi;
 constexpr double kDeg = kPi / 180.0;
 
 /// Ideal increments of a body at rest on the Earth (Titterton & Weston 2004 §3.5: at rest the

@@ -8,12 +8,13 @@
 #include <cmath>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "nav/attitude.hpp"
 
 using namespace sinsim::nav;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using sinsim::kPi;
 constexpr double kTol = 1e-14;
 
 // Quaternions q and -q are the same rotation.

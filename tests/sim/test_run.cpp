@@ -12,6 +12,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "nav/earth.hpp"
 #include "sim/run.hpp"
@@ -22,7 +23,6 @@ using namespace sinsim;
 namespace fs = std::filesystem;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 std::string scenarioPath(const std::string& name) {
   return std::string(SINSIM_SOURCE_DIR) + "/scenarios/" + name;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "sim/scenario.hpp"
 #include "test_support.hpp"
@@ -11,7 +12,6 @@
 using namespace sinsim;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 // The diagnostics of parsing `text`, or a test failure if it parses.
 std::vector<Diagnostic> problems(const std::string& text) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "nav/earth.hpp"
 #include "sim/ideal_imu.hpp"
 #include "sim/scenario.hpp"
@@ -18,7 +19,6 @@ using namespace sinsim;
 using nav::Vec3;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kOmegaWgs84 = 7.292115e-5;  // [rad/s] WGS-84 Earth rate (NIMA TR8350.2 3.2.4)
 
