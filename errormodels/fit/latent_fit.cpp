@@ -458,6 +458,40 @@ std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& can
   return out;
 }
 
+/// `order` (indices into cands, best first by `score`) without the sets whose slowest GM the record
+/// cannot tell from a random walk. A random walk is the T -> inf limit of a GM (sigma^2 = K^2 T / 2),
+/// so a set S with a GM and no walk contains, at the boundary 1/T = 0, the set S' with that GM
+/// replaced by the walk: S against S' is one parameter (1/T) at a boundary, and S only says more
+/// than S' when its -2 log L is lower by that boundary test's 1 % point, the cost of a
+/// one-parameter term (5.41; the additive costs charge the swap only the GM's second parameter,
+/// 2.41, which lets a walk pass for a slow GM in ~6 % of records, P(chi^2_1 / 2 > 2.41)). S is then
+/// really S', as a set whose fit puts a variance at zero is really a smaller set. S' must be in
+/// `order`. One rule for both likelihood choices: `score` is the block or the Whittle score, a
+/// -2 log L plus latentPenalty. (Not the Allan choice: its points stop at N dt / 10, where a GM
+/// whose hump lies in the last octaves and a walk differ by a point or two; there the rule turned
+/// real GMs into walks, docs/fitting.md.)
+template <class Score>
+std::vector<std::size_t> withoutWalkLikeGms(const std::vector<LatentCandidate>& cands,
+                                            const std::vector<std::size_t>& order, const LatentFitOptions& penalty,
+                                            Score score) {
+  const double nested = penalty.penaltyPerTerm + penalty.penaltyPerParameter;
+  auto raw = [&](std::size_t i) { return score(cands[i]) - latentPenalty(cands[i].terms, penalty); };
+  std::vector<std::size_t> out;
+  for (std::size_t i : order) {
+    const LatentTermSet& t = cands[i].terms;
+    bool walkLike = false;
+    if (t.gm > 0 && !t.randomWalk) {
+      LatentTermSet walk = t;
+      walk.gm -= 1;
+      walk.randomWalk = true;
+      for (std::size_t k : order)
+        if (cands[k].terms == walk) walkLike = raw(k) - raw(i) < nested;
+    }
+    if (!walkLike) out.push_back(i);
+  }
+  return out;
+}
+
 /// The Whittle choice (latent_fit.hpp step 7): every set without drift or AR scored by
 /// whittleFitSet from its Allan fit. In Whittle order, the first set S for which S (or S + drift
 /// when the removed line's slope b is significant under S's Whittle model: b^2 / v_S > the chi^2_1
@@ -479,38 +513,11 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
     if (std::isfinite(cands[i].whittleScore)) order.push_back(i);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].whittleScore < cands[b].whittleScore; });
+  order = withoutWalkLikeGms(cands, order, penalty, [](const LatentCandidate& c) { return c.whittleScore; });
   const auto chosen = firstValid(cands, order, [&](std::size_t i) {
     return bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, cands[i].whittleModel);
   });
   return chosen ? chosenFirst(cands, chosen->first, order) : cands;
-}
-
-/// `order` (block-scored indices into cands) without the sets whose slowest GM the record cannot
-/// tell from a random walk. A random walk is the T -> inf limit of a GM (sigma^2 = K^2 T / 2), so a
-/// set S with a GM and no walk contains, at the boundary 1/T = 0, the set S' with that GM replaced
-/// by the walk: S against S' is one parameter (1/T) at a boundary, and S only says more than S'
-/// when its -2 log L is lower by that boundary test's 1 % point, the cost of a one-parameter term
-/// (5.41; the additive costs charge the swap only the GM's second parameter, 2.41, which lets a
-/// walk pass for a slow GM in ~6 % of records, P(chi^2_1 / 2 > 2.41)). S is then really S', as a
-/// set whose fit puts a variance at zero is really a smaller set. S' must have been scored.
-std::vector<std::size_t> withoutWalkLikeGms(const std::vector<LatentCandidate>& cands,
-                                            const std::vector<std::size_t>& order, const LatentFitOptions& penalty) {
-  const double nested = penalty.penaltyPerTerm + penalty.penaltyPerParameter;
-  auto raw = [&](std::size_t i) { return cands[i].blockScore - latentPenalty(cands[i].terms, penalty); };
-  std::vector<std::size_t> out;
-  for (std::size_t i : order) {
-    const LatentTermSet& t = cands[i].terms;
-    bool walkLike = false;
-    if (t.gm > 0 && !t.randomWalk) {
-      LatentTermSet walk = t;
-      walk.gm -= 1;
-      walk.randomWalk = true;
-      for (std::size_t k : order)
-        if (cands[k].terms == walk) walkLike = raw(k) - raw(i) < nested;
-    }
-    if (!walkLike) out.push_back(i);
-  }
-  return out;
 }
 
 /// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
@@ -551,7 +558,7 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return cands[a].blockScore < cands[b].blockScore; });
-  order = withoutWalkLikeGms(cands, order, penalty);
+  order = withoutWalkLikeGms(cands, order, penalty, [](const LatentCandidate& c) { return c.blockScore; });
   const auto chosen = firstValid(cands, order, [&](std::size_t i) { return bool(drift[i]); });
   if (!chosen) return cands;
   cands[chosen->first].blockScore = cands[chosen->second].blockScore;  // S + drift: S's score

@@ -29,7 +29,10 @@
 //     included) took white + 2 GM for white + GM + RW in 15/40 seeds (bench/latent_study: the
 //     second GM's free T mimics a random walk); 5.41 per parameter took white + GM + flicker for
 //     white + 2 GM in 20/40 (docs/fitting.md). A set whose fit puts a variance at the zero bound
-//     is not a candidate (it is a smaller set). The runner-up is reported.
+//     is not a candidate (it is a smaller set). The runner-up is reported. (In the Whittle and
+//     block choices of steps 7-8, a set whose slowest GM beats the same set with that GM replaced
+//     by a random walk, its T -> inf limit, by less than a one-parameter term's cost, 5.41, is taken
+//     to be that walk set: latent_fit.cpp withoutWalkLikeGms.)
 //  5. Uncertainty: p = log of every parameter (variance coefficients and T_j); the Gauss-Newton
 //     covariance (J' Omega^-1 J)^-1 of p at the optimum, scaled by max(1, chi^2 / dof) (Birge
 //     ratio); 1-sigma of an amplitude A = sqrt(theta) is A sd(p) / 2, of T it is T sd(p).
@@ -38,7 +41,7 @@
 //     refitted under the final Omega, weighted exp(-delta score / 2), each with its 1-sigma
 //     under Omega from its own model; averaged per parameter (Buckland et al. 1997).
 //  7. With the record (fitLatentModel(x, ...)) and LatentFitOptions::whittleSelection, the set is
-//     chosen by the Whittle likelihood of the differenced record's periodogram instead
+//     chosen by the Whittle likelihood of the record's tapered, detrended periodogram instead
 //     (whittle_selection.hpp; every Fourier frequency down to 1 / (N dt) instead of 2-3 Allan
 //     points where a random walk lives): the best Whittle score among the sets without drift,
 //     started from their Allan fits; drift is added when the slope of the line the periodogram
