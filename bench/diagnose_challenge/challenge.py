@@ -241,13 +241,15 @@ def report(rows):
 
 def in_subset(row, subset):
     """--subset: ooc = one out-of-catalogue effect, two = two catalogue effects, weak = one
-    catalogue effect at 1.5x (the cases of three floors, to iterate on a benchmark slice without
-    its other records)."""
+    catalogue effect at 1.5x, strong = one at >= 3x (the cases of four floors, to iterate on a
+    benchmark slice without its other records)."""
     hid = [h["effect"] for h in row["hidden"]]
     if subset == "ooc":
         return len(hid) == 1 and hid[0] in g.OUT_OF_CATALOGUE
     if subset == "weak":
         return len(hid) == 1 and hid[0] in g.CATALOGUE and row["hidden"][0]["size"] == 1.5
+    if subset == "strong":
+        return len(hid) == 1 and hid[0] in g.CATALOGUE and hid[0] != "quantization" and row["hidden"][0]["size"] >= 3
     return len(hid) == 2 and all(x in g.CATALOGUE for x in hid)
 
 
@@ -288,9 +290,10 @@ def main():
     ap.add_argument("--pool", choices=sorted(POOLS), default="all", help="where hidden effects are drawn from")
     ap.add_argument("--hidden-only", action="store_true",
                     help="diagnose only the hidden channel (studies: no clean-channel counts)")
-    ap.add_argument("--subset", choices=["ooc", "two", "weak"], default=None,
+    ap.add_argument("--subset", choices=["ooc", "two", "weak", "strong"], default=None,
                     help="diagnose only the records with one out-of-catalogue effect (ooc), two "
-                         "catalogue effects (two) or one at 1.5x (weak), on their hidden channel; "
+                         "catalogue effects (two), one at 1.5x (weak) or one at >= 3x (strong), on "
+                         "their hidden channel; "
                          "the same draws")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")

@@ -108,6 +108,11 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
   for (const auto& r : real) w.trendVar += r.trend * r.trend / double(real.size());
   w.trendDof = double(real.size());
+  w.lowFreq = setup.lowFreq;
+  w.lowFreqVar.assign(w.lowFreq.u.size(), 0.0);
+  for (const auto& r : real)
+    for (std::size_t d = 0; d < r.lowFreq.size() && d < w.lowFreqVar.size(); ++d)
+      w.lowFreqVar[d] += r.lowFreq[d] * r.lowFreq[d] / double(real.size());
   if (auto a = baseAr(model, c, record.rate_hz)) {
     if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
     w.arOrder = a->size() - 1;
@@ -150,7 +155,8 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   if (m.needsTemperature() && record.temperature.empty())
     throw InputError("model " + model.source + " needs the sensor temperature, and " + record.source +
                      " has no temp column");
-  const Setup setup = makeSetup(record.rate_hz, record.rows, o);
+  Setup setup = makeSetup(record.rate_hz, record.rows, o);
+  setup.lowFreq = lowFrequencyBasis(record.rows, record.temperature);
   const auto mc = monteCarlo(m, record, channels, setup, o);
   Run run;
   run.d.data = record.source;

@@ -7,6 +7,7 @@
 
 #include "errormodels/diagnose/allan_chi2.hpp"
 #include "errormodels/diagnose/candidate.hpp"
+#include "errormodels/diagnose/low_frequency.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -33,6 +34,11 @@ struct ChannelWork {
   /// Mean square of the realisations' least-squares trends (the model's trend variance at level
   /// s = 1) [SI^2/s^2] and their number.
   double trendVar = 0, trendDof = 0;
+  /// The record's slowest scales (low_frequency.hpp): the slow directions, the mean square of the
+  /// realisations' coefficients on them (level s = 1) [SI^2], and the coefficients of the record
+  /// without the accepted signals, and without its steps too (empty without steps) [SI].
+  LowFrequencyBasis lowFreq;
+  std::vector<double> lowFreqVar, lowFreqCoef, jumpFreeCoef;
   std::vector<double> removed, baseAvar;
   /// On a record with level jumps (levelSteps, significance.hpp): ln AVAR of the record without
   /// the accepted signals and without its steps, and per candidate whether its own signal takes

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "errormodels/diagnose/level_shift.hpp"
+#include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/significance.hpp"
 #include "errormodels/fit/ar_fit.hpp"
@@ -42,12 +43,7 @@ double ownEvidence(const Candidate& c, const ModelNow& now) {
 /// of white noise times 4/3 and of a random walk times 10/9 (least squares: 12 s^2/(N T^2) and
 /// 6 K^2/(5 T)): on the high side, so an accepted noise never makes a trend look significant.
 double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T) {
-  const std::size_t K = g.size();
-  if (K == 0 || !(g[K - 1] > 0)) return 0.0;
-  double slope = 1.0;
-  if (K >= 2 && g[K - 2] > 0)
-    slope = std::clamp(std::log(g[K - 1] / g[K - 2]) / std::log(tau[K - 1] / tau[K - 2]), -1.0, 2.0);
-  return 8.0 * g[K - 1] * std::pow(0.5 * T / tau[K - 1], slope) / (T * T);
+  return 8.0 * allanTermAt(g, tau, 0.5 * T) / (T * T);
 }
 
 /// The trend variance of the current model: the realisations' (w.trendVar) at the fitted level
@@ -58,6 +54,41 @@ double currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>
   for (std::size_t j = 0; j < set.size(); ++j)
     v += (set[j]->freeSize ? sol.theta[j] : 1.0) * trendVarianceOf(set[j]->g, w.d.adev.x, T);
   return v;
+}
+
+/// The variance of the record's coefficient on each slow direction (low_frequency.hpp) under the
+/// model `set` at `sol` [SI^2]: the realisations' (w.lowFreqVar) at the fitted level plus each
+/// noise's (lowFrequencyVarianceOf, on the high side like trendVarianceOf). A candidate with a
+/// signal adds none: its signal is taken out of the coefficients instead.
+std::vector<double> lowFreqVarOf(const ChannelWork& w, const std::vector<const Candidate*>& set,
+                                 const AllanSolution& sol) {
+  const double T = double(w.y->size()) / w.rate;
+  std::vector<double> v(w.lowFreqVar.size());
+  for (std::size_t d = 0; d < v.size(); ++d) {
+    v[d] = sol.s * w.lowFreqVar[d];
+    for (std::size_t j = 0; j < set.size(); ++j)
+      if (set[j]->signal.empty())
+        v[d] += (set[j]->freeSize ? sol.theta[j] : 1.0) *
+                lowFrequencyVarianceOf(set[j]->g, w.d.adev.x, T, 1.0 / w.rate, w.lowFreq.k[d]);
+  }
+  return v;
+}
+
+/// What the record's longest scales say for a trial: the decrease of -2 ln L of the slow
+/// coefficients c (the record's, or without its steps) from the current model to the trial's,
+/// the candidate's signal (if any) taken out of c. A signal is credited only with a decrease: a
+/// fitted shape a little off (a warm-up's time constant bent by a thermal drift) leaves its own
+/// misfit in the slow coefficients, which its Allan terms already judge.
+double lowFreqGain(const ChannelWork& w, const std::vector<double>& c, const std::vector<double>& v0,
+                   const Candidate& cand, const std::vector<const Candidate*>& trial, const AllanSolution& sol) {
+  if (c.empty()) return 0.0;
+  auto c1 = c;
+  if (!cand.signal.empty()) {
+    const auto cs = lowFrequencyCoefficients(cand.signal, w.lowFreq);
+    for (std::size_t d = 0; d < c1.size() && d < cs.size(); ++d) c1[d] -= cs[d];
+  }
+  const double gain = lowFrequencyNll(c, v0, w.trendDof) - lowFrequencyNll(c1, lowFreqVarOf(w, trial, sol), w.trendDof);
+  return cand.signal.empty() ? gain : std::max(0.0, gain);
 }
 
 /// Closed-form AVAR on the tau grid of the AR base re-estimated (Burg, its order) on the record
@@ -132,6 +163,8 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
 /// record with the jumps taken out as well (trialRound) -- unless its own signal takes them out.
 void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeL.clear();
+  w.lowFreqCoef = lowFrequencyCoefficients(x, w.lowFreq);
+  w.jumpFreeCoef.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
   const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
   w.steps = stepSeries(w, x, modelAvar);
@@ -144,6 +177,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   s.n = x.size();
   s.factors = w.factors;
   const auto av = allanVariance(r, s);
+  w.jumpFreeCoef = lowFrequencyCoefficients(r, w.lowFreq);
   w.jumpFreeL.resize(av.size());
   for (std::size_t k = 0; k < av.size(); ++k) w.jumpFreeL[k] = std::log(std::max(av[k], 1e-300));
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
@@ -217,10 +251,13 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   now.trendVarWith = [&](const std::vector<double>& avar) { return trendVarWithNoise(w, set, taken, penalty, avar); };
   AllanProblem jumpFree = w.prob;
   double chi2JumpFree = 0;
+  AllanSolution jumpFreeSol;
   if (!w.jumpFreeL.empty()) {
     jumpFree.L = w.jumpFreeL;
-    chi2JumpFree = solveAllan(jumpFree, set, w.sol.theta).chi2;
+    jumpFreeSol = solveAllan(jumpFree, set, w.sol.theta);
+    chi2JumpFree = jumpFreeSol.chi2;
   }
+  const auto v0 = lowFreqVarOf(w, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     if (taken.count(w.cands[i].effect) || !(only.empty() || w.cands[i].effect == only)) continue;
     auto trial = set;
@@ -236,11 +273,17 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
       if (refitted.chi2 < t.sol[i].chi2) t.sol[i] = std::move(refitted), t.refit[i] = 1;
     }
     const double own = ownEvidence(w.cands[i], now) - penalty * double(w.cands[i].parameters);
-    t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + own;
+    t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + own + lowFreqGain(w, w.lowFreqCoef, v0, w.cands[i], trial, t.sol[i]);
     if (!w.jumpFreeL.empty() && !w.explainsJumps[i]) {
       AllanProblem p = t.refit[i] ? refitProblem : jumpFree;
       p.L = w.jumpFreeL;
-      t.drop[i] = std::min(t.drop[i], chi2JumpFree - solveAllan(p, trial, start).chi2 + own);
+      const auto jf = solveAllan(p, trial, start);
+      // A signal's coefficients are not taken out of the record without steps: the steps may
+      // already hold part of it (a warm-up's start); there it is credited by the Allan terms alone.
+      const double gain = w.cands[i].signal.empty()
+                              ? lowFreqGain(w, w.jumpFreeCoef, lowFreqVarOf(w, set, jumpFreeSol), w.cands[i], trial, jf)
+                              : 0.0;
+      t.drop[i] = std::min(t.drop[i], chi2JumpFree - jf.chi2 + own + gain);
     }
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
     if (best < 0 || t.drop[i] > t.drop[std::size_t(best)]) best = std::ptrdiff_t(i);

@@ -117,6 +117,7 @@ SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
   }
   out.acf = acfFromWelch(p.psd, s);
   out.trend = trendSlope(y, 1.0 / s.rate);
+  out.lowFreq = lowFrequencyCoefficients(y, s.lowFreq);
   return out;
 }
 

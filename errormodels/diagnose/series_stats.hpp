@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/low_frequency.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -19,12 +20,14 @@ struct Setup {
   std::vector<std::vector<std::size_t>> psdBandBins;  // bins of each band
   std::vector<double> psdBandFreq;                   // [Hz]
   std::size_t acfLags = 0;
+  LowFrequencyBasis lowFreq;  // the slowest cosines beyond slow shapes (low_frequency.hpp)
 };
 struct SeriesStats {
   std::vector<double> avar;  // per factor [SI^2]
   std::vector<double> psd;   // per band (mean of its bins) [SI^2/Hz]
   std::vector<double> acf;   // normalised, lags 0..acfLags
   double trend = 0;          // least-squares slope [SI/s] (trendSlope)
+  std::vector<double> lowFreq;  // coefficients on the slow directions [SI] (lowFrequencyCoefficients)
 };
 /// The grids for n samples at rate [Hz]; InputError when the PSD segment exceeds the record.
 Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o);

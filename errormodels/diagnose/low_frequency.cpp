@@ -1,0 +1,127 @@
+// The walk's test given the model (low_frequency.hpp).
+#include "errormodels/diagnose/low_frequency.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+constexpr std::size_t kBlocks = 1024;  // block sums: the slowest shapes vary little within one
+constexpr int kCosines = 6;            // half-periods T/1 .. T/6
+/// Settling time constants of the nuisance exponentials, as fractions of T: the warm-up detector
+/// searches T/2 down to a few blocks; three spread over it keep a settling out of the cosines.
+constexpr double kSettling[] = {1.0 / 4, 1.0 / 12, 1.0 / 40};
+constexpr double kKeep = 0.01;  // a cosine whose part beyond the nuisances is < 1 % of its norm^2 is dropped
+
+double dot(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& w) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += w[i] * a[i] * b[i];
+  return s;
+}
+
+/// v minus its projection on the orthonormal q (twice: modified Gram-Schmidt, re-orthogonalised).
+void orthogonalise(std::vector<double>& v, const std::vector<std::vector<double>>& q, const std::vector<double>& w) {
+  for (int pass = 0; pass < 2; ++pass)
+    for (const auto& e : q) {
+      const double p = dot(v, e, w);
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] -= p * e[i];
+    }
+}
+
+}  // namespace
+
+LowFrequencyBasis lowFrequencyBasis(std::size_t n, const std::vector<double>& temperature) {
+  LowFrequencyBasis b;
+  b.block = std::max<std::size_t>(1, (n + kBlocks - 1) / kBlocks);
+  const std::size_t nb = (n + b.block - 1) / b.block;
+  std::vector<double> s(nb), temp(temperature.empty() ? 0 : nb, 0.0);
+  b.count.assign(nb, 0.0);
+  for (std::size_t j = 0; j < nb; ++j) {
+    const std::size_t a = j * b.block, e = std::min(n, a + b.block);
+    b.count[j] = double(e - a);
+    s[j] = (0.5 * double(a + e)) / double(n);  // block centre as a fraction of the record
+    if (!temp.empty()) {
+      for (std::size_t k = a; k < e; ++k) temp[j] += temperature[k];
+      temp[j] /= b.count[j];
+    }
+  }
+  std::vector<std::vector<double>> nuisance{std::vector<double>(nb, 1.0), s};
+  for (double f : kSettling) {
+    std::vector<double> x(nb);
+    for (std::size_t j = 0; j < nb; ++j) x[j] = std::exp(-s[j] / f);
+    nuisance.push_back(x);
+  }
+  if (!temp.empty()) {
+    nuisance.push_back(temp);
+    auto t2 = temp;
+    for (double& v : t2) v *= v;
+    nuisance.push_back(t2);
+  }
+  std::vector<std::vector<double>> q;
+  for (auto& v : nuisance) {
+    const double raw = dot(v, v, b.count);
+    orthogonalise(v, q, b.count);
+    const double left = dot(v, v, b.count);
+    if (!(left > 1e-10 * raw)) continue;  // a constant temperature: nothing new
+    for (double& x : v) x /= std::sqrt(left);
+    q.push_back(std::move(v));
+  }
+  for (int k = 1; k <= kCosines; ++k) {
+    std::vector<double> v(nb);
+    for (std::size_t j = 0; j < nb; ++j) v[j] = std::cos(M_PI * double(k) * s[j]);
+    const double raw = dot(v, v, b.count);
+    orthogonalise(v, q, b.count);
+    const double left = dot(v, v, b.count);
+    if (!(left > kKeep * raw)) continue;
+    for (double& x : v) x /= std::sqrt(left);
+    q.push_back(v);
+    b.u.push_back(std::move(v));
+    b.k.push_back(double(k));
+  }
+  return b;
+}
+
+std::vector<double> lowFrequencyCoefficients(const std::vector<double>& y, const LowFrequencyBasis& b) {
+  if (b.u.empty() || b.block == 0) return {};
+  std::vector<double> sums(b.count.size(), 0.0);
+  for (std::size_t j = 0, k = 0; j < sums.size(); ++j) {
+    const std::size_t e = j + 1 == sums.size() ? y.size() : std::min(y.size(), k + b.block);
+    for (; k < e; ++k) sums[j] += y[k];
+  }
+  std::vector<double> c(b.u.size(), 0.0);
+  for (std::size_t d = 0; d < b.u.size(); ++d)
+    for (std::size_t j = 0; j < sums.size(); ++j) c[d] += b.u[d][j] * sums[j];
+  return c;
+}
+
+double allanTermAt(const std::vector<double>& g, const std::vector<double>& tau, double t) {
+  const std::size_t K = g.size();
+  if (K == 0 || !(g[K - 1] > 0)) return 0.0;
+  std::size_t e = 0;
+  while (e + 1 < K && tau[e] < t) ++e;
+  const std::size_t a = e > 0 ? e - 1 : 0;
+  const std::size_t b = e > 0 ? e : std::min<std::size_t>(1, K - 1);
+  double slope = 1.0;
+  if (b != a && g[a] > 0 && g[b] > 0) slope = std::clamp(std::log(g[b] / g[a]) / std::log(tau[b] / tau[a]), -1.0, 2.0);
+  return g[b] * std::pow(t / tau[b], slope);
+}
+
+double lowFrequencyVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T,
+                              double dt, double k) {
+  const double tk = T / (2.0 * k);
+  return 12.0 / (M_PI * M_PI) * (tk / dt) * allanTermAt(g, tau, tk);
+}
+
+double lowFrequencyNll(const std::vector<double>& c, const std::vector<double>& var, double dof) {
+  double nll = 0;
+  for (std::size_t d = 0; d < c.size() && d < var.size(); ++d) {
+    if (!(var[d] > 0)) return 0.0;
+    nll += (dof + 1) * std::log1p(c[d] * c[d] / (dof * var[d])) + std::log(var[d]);
+  }
+  return nll;
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail

@@ -1,0 +1,54 @@
+// The record's longest scales, beyond the Allan grid's T/10, as evidence in the selection.
+//
+// A random walk the model lacks lifts the Allan variance most at the longest tau, where the
+// octave curve (up to ~T/10) has few points and little weight; at T/2-T/4 its share over a white
+// base is 10-25x larger than at T/10. The record is projected on a few slow cosines made
+// orthogonal to what a slow deterministic effect would put there (a constant, a line, settling
+// exponentials, the temperature and its square); each coefficient is Gaussian with the variance
+// the current model predicts for it (the Monte Carlo realisations' mean square, plus each
+// accepted noise's from its Allan term), and a candidate is credited with the likelihood gain of
+// the coefficients when its variance is added: a walk (variance ~ 1/k^2 over the cosines) and a
+// slow Gauss-Markov or telegraph (flat below its corner) are told apart by the same data.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+/// Slow cosines on a grid of block sums, orthonormal (in the samples' inner product) and
+/// orthogonal to the nuisance shapes. Empty when the record is too short.
+struct LowFrequencyBasis {
+  std::size_t block = 0;                // samples per block (the last block may be shorter)
+  std::vector<double> count;            // samples in each block
+  std::vector<std::vector<double>> u;   // per direction, its value in each block
+  std::vector<double> k;                // the cosine index each direction stems from
+};
+
+/// The basis for n samples; the temperature per sample (empty: none) adds T and T^2 to the
+/// nuisance shapes.
+LowFrequencyBasis lowFrequencyBasis(std::size_t n, const std::vector<double>& temperature);
+
+/// The coefficients of y on the basis (sum over samples of u(t) y(t)) [SI].
+std::vector<double> lowFrequencyCoefficients(const std::vector<double>& y, const LowFrequencyBasis& b);
+
+/// An Allan term g on the tau grid [s] at t [s]: log-log between the grid points around t, carried
+/// beyond the grid along its last two points' slope (clamped to [-1, 2], white to ramp-like;
+/// slope 1 where a point is not positive); 0 when the last point is not positive.
+double allanTermAt(const std::vector<double>& g, const std::vector<double>& tau, double t);
+
+/// The variance of the coefficient on direction k (cosine index, half-period T/k) that a noise of
+/// AVAR g on the tau grid [s] makes [SI^2]: (12/pi^2) (tau_k/dt) g(tau_k) at tau_k = T/(2k)
+/// (allanTermAt). Exact for a random
+/// walk's plain cosine, 12/pi^2 = 1.22x for white noise; the projection on the nuisance shapes
+/// only lowers the true value: on the high side.
+double lowFrequencyVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T,
+                              double dt, double k);
+
+/// -2 ln L of the coefficients c under variances var [SI^2] (up to a constant), each variance the
+/// mean square of `dof` realisations: the scaled Student t's, sum over directions of
+/// (dof + 1) ln(1 + c^2 / (dof var)) + ln var (Gaussian, c^2/var + ln var, for dof -> infinity).
+/// Its decrease when a candidate's variance is added is what the longest scales say for it.
+double lowFrequencyNll(const std::vector<double>& c, const std::vector<double>& var, double dof);
+
+}  // namespace sinsim::errormodels::diagnose::detail
