@@ -136,6 +136,7 @@ void printBatch(const sim::McCommandResult& batch, int size) {
   const sim::McResult& r = batch.result;
   const sim::McOptions& opt = batch.options;
   if (opt.partition.rank != 0) return;
+  for (const std::string& w : batch.warnings) std::cerr << "sinsim mc: warning: " << w << "\n";
   if (!r.damaged.empty()) {
     std::cerr << "sinsim mc: " << r.damaged.size()
               << " damaged checkpoint(s) (checksum mismatch, truncated or unreadable) were "

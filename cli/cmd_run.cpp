@@ -95,6 +95,7 @@ void addRunCommand(CLI::App& app, Action& action) {
                 << s.wallTime << " s\n"
                 << sim::summaryLine(s) << "\n";
       if (!s.report.empty()) std::cout << "report: " << s.report << "\n";
+      for (const std::string& w : s.warnings) std::cerr << "sinsim run: warning: " << w << "\n";
       return 0;
     };
   });

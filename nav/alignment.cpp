@@ -24,4 +24,16 @@ Quat coarseAlignment(const Vec3& f_b, const Vec3& omega_ib_b) {
   return quatFromEuler(Vec3(roll, pitch, yaw));
 }
 
+Eigen::Matrix<double, 3, 6> coarseAlignmentSensitivity(double lat, double g, double omega) {
+  // Ĉ f̃_b = f_n + δf_n − ψ × f_n with f_n = (0, 0, −g): its level components vanish when
+  // δf_N + g ψ_E = 0 and δf_E − g ψ_N = 0. Ĉ ω̃_b's east component vanishes when
+  // δω_E = ψ_D Ω cos L + ψ_N Ω sin L (ω_n = Ω (cos L, 0, −sin L)).
+  Eigen::Matrix<double, 3, 6> J = Eigen::Matrix<double, 3, 6>::Zero();
+  J(0, 1) = 1.0 / g;
+  J(1, 0) = -1.0 / g;
+  J(2, 4) = 1.0 / (omega * std::cos(lat));
+  J(2, 1) = -std::tan(lat) / g;
+  return J;
+}
+
 }  // namespace sinsim::nav

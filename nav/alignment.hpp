@@ -18,4 +18,11 @@ namespace sinsim::nav {
 /// rate signal).
 Quat coarseAlignment(const Vec3& f_b, const Vec3& omega_ib_b);
 
+/// The first-order attitude error of coarseAlignment at latitude lat [rad] under gravity g
+/// [m/s^2] and Earth rate omega [rad/s]: ψ = J [δf_n; δω_n], ψ the phi-angle of the aligned
+/// attitude (Ĉ = (I − [ψ×]) C, NED), δf_n and δω_n the errors of the mean specific force and rate
+/// in NED [m/s^2, rad/s] (C_nb times the body errors). Leveling: ψ_N = δf_E / g, ψ_E = −δf_N / g;
+/// gyrocompassing: ψ_D = δω_E / (Ω cos L) − ψ_N tan L (T&W §10.2.1).
+Eigen::Matrix<double, 3, 6> coarseAlignmentSensitivity(double lat, double g, double omega);
+
 }  // namespace sinsim::nav

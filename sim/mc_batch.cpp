@@ -6,6 +6,8 @@
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
+#include "sim/aided/aided_navigation.hpp"
+#include "sim/nav_loop.hpp"
 #include "sim/reference.hpp"
 #include "sim/scenario.hpp"
 
@@ -53,6 +55,8 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.modelCount = models.size();
   batch.options = opt;
   batch.samples = ref.samples.size();
+  if (!ref.aiding.inert())
+    batch.warnings = aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
   if (batch.result.complete && opt.partition.rank == 0)
     batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times);
   return batch;

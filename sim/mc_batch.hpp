@@ -35,6 +35,7 @@ struct McCommandResult {
   std::size_t samples = 0; ///< IMU samples per run
   McResult result;
   McHeadlines headlines;  ///< empty unless the batch is complete
+  std::vector<std::string> warnings;  ///< about every run (aided: aided::startWarnings)
 };
 
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,

@@ -85,7 +85,7 @@ static void hashAiding(Fnv& f, const aided::AidingConfig& a) {
   f.value(a.alignment.duration);
   f.value(a.gnss.enabled);
   f.value(a.gnss.rate);
-  vec(a.gnss.positionSigma);
+  vec(a.gnss.positionSigma.value_or(nav::Vec3::Zero()));
   vec(a.gnss.velocitySigma.value_or(nav::Vec3::Zero()));
   vec(a.gnss.leverArm_b);
   for (const aided::TimeWindow& w : a.gnss.outages) {

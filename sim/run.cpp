@@ -167,6 +167,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   s.seed = seed;
   s.duration = static_cast<double>(source.sampleCount()) * (1.0 / sc.imuRate);  // as IdealImu::dt()
   s.imuSamples = source.sampleCount();
+  if (aiding) s.warnings = aided::startWarnings(earth, sc.aiding, sc.strapdown, source.initial());
   double sumH2 = 0.0, sumV2 = 0.0;
   long long rows = 0;
   double prevSpeed = source.initial().v_n.norm();
@@ -249,6 +250,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
       j["outages"].push_back({{"start_s", o.window.start}, {"end_s", o.window.end},
                               {"max_horizontal_m", o.maxHorizontal}, {"at_s", o.t},
                               {"filter_sigma_horizontal_m", o.sigmaHorizontal}});
+    if (!s.warnings.empty()) j["warnings"] = s.warnings;
     std::FILE* fSum = out->open("summary.json");
     const std::string text = j.dump(2) + "\n";
     std::fputs(text.c_str(), fSum);

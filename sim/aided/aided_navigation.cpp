@@ -1,6 +1,7 @@
 #include "sim/aided/aided_navigation.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "nav/alignment.hpp"
 #include "nav/attitude.hpp"
@@ -29,6 +30,45 @@ FilterOptions filterOptions(const AidingConfig& c, const nav::StrapdownOptions& 
 }
 
 }  // namespace
+
+std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConfig& config,
+                                       const nav::StrapdownOptions& strapdownOptions,
+                                       const nav::NavState& start) {
+  if (!config.filter.enabled) return {};
+  constexpr double deg = kDegPerRad;
+  char text[720];
+  if (!(config.alignment.duration > 0.0)) {
+    const nav::Vec3 s = config.initialErrors.attitude.spread();
+    if (!(s.maxCoeff() > kMaxStartAttitudeSigma)) return {};
+    std::snprintf(text, sizeof text,
+                  "initial_errors.attitude: the filter starts with an attitude 1-sigma of %.0f deg "
+                  "(roll, pitch, yaw: %.1f, %.1f, %.1f deg); the error-state filter is linear in the "
+                  "attitude error and is not valid beyond about %.0f deg, so its errors and sigmas "
+                  "until the attitude is observed are not to be trusted",
+                  s.maxCoeff() * deg, s.x() * deg, s.y() * deg, s.z() * deg,
+                  kMaxStartAttitudeSigma * deg);
+    return {text};
+  }
+  // The alignment at the true start as the filter's model predicts it (ideal mean signals).
+  ErrorStateFilter f(earth, config.filter.sensors, filterOptions(config, strapdownOptions));
+  const nav::Mat3 C = start.q_nb.toRotationMatrix();
+  const nav::Vec3 g_n = earth.gravity_n(start.lat, start.h);
+  f.startAfterAlignment(nav::coarseAlignmentSensitivity(start.lat, g_n.norm(), earth.rate()), C,
+                        -C.transpose() * g_n, C.transpose() * earth.omega_ie_n(start.lat),
+                        config.alignment.duration);
+  const double yaw = std::sqrt(f.P()(nav::kAtt + 2, nav::kAtt + 2));
+  if (!(yaw > kMaxStartAttitudeSigma)) return {};
+  std::snprintf(text, sizeof text,
+                "coarse alignment: the filter's own sensor model makes the gyrocompassed heading "
+                "uncertain by %.0f deg (1-sigma); the error-state filter is linear in the attitude "
+                "error and is not valid beyond about %.0f deg, so its errors and sigmas until the "
+                "heading is observed are not to be trusted. Gyrocompassing needs gyro errors well "
+                "below the Earth rate's horizontal part (%.1f deg/h here); with these gyros give "
+                "the heading instead (no alignment, initial_errors.attitude as its accuracy)",
+                yaw * deg, kMaxStartAttitudeSigma * deg,
+                earth.rate() * std::cos(start.lat) * deg * 3600.0);
+  return {text};
+}
 
 Vec9 navErrorStates(const nav::Earth& earth, const nav::NavState& nav,
                     const nav::NavState& truth) {
@@ -96,6 +136,13 @@ void AidedNavigation::align(const nav::ImuSample& m, const nav::NavState& truth,
   // the first-order attitudeError would leave θ³/6, 1e-4 rad for a 5° start).
   sd.correct(nav::Vec3::Zero(), nav::Vec3::Zero(),
              nav::rotationVectorFromQuat(q * sd.state().q_nb.conjugate()));
+  if (config_.filter.enabled) {
+    // The filter's attitude uncertainty is now the alignment's, from its own sensor model.
+    const nav::Vec3 f = sumDv_ / sumDt_;
+    filter_.startAfterAlignment(
+        nav::coarseAlignmentSensitivity(alignAnchor_.lat, f.norm(), earth_->rate()),
+        q.toRotationMatrix(), f, sumDtheta_ / sumDt_, sumDt_);
+  }
   aligned_ = true;
   fixIndex_ = static_cast<long long>(std::floor(truth.t * config_.gnss.rate + 1e-9));
   stepTime_ = 0.0;
@@ -108,11 +155,14 @@ void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
   const Vec9 e = navErrorStates(*earth_, s, truth);
   const nav::Vec3 lever_n = s.q_nb * g.leverArm_b;
   nav::Vec3 noise(posNoise_.next(), posNoise_.next(), posNoise_.next());
-  const nav::Vec3 dzPos =
-      e.segment<3>(0) + lever_n - truth.q_nb * g.leverArm_b - g.positionSigma.cwiseProduct(noise);
-  Innovation in = filter_.updatePosition(dzPos, lever_n, g.positionSigma);
-  out.nis = in.nis;
-  out.nisDof = 3;
+  out.nis = 0.0;
+  out.nisDof = 0;
+  if (g.positionSigma) {
+    const nav::Vec3 dzPos = e.segment<3>(0) + lever_n - truth.q_nb * g.leverArm_b -
+                            g.positionSigma->cwiseProduct(noise);
+    out.nis += filter_.updatePosition(dzPos, lever_n, *g.positionSigma).nis;
+    out.nisDof += 3;
+  }
   if (g.velocitySigma) {
     noise = nav::Vec3(velNoise_.next(), velNoise_.next(), velNoise_.next());
     // The antenna's velocity: the reference point's plus the rotation's lever-arm term (zero
@@ -121,9 +171,8 @@ void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
     const nav::Vec3 dzVel = e.segment<3>(3) + arm_n -
                             nav::leverArmVelocity(*earth_, truth, rateTrue, g.leverArm_b) -
                             g.velocitySigma->cwiseProduct(noise);
-    in = filter_.updateVelocity(dzVel, arm_n, *g.velocitySigma);
-    out.nis += in.nis;
-    out.nisDof = 6;
+    out.nis += filter_.updateVelocity(dzVel, arm_n, *g.velocitySigma).nis;
+    out.nisDof += 3;
   }
   out.aiding = true;
   const Vec9 c = filter_.takeNavCorrection();
@@ -146,6 +195,29 @@ nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& m) const {
     c.dv_b -= filter_.accelScale().cwiseProduct(m.dv_b);
   }
   return c;
+}
+
+// Propagates the filter over the step accumulated since the last one, linearised at its means.
+void AidedNavigation::propagateStep(nav::Strapdown& sd) {
+  nav::InsErrorPoint p;
+  p.lat = sum_.lat / stepTime_;
+  p.h = sum_.h / stepTime_;
+  p.v_n = sum_.v_n / stepTime_;
+  p.f_n = sum_.f_n / stepTime_;
+  p.C_nb = sum_.C_nb / stepTime_;
+  filter_.setVerticalGains(sd.dampingGainK1(), sd.dampingGainK2());
+  ScaleInput scale;
+  scale.C_omega = sumScale_.C_omega / stepTime_;
+  scale.C_f = sumScale_.C_f / stepTime_;
+  filter_.propagate(p, stepTime_, scale);
+  // The sampled (ar) blocks' predicted effect over the step (zero without them, or without fixes).
+  const Vec9 drift = filter_.takeNavCorrection();
+  if (!drift.isZero()) sd.correct(drift.segment<3>(0), drift.segment<3>(3), drift.segment<3>(6));
+  sum_ = nav::InsErrorPoint();
+  sum_.f_n.setZero();
+  sum_.C_nb.setZero();
+  sumScale_ = ScaleInput();
+  stepTime_ = 0.0;
 }
 
 FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::ImuSample& ideal,
@@ -174,27 +246,13 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
 
   const GnssConfig& g = config_.gnss;
   const double tick = static_cast<double>(fixIndex_ + 1) / g.rate;
-  if (truth.t + 0.5 * m.dt < tick) return out;
+  const bool fixDue = truth.t + 0.5 * m.dt >= tick;
+  // Fixes further apart than kMaxPropagationStep: the filter propagates at least that often in
+  // between, so that its linearisation follows the motion.
+  if (!fixDue && stepTime_ + 0.5 * m.dt < kMaxPropagationStep) return out;
+  propagateStep(sd);
+  if (!fixDue) return out;
   ++fixIndex_;
-  nav::InsErrorPoint p;
-  p.lat = sum_.lat / stepTime_;
-  p.h = sum_.h / stepTime_;
-  p.v_n = sum_.v_n / stepTime_;
-  p.f_n = sum_.f_n / stepTime_;
-  p.C_nb = sum_.C_nb / stepTime_;
-  filter_.setVerticalGains(sd.dampingGainK1(), sd.dampingGainK2());
-  ScaleInput scale;
-  scale.C_omega = sumScale_.C_omega / stepTime_;
-  scale.C_f = sumScale_.C_f / stepTime_;
-  filter_.propagate(p, stepTime_, scale);
-  // The sampled (ar) blocks' predicted effect over the step (zero without them, or without fixes).
-  const Vec9 drift = filter_.takeNavCorrection();
-  if (!drift.isZero()) sd.correct(drift.segment<3>(0), drift.segment<3>(3), drift.segment<3>(6));
-  sum_ = nav::InsErrorPoint();
-  sum_.f_n.setZero();
-  sum_.C_nb.setZero();
-  sumScale_ = ScaleInput();
-  stepTime_ = 0.0;
 
   out.outage = g.inOutage(truth.t);
   if (!out.outage)

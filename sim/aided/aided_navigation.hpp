@@ -14,9 +14,12 @@
 // 0, 1) are untouched, so a run with and without aiding sees the same IMU errors.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "common/constants.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/random.hpp"
 #include "nav/earth.hpp"
@@ -48,6 +51,18 @@ struct FilterEpoch {
   bool outage = false;                             // inside an outage window
 };
 
+/// The largest attitude 1-sigma [rad] the filter starts from without a warning: it is linear in
+/// the attitude error ψ, and beyond ~10° its errors and sigmas are no longer to be trusted.
+constexpr double kMaxStartAttitudeSigma = 10.0 * kRadPerDeg;
+
+/// What every run of the scenario should warn about, from its aiding and true start (static when
+/// it aligns): a filter attitude 1-sigma at the start beyond kMaxStartAttitudeSigma — from
+/// initial_errors.attitude, or from the coarse alignment as the filter's own model predicts it
+/// (ErrorStateFilter::startAfterAlignment; a gyro too poor to gyrocompass). Empty without a filter.
+std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConfig& config,
+                                       const nav::StrapdownOptions& strapdownOptions,
+                                       const nav::NavState& start);
+
 class AidedNavigation {
  public:
   /// earth must outlive the object; strapdownOptions as the strapdown runs (vertical channel;
@@ -72,6 +87,7 @@ class AidedNavigation {
   const ErrorStateFilter& filter() const { return filter_; }
 
  private:
+  void propagateStep(nav::Strapdown& sd);
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)
   // and the truth's; a velocity fix's lever-arm term needs them.

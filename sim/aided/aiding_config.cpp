@@ -112,14 +112,22 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
   n["rate"].check(std::isfinite(g.rate) && g.rate > 0.0, "expected a positive rate");
   if (n.has("position_sigma")) g.positionSigma = vec3(n["position_sigma"], D::length(), true);
   if (n.has("velocity_sigma")) g.velocitySigma = vec3(n["velocity_sigma"], D::speed(), true);
-  if (n.has("lever_arm")) g.leverArm_b = vec3(n["lever_arm"], D::length(), false);
+  n.check(n.has("position_sigma") || n.has("velocity_sigma"),
+          "expected position_sigma, velocity_sigma or both (what the fixes measure)");
+  if (n.has("lever_arm")) {
+    g.leverArm_b = vec3(n["lever_arm"], D::length(), false);
+    // Beyond any vehicle: a unit slip (mm given as m), and the filter's lever-arm terms would
+    // swamp its attitude.
+    n["lever_arm"].check(g.leverArm_b.allFinite() && g.leverArm_b.norm() <= kMaxLeverArm,
+                         "expected an antenna within 1 km of the IMU");
+  }
   parseOutages(n["outages"], duration, g.outages);
 }
 
 // The filter's model from a file (relative to the scenario) or an inline model map, read into an
 // ErrorModelSpec by the one model reader and converted by filterModelFromSpec; the problems of a
 // model file are recorded at filter.model with the model file's own line and key. `step`: the
-// GNSS interval [s] (the filter's step).
+// filter step [s] (the GNSS interval, at most kMaxPropagationStep).
 void parseFilter(const ConfigNode& root, const std::string& baseDir, double step, FilterConfig& f) {
   const ConfigNode n = root["filter"];
   if (!n.exists()) return;
@@ -172,7 +180,7 @@ AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, dou
   parseInitialErrors(root, c.initialErrors);
   parseAlignment(root, c.alignment);
   parseGnss(root, duration, c.gnss);
-  parseFilter(root, baseDir, 1.0 / c.gnss.rate, c.filter);
+  parseFilter(root, baseDir, std::min(1.0 / c.gnss.rate, kMaxPropagationStep), c.filter);
   if (root.has("filter") && !c.gnss.enabled)
     root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
   if (c.gnss.enabled && !root.has("filter"))

@@ -44,10 +44,18 @@ struct TimeWindow {
   bool contains(double t) const { return t >= start && t < end; }
 };
 
+/// The longest filter propagation step [s]: between GNSS fixes further apart (a rate below 1 Hz,
+/// or an outage) the filter still propagates this often, so that its error dynamics, linearised
+/// at the step's mean attitude and specific force, follow the motion.
+constexpr double kMaxPropagationStep = 1.0;
+
+/// The longest GNSS lever arm accepted [m].
+constexpr double kMaxLeverArm = 1000.0;
+
 struct GnssConfig {
   bool enabled = false;
   double rate = 1.0;                                // [Hz]
-  nav::Vec3 positionSigma = nav::Vec3::Constant(1.0);  // north, east, down [m]
+  std::optional<nav::Vec3> positionSigma;           // north, east, down [m]; none: velocity only
   std::optional<nav::Vec3> velocitySigma;           // NED [m/s]; none: position only
   nav::Vec3 leverArm_b = nav::Vec3::Zero();         // antenna in body axes [m]
   std::vector<TimeWindow> outages;                  // sorted, no fixes inside

@@ -100,6 +100,17 @@ class ErrorStateFilter {
   Innovation updateVelocity(const nav::Vec3& dz, const nav::Vec3& armVelocity_n,
                             const nav::Vec3& sigma);
 
+  /// The attitude after a coarse alignment over a static window of T [s] (alignment_prior.cpp):
+  /// ψ's mean, covariance and cross-covariance with the sensor states from the filter's own
+  /// model through the alignment's linear error map J (nav::coarseAlignmentSensitivity). The
+  /// window's mean sensor error of each block is its end value times a window gain plus an
+  /// independent part (white noise N²/T; a walk's or a Gauss-Markov's path over the window; a
+  /// sampled block's whole mean), rotated to NED by the aligned C_nb; f_b and omega_b are the
+  /// window's mean measured signals (the scale states' inputs). The walks' states are aged by the
+  /// window (variance + K² T): the filter starts at its end.
+  void startAfterAlignment(const Eigen::Matrix<double, 3, 6>& J, const nav::Mat3& C_nb,
+                           const nav::Vec3& f_b, const nav::Vec3& omega_b, double T);
+
   /// Closed-loop feedback: returns the estimated δr_n, δv_n, ψ and zeroes them in x (their
   /// covariance is unchanged: the correction is a known shift).
   Eigen::Matrix<double, 9, 1> takeNavCorrection();

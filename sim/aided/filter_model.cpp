@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/limits.hpp"
 #include "errormodels/effect.hpp"
 
 namespace sinsim::sim::aided {
@@ -69,7 +70,16 @@ void addEffect(const EffectSpec& e, double step, SensorAxisModel& axis,
     }
   } catch (const InputError& err) {
     problem(problems, e, err.what());
+    return;
   }
+  // A sampled process is propagated in whole periods of its rate within each filter step.
+  if ((e.type == "ar" || e.type == "gauss_markov") && !axis.blocks.empty() &&
+      axis.blocks.back().discrete && axis.blocks.back().period > step * (1.0 + 1e-9))
+    problem(problems, e,
+            "a process sampled every " + limits::fmt(axis.blocks.back().period) +
+                " s is slower than the filter's step of " + limits::fmt(step) +
+                " s (the GNSS interval, at most 1 s), which propagates it in whole periods; give "
+                "the model at a rate of at least " + limits::fmt(1.0 / step) + " Hz");
 }
 
 // A triad's scale_factor effects as one constant state per axis (several add: their means and

@@ -141,6 +141,19 @@ filter: {model: no-such-file.yaml}
                             "alignment.duration", "gnss.rate", "gnss.outages[0]", "filter.model"})
       CHECK(m.find(key) != std::string::npos);
   }
+  // Fixes that measure nothing, and an antenna a million km away (1e9 mm read as m).
+  try {
+    sim::parseScenario(std::string(kBase) + R"(
+gnss: {rate: 1 Hz, lever_arm: [1e9 m, 0 m, 0 m]}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)", "bad.yaml");
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    CHECK(m.find("bad.yaml:11: gnss: expected position_sigma, velocity_sigma or both") !=
+          std::string::npos);
+    CHECK(m.find("gnss.lever_arm: expected an antenna within 1 km") != std::string::npos);
+  }
 }
 
 TEST_CASE("GNSS off: the aided run navigates bit-identically to the free-inertial run") {
@@ -185,4 +198,39 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}, {type: bi
     }
   CHECK(differ == 0);
   CHECK(free.back().horizontal() > 1.0);  // the IMU errors do make the free run drift
+}
+
+TEST_CASE("coarse alignment with gyros that cannot gyrocompass: the run warns, a good gyro does not") {
+  // The heading 1-sigma after alignment is ≈ σ_gyro,east / (Ω cos L) (nav/alignment.hpp): at 48°
+  // Ω cos L = 10.1 deg/h, so a 20 deg/h gyro bias gives ~110° (the warning's threshold is 10°) and
+  // a 0.05 deg/h one ~0.3°.
+  auto scenario = [](const char* gyroBias) {
+    return std::string(kBase) + R"(
+alignment: {duration: 50 s}
+gnss: {rate: 1 Hz, position_sigma: 1 m}
+filter:
+  model:
+    gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}, {type: bias, sigma: )" +
+           gyroBias + R"(}]}
+    accel: {all: [{type: white, density: 0.05 m/s/sqrt(h)}, {type: bias, sigma: 0.5 mg}]}
+)";
+  };
+  const sim::RunSummary bad = sim::run(sim::parseScenario(scenario("20 deg/h"), "mems.yaml"));
+  REQUIRE(bad.warnings.size() == 1);
+  CHECK(bad.warnings[0].find("gyrocompass") != std::string::npos);
+  const sim::RunSummary good = sim::run(sim::parseScenario(scenario("0.05 deg/h"), "fog.yaml"));
+  CHECK(good.warnings.empty());
+  // Without alignment the start is the user's: a 30° heading sigma is as far outside the filter's
+  // validity, 10° is not beyond it.
+  auto given = [](const char* yawSigma) {
+    return std::string(kBase) + R"(
+initial_errors: {attitude: {sigma: [1 deg, 1 deg, )" + yawSigma + R"(]}}
+gnss: {rate: 1 Hz, position_sigma: 1 m}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)";
+  };
+  const sim::RunSummary wide = sim::run(sim::parseScenario(given("30 deg"), "wide.yaml"));
+  REQUIRE(wide.warnings.size() == 1);
+  CHECK(wide.warnings[0].find("initial_errors.attitude") != std::string::npos);
+  CHECK(sim::run(sim::parseScenario(given("10 deg"), "ten.yaml")).warnings.empty());
 }

@@ -75,3 +75,29 @@ TEST_CASE("coarse alignment refuses signals it cannot align on") {
   CHECK_THROWS(coarseAlignment(Vec3(0, 0, -9.8), Vec3(0, 0, 7e-5)));  // at a pole: no north
   CHECK_THROWS(coarseAlignment(Vec3(0, 0, NAN), Vec3(1e-5, 0, 0)));
 }
+
+TEST_CASE("coarse alignment: the linear error map against the alignment itself") {
+  // ψ = J [C_nb δf_b; C_nb δω_b] (coarseAlignmentSensitivity) against the ψ that coarseAlignment
+  // actually makes from perturbed signals, for errors on every axis at once (so that the tilt's
+  // coupling into heading, −ψ_N tan L, is exercised: 1.7x at 60°). Errors of 10 µg and
+  // 0.001 deg/h keep the second-order terms (the ratios δf/g = 1e-5 and δω/(Ω cos L) ≤ 1.3e-4)
+  // below 1e-3 of ψ, the tolerance.
+  const Earth earth;
+  const double omega = earth.omega_ie_n(0.0).norm();
+  const Vec3 rpy(-4.0 * kRadPerDeg, 7.0 * kRadPerDeg, -60.0 * kRadPerDeg);
+  const double dg = 1e-5 * 9.8, dw = 1e-3 * kRadPerDeg / 3600.0;
+  const Vec3 dirs[] = {Vec3(1, -2, 0.5), Vec3(-1, 0.3, 2), Vec3(0.2, 1, -1)};
+  for (double latDeg : {10.0, 60.0})
+    for (const Vec3& d : dirs) {
+      const double lat = latDeg * kRadPerDeg;
+      const Truth t = stationary(earth, lat, rpy);
+      const double g = earth.gravity_n(lat, 0.0).norm();
+      const Vec3 df = dg * d.normalized(), dwb = dw * Vec3(d.z(), d.x(), -d.y()).normalized();
+      const Vec3 psi = attitudeError(coarseAlignment(t.f_b + df, t.w_b + dwb), t.C_nb);
+      Eigen::Matrix<double, 6, 1> e;
+      e << t.C_nb * df, t.C_nb * dwb;
+      const Vec3 expect = coarseAlignmentSensitivity(lat, g, omega) * e;
+      INFO("lat " << latDeg << " psi " << psi.transpose() << " expected " << expect.transpose());
+      CHECK((psi - expect).norm() <= 1e-3 * expect.norm());
+    }
+}

@@ -30,19 +30,7 @@ using sinsim::kStandardGravity;
 namespace {
 
 
-// A 150 s drive: 20 s static, accelerate, a turn, cruise; GNSS outage 100-130 s.
-const char* kScenario = R"(
-name: consistency
-start: {latitude: 45 deg, longitude: 7 deg, height: 300 m, heading: 30 deg}
-imu_rate: 100 Hz
-vertical: free
-segments:
-  - {type: static, duration: 20 s}
-  - {type: accelerate, speed: 15 m/s, duration: 15 s}
-  - {type: cruise, duration: 20 s}
-  - {type: turn, heading_change: 90 deg, duration: 15 s}
-  - {type: cruise, duration: 80 s}
-)";
+// The drive: test::kConsistencyDrive (150 s); GNSS outage 100-130 s.
 
 // Truth and filter: the same processes (continuous forms, so that the filter's model is exact).
 const char* kModel = R"(
@@ -70,12 +58,6 @@ FilterSensorModel filterModel() {
   return m;
 }
 
-// Band of the mean of R independent χ²(d) / d·d values: d ± z sqrt(2d/R).
-bool inBand(double mean, int dof, int runs) {
-  const double z = 2.5758;  // two-sided 99 %
-  const double half = z * std::sqrt(2.0 * dof / runs);
-  return mean > dof - half && mean < dof + half;
-}
 
 struct Averages {
   double neesAiding = 0, neesOutage = 0, nis = 0;
@@ -86,34 +68,27 @@ struct Averages {
 // the run-averaged NEES at the last aided epoch and at the outage's last epoch, and the mean NIS
 // over every aided epoch past the initial transient.
 Averages consistencyRuns(const char* truthModel, const FilterSensorModel& filter, int runs,
-                         std::uint64_t seed) {
-  const sim::Scenario sc = sim::parseScenario(kScenario, "consistency.yaml");
+                         std::uint64_t seed, bool velocityOnly = false) {
+  const sim::Scenario sc = sim::parseScenario(test::kConsistencyDrive, "consistency.yaml");
   const nav::Earth earth;
   const test::IdealDrive ideal = test::idealDrive(sc, earth);
   const auto model = errormodels::ImuErrorModel::fromString(truthModel, "truth.yaml");
-  const AidingConfig cfg = test::consistencyAiding(100.0, 130.0);
+  AidingConfig cfg = test::consistencyAiding(100.0, 130.0);
+  if (velocityOnly) {  // GNSS velocity fixes only (0.05 m/s), no position
+    cfg.gnss.positionSigma.reset();
+    cfg.gnss.velocitySigma = nav::Vec3::Constant(0.05);
+  }
 
   const double tAiding = 99.0, tOutage = 129.0;  // last aided epoch, last epoch in the outage
   Averages avg;
-  for (int r = 0; r < runs; ++r) {
-    const errormodels::StreamKey key{seed, static_cast<std::uint64_t>(r)};
-    auto corruptor = model.instantiate(sc.imuRate, key);
-    AidedNavigation aided(earth, cfg, filter, sc.strapdown, key);
-    nav::Strapdown sd(earth, aided.initialState(ideal.start), sc.strapdown);
-    for (std::size_t k = 0; k < ideal.samples.size(); ++k) {
-      nav::ImuSample m = ideal.samples[k];
-      corruptor->corrupt(m, NAN);
-      const nav::ImuSample u = aided.compensate(m);
-      sd.update(u, ideal.truth[k].h);
-      const FilterEpoch fe = aided.afterInterval(u, ideal.samples[k], ideal.truth[k], sd);
-      if (std::abs(fe.t - tAiding) < 1e-6) avg.neesAiding += fe.nees;
-      if (std::abs(fe.t - tOutage) < 1e-6) avg.neesOutage += fe.nees;
-      if (fe.aiding && fe.t >= 30.0) {  // past the initial transient; NIS at every aided epoch
-        avg.nis += fe.nis;
-        ++avg.nisCount;
-      }
+  test::aidedRuns(sc, ideal, earth, model, cfg, filter, runs, seed, [&](int, const FilterEpoch& fe) {
+    if (std::abs(fe.t - tAiding) < 1e-6) avg.neesAiding += fe.nees;
+    if (std::abs(fe.t - tOutage) < 1e-6) avg.neesOutage += fe.nees;
+    if (fe.aiding && fe.t >= 30.0) {  // past the initial transient; NIS at every aided epoch
+      avg.nis += fe.nis;
+      ++avg.nisCount;
     }
-  }
+  });
   avg.neesAiding /= runs;
   avg.neesOutage /= runs;
   avg.nis /= avg.nisCount;
@@ -127,12 +102,24 @@ TEST_CASE("filter model = truth model: NEES and NIS inside their 99 % chi-square
   const Averages avg = consistencyRuns(kModel, filterModel(), runs, 7);
   INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
                                        << avg.neesOutage << ", mean NIS " << avg.nis);
-  CHECK(inBand(avg.neesAiding, 9, runs));
-  CHECK(inBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
   // The NIS average over every aided epoch of every run: consecutive NIS are nearly independent
   // (innovations are white when the model is right), so the band of 3·(runs·epochs) degrees of
   // freedom applies.
-  CHECK(inBand(avg.nis, 3, avg.nisCount));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+}
+
+TEST_CASE("velocity fixes only: NEES and NIS inside their bands") {
+  // The position is then unobserved (its errors only grow from the initial ones) while velocity
+  // and attitude are: the filter must stay consistent on all nine states. NIS of 3 residuals.
+  const int runs = 200;
+  const Averages avg = consistencyRuns(kModel, filterModel(), runs, 23, true);
+  INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
+                                       << avg.neesOutage << ", mean NIS " << avg.nis);
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
 }
 
 TEST_CASE("filter model = truth model AR(5) at 1 kHz, filter at 1 Hz: NEES and NIS in their bands") {
@@ -163,9 +150,9 @@ accel:
               avg.neesAiding, avg.neesOutage, avg.nis);
   INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
                                        << avg.neesOutage << ", mean NIS " << avg.nis);
-  CHECK(inBand(avg.neesAiding, 9, runs));
-  CHECK(inBand(avg.neesOutage, 9, runs));
-  CHECK(inBand(avg.nis, 3, avg.nisCount));
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
 }
 
 TEST_CASE("filter model = truth model with bias_instability (a datasheet's flicker): NEES, NIS in "
@@ -194,7 +181,29 @@ accel:
               "NIS %.3f\n", avg.neesAiding, avg.neesOutage, avg.nis);
   INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
                                        << avg.neesOutage << ", mean NIS " << avg.nis);
-  CHECK(inBand(avg.neesAiding, 9, runs));
-  CHECK(inBand(avg.neesOutage, 9, runs));
-  CHECK(inBand(avg.nis, 3, avg.nisCount));
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+}
+
+TEST_CASE("GNSS fixes 50 s apart: the filter propagates every second in between (NEES in band)") {
+  // The drive turns 90° between the fixes at 50 s and 100 s. One 50 s propagation step linearised
+  // at the step's mean attitude and specific force does not follow the turn; steps of at most
+  // kMaxPropagationStep (1 s) between the fixes do. Truth = filter (kModel), 200 runs.
+  const sim::Scenario sc = sim::parseScenario(test::kConsistencyDrive, "consistency.yaml");
+  const nav::Earth earth;
+  const test::IdealDrive ideal = test::idealDrive(sc, earth);
+  const auto model = errormodels::ImuErrorModel::fromString(kModel, "truth.yaml");
+  AidingConfig cfg = test::consistencyAiding(140.0, 141.0);
+  cfg.gnss.rate = 0.02;
+  const int runs = 200;
+  double nees[3] = {0, 0, 0};
+  test::aidedRuns(sc, ideal, earth, model, cfg, filterModel(), runs, 17,
+                  [&](int, const FilterEpoch& fe) {
+                    for (int e = 0; e < 3; ++e)
+                      if (fe.filtered && std::abs(fe.t - 50.0 * (e + 1)) < 1e-6)
+                        nees[e] += fe.nees / runs;
+                  });
+  INFO("NEES at 50 s " << nees[0] << ", 100 s " << nees[1] << ", 150 s " << nees[2]);
+  for (double v : nees) CHECK(test::inChiSquareBand(v, 9, runs));
 }

@@ -222,3 +222,27 @@ TEST_CASE("filter model: a missing model key and a model file that does not pars
     }
   }
 }
+
+TEST_CASE("filter model: a sampled process slower than the filter's step is refused with its line") {
+  // The filter propagates an AR or rated GM in whole periods within each step (the GNSS interval,
+  // at most 1 s): at 0.5 Hz against 1 Hz fixes a period is longer than a step. At 1 Hz it fits.
+  const auto dir = test::freshTempDir("sinsim-filter-model-slow");
+  for (const char* rate : {"1 Hz", "0.5 Hz"}) {
+    test::writeText(dir / "slow.yaml", std::string("gyro:\n  all:\n    - {type: ar, a: [-0.9], "
+                                                   "sigma: 0.01 deg/s, rate: ") + rate + "}\n");
+    const std::string text = std::string(kScenario) + "filter: {model: slow.yaml}\n";
+    if (std::string(rate) == "1 Hz") {
+      CHECK_NOTHROW(sim::parseScenario(text, "fm.yaml", dir.string()));
+      continue;
+    }
+    try {
+      sim::parseScenario(text, "fm.yaml", dir.string());
+      FAIL("expected a ConfigError");
+    } catch (const ConfigError& e) {
+      const std::string m = e.what();
+      INFO(m);
+      CHECK(m.find("slow.yaml:3: gyro.all[0]: ar: a process sampled every 2 s is slower than "
+                   "the filter's step of 1 s") != std::string::npos);
+    }
+  }
+}

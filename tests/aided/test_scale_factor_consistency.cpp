@@ -70,12 +70,6 @@ accel:
     - {type: random_walk, K: 0.05 m/s/h/sqrt(h)}
 )";
 
-// Two-sided 99 % band of the mean of R independent χ²(d) values (normal approximation, 9R ≥ 1800
-// degrees of freedom: quantile error < 0.3 %).
-bool inBand(double mean, int dof, int runs) {
-  const double half = 2.5758 * std::sqrt(2.0 * dof / runs);
-  return mean > dof - half && mean < dof + half;
-}
 
 // The truth's scale factors of run `key`: the scale-only model (same effects at the same place,
 // hence the same streams) applied to unit increments, s = u' − 1.
@@ -166,7 +160,7 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
   int inside[2] = {0, 0}, count[2] = {0, 0};
   for (std::size_t e = 0; e < nees.size(); ++e) {
     ++count[outage[e]];
-    inside[outage[e]] += inBand(nees[e] / runs, 9, runs);
+    inside[outage[e]] += test::inChiSquareBand(nees[e] / runs, 9, runs);
   }
   std::printf("scale factors, filter = truth, %d runs: NEES inside its 99 %% band at %d/%d aiding "
               "and %d/%d outage epochs\n", runs, inside[0], count[0], inside[1], count[1]);
