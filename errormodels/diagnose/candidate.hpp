@@ -11,17 +11,24 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+/// The scatter a model predicts for a record's least-squares trend: its variance [SI^2/s^2] and
+/// the effective degrees of freedom of that variance (the realisations' mean square has as many
+/// as there are realisations; a share in closed form is known exactly: satterthwaiteDof).
+struct TrendScatter {
+  double var = 0, dof = 0;
+};
+
 /// The current model (the base at its fitted level with the accepted noises) as a conditional
 /// test sees it.
 struct ModelNow {
   const std::vector<double>& avar;  // AVAR on the tau grid [SI^2]
-  /// Variance of a record's least-squares trend (trendSlope) under it [SI^2/s^2], and the degrees
-  /// of freedom of that estimate (the Monte Carlo realisations it is the mean square of).
+  /// Variance of a record's least-squares trend (trendSlope) under it [SI^2/s^2], and the
+  /// effective degrees of freedom of that estimate (TrendScatter).
   double trendVar = 0, trendDof = 0;
-  /// The trend variance [SI^2/s^2] of the current model with the Gaussian noise (a candidate
-  /// without a signal, or none) that best fits a series of AVAR `avar` on the tau grid [SI^2]:
-  /// what a noise the record shows but the model lacks adds to a realised trend.
-  std::function<double(const std::vector<double>& avar)> trendVarWith;
+  /// The trend scatter of the current model with the Gaussian noise (a candidate without a
+  /// signal, or none) that best fits a series of AVAR `avar` on the tau grid [SI^2]: what a noise
+  /// the record shows but the model lacks adds to a realised trend.
+  std::function<TrendScatter(const std::vector<double>& avar)> trendVarWith;
 };
 
 struct Candidate {

@@ -37,9 +37,10 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
   std::vector<double> rest(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c * (x[k] - xm);
   return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup)](const ModelNow& m) {
-    const double var = (m.trendVarWith ? m.trendVarWith(avar) : m.trendVar) * ratio;
-    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
-    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), m.trendDof);
+    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof};
+    const double var = s.var * ratio;
+    if (!(var > 0) || !(s.dof > 1)) return 0.0;
+    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), s.dof);
     return trials > 1 ? zFromTwoSidedP(std::min(1.0, trials * std::erfc(z / std::sqrt(2.0)))) : z;
   };
 }

@@ -55,13 +55,13 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   // one-sign test above sees a ramp only against the increments' own scatter (white noise's
   // increments are negatively correlated, so it is weak there: a 1.5x ramp on a white base gives
   // t ~ 1); this one weighs the trend by what the model predicts. Student's t with the
-  // realisations as dof.
+  // variance's effective dof (TrendScatter).
   std::vector<double> rest(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c.signal[k];
   c.zConditional = [slope, detrended = allanVariance(rest, ctx.setup)](const ModelNow& m) {
-    const double var = m.trendVarWith ? m.trendVarWith(detrended) : m.trendVar;
-    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
-    return zFromStudentT(std::fabs(slope) / std::sqrt(var), m.trendDof);
+    const TrendScatter s = m.trendVarWith ? m.trendVarWith(detrended) : TrendScatter{m.trendVar, m.trendDof};
+    if (!(s.var > 0) || !(s.dof > 1)) return 0.0;
+    return zFromStudentT(std::fabs(slope) / std::sqrt(s.var), s.dof);
   };
   c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
