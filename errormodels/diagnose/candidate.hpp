@@ -11,11 +11,14 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
-/// The scatter a model predicts for a record's least-squares trend: its variance [SI^2/s^2] and
-/// the effective degrees of freedom of that variance (the realisations' mean square has as many
-/// as there are realisations; a share in closed form is known exactly: satterthwaiteDof).
+/// The scatter a model predicts for a record's least-squares trend [SI^2/s^2]: the realisations'
+/// share (their mean square, realisedDof of them) and the accepted noises' share in closed form,
+/// with those noises' AVAR on the tau grid [SI^2] (for the scatter of another linear statistic).
+/// The variance's effective dof: satterthwaiteDof(realised, realisedDof, known).
 struct TrendScatter {
-  double var = 0, dof = 0;
+  double realised = 0, realisedDof = 0, known = 0;
+  std::vector<double> knownAvar;
+  double var() const { return realised + known; }
 };
 
 /// The current model (the base at its fitted level with the accepted noises) as a conditional

@@ -50,14 +50,17 @@ double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& 
 /// of them) at the fitted level plus each accepted noise's in closed form (trendVarianceOf), with
 /// the dof of that sum (satterthwaiteDof). After a large noise is accepted most of the variance is
 /// known exactly: judging a trend beside it with the realisations' 16 dof would turn a t of 10
-/// into a z of 5.7.
+/// into a z of 5.7. Also the accepted noises' AVAR (another shape's variance under them:
+/// regressorTestGivenModel).
 TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
   const double T = double(w.y->size()) / w.rate;
-  const double realised = sol.s * w.trendVar;
-  double known = 0;
-  for (std::size_t j = 0; j < set.size(); ++j)
-    known += (set[j]->freeSize ? sol.theta[j] : 1.0) * trendVarianceOf(set[j]->g, w.d.adev.x, T);
-  return {realised + known, satterthwaiteDof(realised, w.trendDof, known)};
+  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, std::vector<double>(w.d.adev.x.size(), 0.0)};
+  for (std::size_t j = 0; j < set.size(); ++j) {
+    const double theta = set[j]->freeSize ? sol.theta[j] : 1.0;
+    s.known += theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
+    for (std::size_t k = 0; k < s.knownAvar.size() && k < set[j]->g.size(); ++k) s.knownAvar[k] += theta * set[j]->g[k];
+  }
+  return s;
 }
 
 /// The variance of the record's coefficient on each slow direction (low_frequency.hpp) under the
@@ -253,7 +256,8 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
   const TrendScatter trendNow = currentTrendVar(w, set, w.sol);
-  ModelNow now{currentAvar, trendNow.var, trendNow.dof, nullptr};
+  ModelNow now{currentAvar, trendNow.var(), satterthwaiteDof(trendNow.realised, trendNow.realisedDof, trendNow.known),
+               nullptr};
   now.trendVarWith = [&](const std::vector<double>& avar) { return trendVarWithNoise(w, set, taken, penalty, avar); };
   AllanProblem jumpFree = w.prob;
   double chi2JumpFree = 0;

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
+#include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/significance.hpp"
 
 namespace d = sinsim::errormodels::diagnose::detail;
@@ -71,4 +73,36 @@ TEST_CASE("a trend beside a known noise keeps the Gaussian tail", "[diagnose][tr
   const int naive = exceedances(1.0, 0.0, dof, zLimit, draws,
                                 [](double) { return std::numeric_limits<double>::infinity(); }, 20261125u);
   CHECK(naive > 249);  // an infinite dof where nothing is known: the anti-conservative tail
+}
+
+// The variance of a regressor's coefficient from the cosines (coefficientVarianceOf) against the
+// exact x'Sigma x / (x'x)^2. A random walk of K from the first sample has Sigma_jk = K^2 dt
+// min(j + 1, k + 1), so x'Sigma x = K^2 dt sum_m (sum_{k >= m} x_k)^2 (tail sums); its Allan
+// variance is K^2 tau / 3. For a settling exp(-t / tau_w) the cosine sum must meet the exact value
+// (its cosine coefficients are uncorrelated; 3 % allows the block sums and the discrete walk),
+// where the trend-based bound (Var_trend t't / x'x, detector.cpp) overstates it many times for a
+// short settling. White noise: 12/pi^2 of the exact sigma^2 / x'x (the high side the cosine
+// variance documents), within 3 %.
+TEST_CASE("a regressor's variance from the cosines meets the exact one", "[diagnose][trend]") {
+  constexpr std::size_t n = 20000;
+  const double dt = 0.01, T = double(n) * dt, K = 2e-3;
+  std::vector<double> tau;
+  for (std::size_t m = 1; m <= n / 8; m *= 2) tau.push_back(double(m) * dt);
+  std::vector<double> gWalk(tau.size()), gWhite(tau.size());
+  const double sigma = 0.05;
+  for (std::size_t i = 0; i < tau.size(); ++i) gWalk[i] = K * K * tau[i] / 3, gWhite[i] = sigma * sigma * dt / tau[i];
+  for (double tw : {T / 4, T / 20, T / 100}) {
+    INFO("settling time constant T/" << T / tw);
+    std::vector<double> x(n);
+    double mean = 0;
+    for (std::size_t k = 0; k < n; ++k) x[k] = std::exp(-(double(k) + 0.5) * dt / tw), mean += x[k] / double(n);
+    double xx = 0, tail = 0, xSx = 0;
+    for (std::size_t k = 0; k < n; ++k) xx += (x[k] - mean) * (x[k] - mean);
+    for (std::size_t m = n; m-- > 0;) tail += x[m] - mean, xSx += tail * tail;
+    const double exactWalk = K * K * dt * xSx / (xx * xx);
+    const auto spec = d::cosineSpectrum(x);
+    CHECK(d::coefficientVarianceOf(spec, gWalk, tau, T, dt) / exactWalk == Approx(1.0).epsilon(0.03));
+    const double exactWhite = sigma * sigma / xx;
+    CHECK(d::coefficientVarianceOf(spec, gWhite, tau, T, dt) / exactWhite == Approx(12 / (M_PI * M_PI)).epsilon(0.03));
+  }
 }
