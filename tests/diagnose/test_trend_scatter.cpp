@@ -54,8 +54,9 @@ TEST_CASE("Satterthwaite dof of a variance partly known exactly", "[diagnose][tr
 // 20000 null trends each, 16 realisations: the share of z > 2.576 must be the Gaussian 1 % (200
 // expected, binomial sd 14.1; bounds +-3.5 sd = [151, 249]) when the closed-form share is 0, equal
 // to, or 9x the realised one. Judged with the realisations' 16 dof whatever is known, the 9x case
-// gives ~0.45 % (t Gaussian mapped through a t16 tail: ~90), below the bound; judged as if all
-// were known (z = t), the case with nothing known gives P(|t16| > 2.576) = 2.0 % (~400), above it.
+// gives ~0.35 % (t nearly Gaussian, z > 2.576 only for t > 2.92: ~70), below the bound; judged
+// as if all were known (z = t), the case with nothing known gives P(|t16| > 2.576) = 2.0 %
+// (~400), above it.
 TEST_CASE("a trend beside a known noise keeps the Gaussian tail", "[diagnose][trend]") {
   constexpr int draws = 20000, dof = 16;
   constexpr double zLimit = 2.576;  // two-sided 1 %
