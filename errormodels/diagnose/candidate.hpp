@@ -11,17 +11,27 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+/// The scatter a model predicts for a record's least-squares trend [SI^2/s^2]: the realisations'
+/// share (their mean square, realisedDof of them) and the accepted noises' share in closed form,
+/// with those noises' AVAR on the tau grid [SI^2] (for the scatter of another linear statistic).
+/// The variance's effective dof: satterthwaiteDof(realised, realisedDof, known).
+struct TrendScatter {
+  double realised = 0, realisedDof = 0, known = 0;
+  std::vector<double> knownAvar;
+  double var() const { return realised + known; }
+};
+
 /// The current model (the base at its fitted level with the accepted noises) as a conditional
 /// test sees it.
 struct ModelNow {
   const std::vector<double>& avar;  // AVAR on the tau grid [SI^2]
-  /// Variance of a record's least-squares trend (trendSlope) under it [SI^2/s^2], and the degrees
-  /// of freedom of that estimate (the Monte Carlo realisations it is the mean square of).
+  /// Variance of a record's least-squares trend (trendSlope) under it [SI^2/s^2], and the
+  /// effective degrees of freedom of that estimate (TrendScatter).
   double trendVar = 0, trendDof = 0;
-  /// The trend variance [SI^2/s^2] of the current model with the Gaussian noise (a candidate
-  /// without a signal, or none) that best fits a series of AVAR `avar` on the tau grid [SI^2]:
-  /// what a noise the record shows but the model lacks adds to a realised trend.
-  std::function<double(const std::vector<double>& avar)> trendVarWith;
+  /// The trend scatter of the current model with the Gaussian noise (a candidate without a
+  /// signal, or none) that best fits a series of AVAR `avar` on the tau grid [SI^2]: what a noise
+  /// the record shows but the model lacks adds to a realised trend.
+  std::function<TrendScatter(const std::vector<double>& avar)> trendVarWith;
 };
 
 struct Candidate {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/significance.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -22,9 +23,12 @@ const std::vector<DetectorType>& detectorTypes() {
 // Var c when x has no more of its variance at the lowest frequencies than a line: computed
 // exactly (x' Sigma x / (x'x)^2 against this) for a walk and a GM of T/30, 0.51-0.95 for settling
 // curves of time constant T/10-T/4, 0.83 for a step, at most 1.03 for a half-cosine (the shape
-// with the least high-frequency content). The line's V_trend includes the Gaussian noise the
-// record without x's fit still shows (ModelNow::trendVarWith), so a walk the model lacks does not
-// pass for x.
+// with the least high-frequency content), but 0.29 / 0.065 at T/20 / T/100 (a walk): a short
+// settling varies where a red noise has little power. So the accepted noises' share (known in
+// closed form, TrendScatter::knownAvar) is the smaller of this and their variance on x's cosines
+// (coefficientVarianceOf: exact for a walk, 1.22x for white noise); the realisations' share keeps
+// the line's ratio. The line's V_trend includes the Gaussian noise the record without x's fit
+// still shows (ModelNow::trendVarWith), so a walk the model lacks does not pass for x.
 std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
                                                                const std::vector<double>& x, double trials) {
   double xm = 0, ym = 0;
@@ -36,10 +40,15 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
   const double tt = ctx.dt * ctx.dt * n * (n * n - 1) / 12;
   std::vector<double> rest(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c * (x[k] - xm);
-  return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup)](const ModelNow& m) {
-    const double var = (m.trendVarWith ? m.trendVarWith(avar) : m.trendVar) * ratio;
-    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
-    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), m.trendDof);
+  return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
+          tau = ctx.tau, T = ctx.T, dt = ctx.dt](const ModelNow& m) {
+    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}};
+    double known = s.known * ratio;
+    if (known > 0 && !s.knownAvar.empty()) known = std::min(known, coefficientVarianceOf(spectrum, s.knownAvar, tau, T, dt));
+    const double realised = s.realised * ratio, var = realised + known;
+    const double dof = satterthwaiteDof(realised, s.realisedDof, known);
+    if (!(var > 0) || !(dof > 1)) return 0.0;
+    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), dof);
     return trials > 1 ? zFromTwoSidedP(std::min(1.0, trials * std::erfc(z / std::sqrt(2.0)))) : z;
   };
 }

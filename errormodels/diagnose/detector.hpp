@@ -54,8 +54,9 @@ struct DetectorContext {
 /// A deterministic shape x (one value per sample, e.g. the temperature or a settling exponential)
 /// tested given the model: the record's least-squares coefficient on x against the scatter the
 /// current model predicts for it, Var c = V_trend t't / x'x (ModelNow's trend variance; exact for
-/// white noise, on the safe side for red noise and slow monotone x: see detector.cpp), Student's
-/// t with the realisations as dof, Bonferroni over `trials` shapes searched. Returns the
+/// white noise, on the safe side for red noise and slow monotone x: see detector.cpp), the
+/// accepted noises' share of it no more than their variance on x's cosines; Student's t with the
+/// effective dof (satterthwaiteDof), Bonferroni over `trials` shapes searched. Returns the
 /// candidate's zConditional (empty when x is constant).
 std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
                                                                const std::vector<double>& x, double trials = 1);

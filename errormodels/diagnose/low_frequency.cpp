@@ -124,4 +124,52 @@ double lowFrequencyNll(const std::vector<double>& c, const std::vector<double>& 
   return nll;
 }
 
+CosineSpectrum cosineSpectrum(const std::vector<double>& x, std::size_t maxCosines) {
+  CosineSpectrum s;
+  const std::size_t n = x.size();
+  if (n < 4) return s;
+  double mean = 0;
+  for (double v : x) mean += v / double(n);
+  for (double v : x) s.norm2 += (v - mean) * (v - mean);
+  const std::size_t K = std::min(maxCosines, n / 2);
+  const std::size_t block = std::max<std::size_t>(1, n / (16 * K));  // >= 16 blocks per period
+  const std::size_t nb = (n + block - 1) / block;
+  std::vector<double> sum(nb, 0.0), centre(nb);
+  for (std::size_t j = 0; j < nb; ++j) {
+    const std::size_t a = j * block, e = std::min(n, a + block);
+    for (std::size_t k = a; k < e; ++k) sum[j] += x[k] - mean;
+    centre[j] = 0.5 * double(a + e);  // (t + 1/2) at the block's centre, in samples
+  }
+  s.a2.resize(K);
+  double captured = 0;
+  const double scale = std::sqrt(2.0 / double(n));
+  for (std::size_t k = 1; k <= K; ++k) {
+    const double w = M_PI * double(k) / double(n);
+    // cos(w c_j) over the equally spaced centres by rotation (the last block may be shorter).
+    const double cr = std::cos(w * double(block)), sr = std::sin(w * double(block));
+    double c = std::cos(w * centre[0]), sn = std::sin(w * centre[0]), a = 0;
+    for (std::size_t j = 0; j + 1 < nb; ++j) {
+      a += sum[j] * c;
+      const double c1 = c * cr - sn * sr;
+      sn = sn * cr + c * sr, c = c1;
+    }
+    a += sum[nb - 1] * std::cos(w * centre[nb - 1]);
+    s.a2[k - 1] = scale * scale * a * a;
+    captured += s.a2[k - 1];
+  }
+  s.tail = std::max(0.0, s.norm2 - captured);
+  return s;
+}
+
+double coefficientVarianceOf(const CosineSpectrum& s, const std::vector<double>& g, const std::vector<double>& tau,
+                             double T, double dt) {
+  if (s.a2.empty() || !(s.norm2 > 0)) return 0.0;
+  double v = 0, vk = 0;
+  for (std::size_t k = 1; k <= s.a2.size(); ++k) {
+    vk = lowFrequencyVarianceOf(g, tau, T, dt, double(k));
+    v += s.a2[k - 1] * vk;
+  }
+  return (v + s.tail * vk) / (s.norm2 * s.norm2);
+}
+
 }  // namespace sinsim::errormodels::diagnose::detail

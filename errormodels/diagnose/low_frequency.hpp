@@ -45,6 +45,25 @@ double allanTermAt(const std::vector<double>& g, const std::vector<double>& tau,
 double lowFrequencyVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T,
                               double dt, double k);
 
+/// A shape x on the record's cosines u_k(t) = sqrt(2/N) cos(pi k (t + 1/2) / N), k = 1..K
+/// (orthonormal in the samples' inner product): a2[k-1] = (u_k . x)^2 for x without its mean,
+/// computed on block sums (the cosines vary little within one of at least 8 blocks per period),
+/// its squared norm x'x, and the part of x'x beyond the K cosines (tail).
+struct CosineSpectrum {
+  std::vector<double> a2;
+  double norm2 = 0, tail = 0;
+};
+CosineSpectrum cosineSpectrum(const std::vector<double>& x, std::size_t maxCosines = 512);
+
+/// Variance [SI^2 / x^2] of the least-squares coefficient of a series on x (x'y / x'x, x without
+/// its mean) under a noise of AVAR g on the tau grid [s] [SI^2]: sum_k a2_k v_k + tail v_K over
+/// (x'x)^2, v_k = lowFrequencyVarianceOf(g, tau, T, dt, k) (a noise's v_k do not rise with k).
+/// Exact for a random walk (its cosine coefficients are uncorrelated: the sines on dW are
+/// orthogonal, and v_k is its exact cosine variance), 12/pi^2 = 1.22x for white noise; the cross
+/// terms of a stationary noise's cosine coefficients are neglected.
+double coefficientVarianceOf(const CosineSpectrum& s, const std::vector<double>& g, const std::vector<double>& tau,
+                             double T, double dt);
+
 /// -2 ln L of the coefficients c under variances var [SI^2] (up to a constant), each variance the
 /// mean square of `dof` realisations: the scaled Student t's, sum over directions of
 /// (dof + 1) ln(1 + c^2 / (dof var)) + ln var (Gaussian, c^2/var + ln var, for dof -> infinity).

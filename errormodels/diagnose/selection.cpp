@@ -46,14 +46,21 @@ double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& 
   return 8.0 * allanTermAt(g, tau, 0.5 * T) / (T * T);
 }
 
-/// The trend variance of the current model: the realisations' (w.trendVar) at the fitted level
-/// plus each accepted noise's (trendVarianceOf).
-double currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
+/// The trend scatter of the current model: the realisations' variance (w.trendVar, w.trendDof
+/// of them) at the fitted level plus each accepted noise's in closed form (trendVarianceOf), with
+/// the dof of that sum (satterthwaiteDof). After a large noise is accepted most of the variance is
+/// known exactly: judging a trend beside it with the realisations' 16 dof would turn a t of 10
+/// into a z of 5.7. Also the accepted noises' AVAR (another shape's variance under them:
+/// regressorTestGivenModel).
+TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
   const double T = double(w.y->size()) / w.rate;
-  double v = sol.s * w.trendVar;
-  for (std::size_t j = 0; j < set.size(); ++j)
-    v += (set[j]->freeSize ? sol.theta[j] : 1.0) * trendVarianceOf(set[j]->g, w.d.adev.x, T);
-  return v;
+  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, std::vector<double>(w.d.adev.x.size(), 0.0)};
+  for (std::size_t j = 0; j < set.size(); ++j) {
+    const double theta = set[j]->freeSize ? sol.theta[j] : 1.0;
+    s.known += theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
+    for (std::size_t k = 0; k < s.knownAvar.size() && k < set[j]->g.size(); ++k) s.knownAvar[k] += theta * set[j]->g[k];
+  }
+  return s;
 }
 
 /// The variance of the record's coefficient on each slow direction (low_frequency.hpp) under the
@@ -216,13 +223,14 @@ void remeasure(ChannelWork& w, Trials& t) {
 
 /// ModelNow::trendVarWith: the current set refitted to the series of AVAR `avar`, alone and with
 /// each Gaussian candidate (no signal) whose effect is not taken, the best by the penalised
-/// criterion; its trend variance.
-double trendVarWithNoise(const ChannelWork& w, const std::vector<const Candidate*>& set,
-                         const std::set<std::string>& taken, double penalty, const std::vector<double>& avar) {
+/// criterion; its trend scatter.
+TrendScatter trendVarWithNoise(const ChannelWork& w, const std::vector<const Candidate*>& set,
+                               const std::set<std::string>& taken, double penalty, const std::vector<double>& avar) {
   AllanProblem p = w.prob;
   for (std::size_t k = 0; k < p.L.size() && k < avar.size(); ++k) p.L[k] = std::log(std::max(avar[k], 1e-300));
   auto sol = solveAllan(p, set, w.sol.theta);
-  double bestCrit = sol.chi2, bestVar = currentTrendVar(w, set, sol);
+  double bestCrit = sol.chi2;
+  TrendScatter bestVar = currentTrendVar(w, set, sol);
   auto start = w.sol.theta;
   start.push_back(-1.0);
   for (const auto& c : w.cands) {
@@ -247,7 +255,9 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   const auto set = allanSet(w);
   std::ptrdiff_t best = -1;
   const auto currentAvar = modelAvarOf(w.prob, set, w.sol);
-  ModelNow now{currentAvar, currentTrendVar(w, set, w.sol), w.trendDof, nullptr};
+  const TrendScatter trendNow = currentTrendVar(w, set, w.sol);
+  ModelNow now{currentAvar, trendNow.var(), satterthwaiteDof(trendNow.realised, trendNow.realisedDof, trendNow.known),
+               nullptr};
   now.trendVarWith = [&](const std::vector<double>& avar) { return trendVarWithNoise(w, set, taken, penalty, avar); };
   AllanProblem jumpFree = w.prob;
   double chi2JumpFree = 0;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/stats/special.hpp"
@@ -17,7 +18,14 @@ double zFromTwoSidedP(double p) {
 
 double zFromStudentT(double t, double nu) {
   if (!(nu > 0)) return 0.0;
+  if (std::isinf(nu)) return t;
   return std::sqrt(nu * std::log1p(t * t / nu)) * (8 * nu + 1) / (8 * nu + 3);
+}
+
+double satterthwaiteDof(double estimated, double dof, double known) {
+  if (!(estimated > 0)) return std::numeric_limits<double>::infinity();
+  const double r = 1.0 + std::max(0.0, known) / estimated;
+  return dof * r * r;
 }
 
 namespace {

@@ -14,7 +14,12 @@ constexpr double kMaxScore = 40.0;
 double zFromTwoSidedP(double p);
 /// Student-t statistic with nu dof -> Gaussian-equivalent z (Wallace 1959):
 /// z = sqrt(nu ln(1 + t^2/nu)) (8 nu + 1) / (8 nu + 3).
+/// nu = infinity: z = t.
 double zFromStudentT(double t, double nu);
+/// Effective degrees of freedom of a variance estimate V = E + C, E the mean square of `dof`
+/// Gaussian realisations (E ~ E[E] chi2_dof / dof) and C >= 0 known exactly (Satterthwaite 1946:
+/// nu = 2 E[V]^2 / Var V): dof (1 + C/E)^2; infinity when E = 0 (all of V known).
+double satterthwaiteDof(double estimated, double dof, double known);
 
 /// A jump in the record: the largest robust z = |D - median D| / (1.4826 MAD) of the window-mean
 /// increments D_j = ybar_{j+1} - ybar_j, over the windows m of `factors` with 32..4096

@@ -54,15 +54,13 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   // trend of variance 6 K^2 / (5 T), and a walk the model lacks must not pass for a ramp. The
   // one-sign test above sees a ramp only against the increments' own scatter (white noise's
   // increments are negatively correlated, so it is weak there: a 1.5x ramp on a white base gives
-  // t ~ 1); this one weighs the trend by what the model predicts. Student's t with the
-  // realisations as dof.
-  std::vector<double> rest(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c.signal[k];
-  c.zConditional = [slope, detrended = allanVariance(rest, ctx.setup)](const ModelNow& m) {
-    const double var = m.trendVarWith ? m.trendVarWith(detrended) : m.trendVar;
-    if (!(var > 0) || !(m.trendDof > 1)) return 0.0;
-    return zFromStudentT(std::fabs(slope) / std::sqrt(var), m.trendDof);
-  };
+  // t ~ 1); this one weighs the trend by what the model predicts. It is the regressor test of
+  // the warm-up and the temperature with the line as the shape (the same variance rule for all
+  // three: a settling of long time constant is nearly a line, and a tie between them must not be
+  // decided by which variance bound each uses).
+  std::vector<double> line(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) line[k] = (double(k) + 0.5) * ctx.dt;
+  c.zConditional = regressorTestGivenModel(ctx, line);
   c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
   // The size written is the least-squares slope: the realised trend of this record, which the
