@@ -404,12 +404,12 @@ struct Tally {
     }
     for (const auto& [name, value] : params)
       for (const auto& p : f.parameters)
-        if (p.name == name && std::fabs(p.value - value) <= 2.0 * p.stdError) ++coveredAll[name];
+        if (p.name == name && p.covers(value, 2.0)) ++coveredAll[name];
     for (const auto& [name, value] : params)
       for (const auto& p : f.averaged)
         if (p.name == name) {
           inclusion[name] += p.inclusion;
-          if (std::fabs(p.value - value) <= 2.0 * p.stdError) ++coveredAveraged[name];
+          if (p.covers(value, 2.0)) ++coveredAveraged[name];
           else if (std::getenv("STUDY_MISSES"))
             std::printf("  seed %d [%s] averaged %s %.4g +- %.2g (truth %.4g, inclusion %.2f)\n", seed,
                         f.terms.name().c_str(), name.c_str(), p.value, p.stdError, value, p.inclusion);
@@ -422,7 +422,7 @@ struct Tally {
     for (const auto& [name, value] : params) {
       const auto& p = f.parameter(name);
       ++seen[name];
-      if (std::fabs(p.value - value) <= 2.0 * p.stdError) ++covered[name];
+      if (p.covers(value, 2.0)) ++covered[name];
     }
   }
 

@@ -60,6 +60,20 @@ double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options) 
          options.penaltyPerParameter * double(set.parameterCount());
 }
 
+namespace {
+template <class P>
+bool insideInterval(const P& p, double truth, double k) {
+  if (std::fabs(truth - p.value) <= k * p.stdError) return true;
+  if (!(p.logScale && truth > 0.0)) return false;
+  const double d = std::log(truth) - p.logCenter;
+  return d >= -k * p.logLower && d <= k * p.logUpper;
+}
+}  // namespace
+
+bool LatentParameter::covers(double truth, double k) const { return insideInterval(*this, truth, k); }
+
+bool LatentAveragedParameter::covers(double truth, double k) const { return insideInterval(*this, truth, k); }
+
 const LatentParameter& LatentFit::parameter(const std::string& name) const {
   for (const auto& p : parameters)
     if (p.name == name) return p;
@@ -291,6 +305,48 @@ LatentModel preliminaryModel(Problem p, const std::vector<LatentTermSet>& sets, 
   return best->model;
 }
 
+/// The profile-likelihood 1-sigma bounds of GM g's ln T in the fit f (LatentParameter::logLower,
+/// logUpper): the distances below and above ln T_g at which the chi^2 minimised over every other
+/// parameter (the variances by NNLS, the other GM's T by golden section within a factor 4 of its
+/// fit, T2 >= 1.5 T1 kept) exceeds its value at f's T by `target` (the Birge scale: Delta chi^2 = 1 for one
+/// parameter, Wilks; scaled as the Gauss-Newton covariance is). Found by doubling from `step`
+/// (the delta method's sd), then bisection; a side that stays below the target within e^8 says so
+/// with 8 (the data bound T only on the other side).
+std::pair<double, double> profileLogTauBounds(const Problem& p, const SetFit& f, std::size_t g, double target,
+                                              double step) {
+  constexpr double kFar = 8.0;
+  const double u0 = std::log(f.T[g]);
+  auto profile = [&](double u) {
+    std::vector<double> T = f.T;
+    T[g] = std::exp(u);
+    if (T.size() == 1) return solveFixedT(p, f.set, T).chi2;
+    const std::size_t o = 1 - g;
+    double lo = f.T[o] / 4.0, hi = f.T[o] * 4.0;
+    if (o == 1) lo = std::max(lo, 1.5 * T[0]);
+    else hi = std::min(hi, T[1] / 1.5);
+    if (!(hi > lo * 1.001)) return std::numeric_limits<double>::infinity();
+    return goldenSectionLog(lo, hi, 20, [&](double v) { T[o] = std::exp(v); return solveFixedT(p, f.set, T); },
+                            [](const SetFit& s) { return s.chi2; }).chi2;
+  };
+  // The baseline under p's weights (the averaging states a set's 1-sigma under its own Omega, not
+  // the one it was fitted under).
+  const double base = profile(u0);
+  auto rise = [&](double u) { return profile(u) - base; };
+  auto side = [&](double dir) {
+    double inner = 0.0, outer = std::clamp(step, 0.01, 1.0);
+    while (!(rise(u0 + dir * outer) >= target)) {
+      inner = outer, outer *= 2.0;
+      if (outer > kFar) return kFar;
+    }
+    for (int k = 0; k < 12; ++k) {
+      const double mid = 0.5 * (inner + outer);
+      (rise(u0 + dir * mid) >= target ? outer : inner) = mid;
+    }
+    return 0.5 * (inner + outer);
+  };
+  return {side(-1.0), side(1.0)};
+}
+
 /// The parameters of a set's fit with their 1-sigma: p = log of every variance coefficient and
 /// T_j, covariance (J' W' W J)^-1 of p (Gauss-Newton at the optimum, J by central differences in
 /// p: the model is smooth and p is log scale) scaled by the Birge ratio max(1, chi2 / dof).
@@ -342,11 +398,17 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   const std::size_t dof = p.m.size() - f.set.parameterCount();
   t.birgeScale = dof > 0 ? std::max(1.0, f.chi2 / double(dof)) : 1.0;
   t.logCovariance = (Jw.transpose() * Jw).ldlt().solve(Eigen::MatrixXd::Identity(k, k)) * t.birgeScale;
+  std::size_t g = 0;  // GM index of the next tau
   for (Eigen::Index c = 0; c < k; ++c) {
     const Par& q = pars[std::size_t(c)];
     const double sdp = std::sqrt(std::max(t.logCovariance(c, c), 0.0));
     const double value = q.amplitude ? std::exp(0.5 * q.p) : std::exp(q.p);
     t.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
+    if (!q.amplitude) {
+      LatentParameter& tau = t.parameters.back();
+      const auto [lower, upper] = profileLogTauBounds(p, f, g++, t.birgeScale, sdp);
+      tau.logScale = true, tau.logCenter = q.p, tau.logLower = lower, tau.logUpper = upper;
+    }
   }
   return t;
 }
@@ -388,15 +450,30 @@ std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std
   std::vector<LatentAveragedParameter> out;
   for (const auto& name : names) {
     double w = 0.0, mean = 0.0;
+    bool logScale = false;
     for (const auto& e : entries)
       for (const auto& q : e.parameters)
-        if (q.name == name) w += e.weight, mean += e.weight * q.value;
+        if (q.name == name) w += e.weight, mean += e.weight * q.value, logScale = q.logScale;
     mean /= w;
     double sd = 0.0;  // Buckland, Burnham & Augustin 1997, eq. (9)
     for (const auto& e : entries)
       for (const auto& q : e.parameters)
         if (q.name == name) sd += e.weight / w * std::hypot(q.stdError, q.value - mean);
-    out.push_back({name, w / total, mean, sd});
+    LatentAveragedParameter a{name, w / total, mean, sd};
+    if (logScale) {  // the profile interval of a tau, the same formula on ln T, each side
+      a.logScale = true;
+      for (const auto& e : entries)
+        for (const auto& q : e.parameters)
+          if (q.name == name) a.logCenter += e.weight / w * q.logCenter;
+      for (const auto& e : entries)
+        for (const auto& q : e.parameters)
+          if (q.name == name) {
+            const double d = q.logCenter - a.logCenter;
+            a.logLower += e.weight / w * std::hypot(q.logLower, d);
+            a.logUpper += e.weight / w * std::hypot(q.logUpper, d);
+          }
+    }
+    out.push_back(a);
   }
   return out;
 }

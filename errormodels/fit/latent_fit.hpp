@@ -129,7 +129,19 @@ double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options);
 struct LatentParameter {
   std::string name;  ///< "white", "quantization", "gm1.sigma", "gm1.tau", "random_walk", ...
   double value = 0.0;
-  double stdError = 0.0;
+  double stdError = 0.0;  ///< the delta method's 1-sigma (Gauss-Newton covariance of the log parameters)
+  /// A GM tau also has a profile-likelihood interval in ln T: the Allan chi^2 minimised over every
+  /// other parameter rises by the Birge scale (Delta chi^2 = 1, one parameter) at logCenter -
+  /// logLower and logCenter + logUpper. Its k-sigma interval is the union of value +- k stdError
+  /// and logCenter + [-k logLower, k logUpper]: neither first-order interval is calibrated for a
+  /// tau at these record lengths (a slow GM's T comes out low, the faster of two GMs' high, where
+  /// the two trade along a valley), and each missed on one side where the other did not
+  /// (docs/fitting.md, "Profile-likelihood intervals for the GM taus").
+  bool logScale = false;
+  double logCenter = 0.0;                 ///< ln(value)
+  double logLower = 0.0, logUpper = 0.0;  ///< 1-sigma distances below and above logCenter
+  /// Whether `truth` lies inside the k-sigma interval (for a tau the union above).
+  bool covers(double truth, double k) const;
 };
 
 /// A parameter with the uncertainty of the term-set choice included (model averaging: Buckland,
@@ -144,6 +156,12 @@ struct LatentAveragedParameter {
   double inclusion = 0.0;  ///< sum of the weights of the sets that have the parameter, in (0, 1]
   double value = 0.0;      ///< its value if the term is present
   double stdError = 0.0;   ///< its 1-sigma, including the spread between sets
+  /// A GM tau's profile interval (LatentParameter::logScale) averaged in ln T: logCenter = sum w_i
+  /// ln v_i, logLower and logUpper = sum w_i sqrt(l_i^2 + (ln v_i - logCenter)^2) with l_i the
+  /// set's own (Buckland's eq. 9 on ln T, each side).
+  bool logScale = false;
+  double logCenter = 0.0, logLower = 0.0, logUpper = 0.0;
+  bool covers(double truth, double k) const;  ///< as LatentParameter::covers
 };
 
 /// A fitted candidate set and its score.

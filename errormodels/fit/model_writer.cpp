@@ -173,8 +173,9 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
     else if (n == "white") value = q4(a.value, u.density) + " +- " + q4(a.stdError, u.density);
     else if (n == "random_walk") value = q4(a.value, u.walk) + " +- " + q4(a.stdError, u.walk);
     else if (n == "drift") value = q4(a.value, u.slope) + " +- " + q4(a.stdError, u.slope);
-    else if (n.size() > 4 && n.compare(n.size() - 4, 4, ".tau") == 0)
-      value = num(a.value, 4) + " s +- " + num(a.stdError, 3) + " s";
+    else if (a.logScale)  // a GM tau, with its profile-likelihood interval (LatentParameter::logScale)
+      value = num(a.value, 4) + " s +- " + num(a.stdError, 3) + " s (profile 1-sigma " +
+              num(std::exp(a.logCenter - a.logLower), 4) + ".." + num(std::exp(a.logCenter + a.logUpper), 4) + " s)";
     else value = q4(a.value, u.level) + " +- " + q4(a.stdError, u.level);  // sigma, flicker, ar.sigma
     b.line << "  " << n << " " << value << ", weight " << num(a.inclusion, 2);
     b.endComment();
@@ -236,8 +237,10 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   }
   for (std::size_t g = 0; g < m.gm.size(); ++g) {
     const std::string n = "gm" + std::to_string(g + 1);
-    b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << ", tau +- "
-           << num(sd(n + ".tau"), 4) << " s (1 sigma)";
+    const LatentParameter& tau = f.parameter(n + ".tau");
+    b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << ", tau +- " << num(tau.stdError, 4)
+           << " s (1 sigma; profile-likelihood 1-sigma interval " << num(std::exp(tau.logCenter - tau.logLower), 4)
+           << ".." << num(std::exp(tau.logCenter + tau.logUpper), 4) << " s)";
     b.endComment();
     b.add(EffectSpec::make(
         "gauss_markov",

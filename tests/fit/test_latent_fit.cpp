@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 #include "../identify/identify_test_util.hpp"
@@ -218,4 +219,63 @@ TEST_CASE("latent fit with an AR term recovers AR + slow terms from their exact 
   }
   o.arPolynomial.clear();  // a set with an AR term needs its polynomial
   CHECK_THROWS_AS(fitLatentModel(m, latentAllanVariance(base, dt, m), N, o), sinsim::InputError);
+}
+
+TEST_CASE("latent fit's GM tau interval: the union of the delta method's and the profile's",
+          "[fit][latent]") {
+  // covers(): |truth - value| <= k stdError, or for a tau also -k logLower <= ln truth - logCenter
+  // <= k logUpper (closed form of the bounds at k = 2: linear 1.2..2.8, profile 1.213..8.963).
+  const LatentParameter tau{"gm1.tau", 2.0, 0.4, true, std::log(2.0), 0.25, 0.75};
+  CHECK(tau.covers(2.0 * std::exp(1.499), 2.0));        // the profile's upper side
+  CHECK_FALSE(tau.covers(2.0 * std::exp(1.501), 2.0));
+  CHECK(tau.covers(2.0 * std::exp(-0.499), 2.0));       // the profile's lower side (1.213)
+  CHECK(tau.covers(1.2001, 2.0));                       // the linear lower side (1.2) is longer
+  CHECK_FALSE(tau.covers(1.1999, 2.0));
+  CHECK_FALSE(tau.covers(0.0, 2.0));
+  const LatentParameter white{"white", 2.0, 1.0};
+  CHECK(white.covers(3.999, 2.0));
+  CHECK_FALSE(white.covers(4.001, 2.0));
+  CHECK(white.covers(0.001, 2.0));
+}
+
+TEST_CASE("latent fit's profile-likelihood interval of a slow GM's tau covers it", "[fit][latent]") {
+  // White + GM records (std::mt19937_64, the exact AR(1) at dt: not sinsim's effects), 100 Hz,
+  // 2^16 samples (655 s); the GM's tau of 20 s puts its hump (~1.9 T = 38 s) in the last octaves
+  // of the Allan range (<= N dt / 10 = 41 s on the octave grid), where T's estimate is skewed
+  // low (a short T moves the hump into the points, a long one out of them) and the linear
+  // value +- 2 sigma misses above. The set is fixed (white + GM): the interval alone is tested.
+  // Bound: issue 11's 90 % floor, 108 of 120 seeds (at the nominal 95.4 %: 114.5 expected, sd
+  // 2.3, the bound 2.8 sd below). Measured: the stated interval (the union of the linear and the
+  // ln-T profile ones) 112/120, the profile's alone 111/120 (misses 8 above, 1 below); the linear
+  // value +- 2 sigma alone 106/120 (14 above) would fail.
+  const double dt = 0.01, N0 = 5.8e-5, sigma = 8.7e-5, T = 20.0;
+  const std::size_t n = std::size_t(1) << 16;
+  const double phi = std::exp(-dt / T), drive = sigma * std::sqrt(1.0 - phi * phi);
+  LatentFitOptions o;
+  o.sampleInterval = dt;
+  o.candidates = {LatentTermSet{false, true, 1, false, false, false}};
+  int covered = 0, above = 0, linearCovered = 0;
+  const int seeds = 120;
+  for (int s = 0; s < seeds; ++s) {
+    std::mt19937_64 rng(9100 + std::uint64_t(s));
+    std::normal_distribution<double> g;
+    std::vector<double> x(n);
+    double b = sigma * g(rng);
+    for (auto& v : x) {
+      b = phi * b + drive * g(rng);
+      v = b + N0 / std::sqrt(dt) * g(rng);
+    }
+    const LatentAllanPoints a = latentAllanPoints(x, dt);
+    const LatentParameter t = fitLatentModel(a.m, a.avar, n, o).parameter("gm1.tau");
+    REQUIRE(t.logScale);
+    REQUIRE(t.logCenter == Approx(std::log(t.value)).epsilon(1e-12));
+    REQUIRE(t.logLower > 0.0);
+    REQUIRE(t.logUpper > 0.0);
+    covered += t.covers(T, 2.0);
+    above += !t.covers(T, 2.0) && T > t.value;
+    linearCovered += std::fabs(t.value - T) <= 2.0 * t.stdError;
+  }
+  INFO("stated interval (linear or profile in ln T): covered " << covered << "/" << seeds << " (misses above " << above
+                                            << "); linear value +- 2 sigma: " << linearCovered << "/" << seeds);
+  CHECK(covered >= 108);
 }
