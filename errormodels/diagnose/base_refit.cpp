@@ -65,12 +65,15 @@ bool yuleWalker(const std::vector<double>& r, std::size_t order, std::size_t n,
 
 /// Base AR with a lattice quantization taken out of its autocovariance: Yule-Walker on
 /// r_y(k) - r_q(k), r_q the rounding noise's autocovariance [SI^2]: per-sample rounding
-/// r_q(0) = q^2/12; carried remainder (rate error (d_{k-1} - d_k)/dt, d uniform) r_q(0) = q^2/6,
-/// r_q(1) = -q^2/12 (q the rate LSB). Returns a = [1, a1..ap] and the driving variance.
-bool arWithoutQuantization(const std::vector<double>& y, std::size_t order, double q, bool carry,
+/// r_q(0) = the candidate's roundingVar (q^2/12 on a fine lattice); carried remainder (rate error
+/// (d_{k-1} - d_k)/dt, d uniform) r_q(0) = q^2/6, r_q(1) = -q^2/12 (q the rate LSB). Returns
+/// a = [1, a1..ap] and the driving variance.
+bool arWithoutQuantization(const std::vector<double>& y, std::size_t order, const Candidate& c,
                            std::vector<double>& a, double& E) {
+  const double q = c.lsbRate;
+  const bool carry = c.carry;
   auto r = centredAutocovariance(y, order);
-  r[0] -= carry ? q * q / 6 : q * q / 12;
+  r[0] -= carry ? q * q / 6 : c.roundingVar;
   if (carry && r.size() > 1) r[1] += q * q / 12;
   if (!(r[0] > 0)) return false;
   return yuleWalker(r, order, y.size(), a, E);
@@ -99,7 +102,7 @@ bool refitWithoutQuantization(const ChannelWork& w, const std::vector<double>& x
     if (!(c.lsbRate > 0)) continue;
     std::vector<double> a;
     double E = 0;
-    if (!arWithoutQuantization(x, order, c.lsbRate, c.carry, a, E)) continue;
+    if (!arWithoutQuantization(x, order, c, a, E)) continue;
     const auto av = fit::arAllanVariance(a, E, w.factors);
     AllanProblem p2 = w.prob;
     for (std::size_t k = 0; k < av.size(); ++k) p2.mu[k] = av[k];

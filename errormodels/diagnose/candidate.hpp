@@ -53,6 +53,9 @@ struct Candidate {
   /// (its autocovariance is subtracted when the base AR is refitted).
   double lsbRate = 0.0;
   bool carry = false;
+  /// The white variance the rounding adds per sample [SI^2] (rate LSB, each sample rounded; may
+  /// be negative on a coarse lattice: roundingAddedVariance).
+  double roundingVar = 0.0;
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
   std::function<std::vector<double>(std::size_t maxLag)> acov;

@@ -4,7 +4,12 @@
 // A short-tau excess alone is what a base model fitted to a record with a trend or a transient
 // shows (the fit bends its short-tau level), and scoring it as quantization was a false alarm
 // that grew with the hidden ramp.
+// Each sample rounded adds q^2/12 of white variance only when the noise sd is >= about q/2; on a
+// coarser lattice the rounded record's short-scale variance depends on where its level sits in
+// the cell and may lie below the input's, so the added variance is taken from the record
+// (roundingAddedVariance; a fixed q^2/12 above the record's short-tau AVAR cost the trial ~2e4).
 #include "errormodels/diagnose/detector.hpp"
+#include "errormodels/diagnose/rounding.hpp"
 #include "errormodels/diagnose/significance.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -13,14 +18,16 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   const double q = ctx.lattice, dt = ctx.dt;
   if (!(q > 0)) return {};
   const Units& u = ctx.units;
-  const double share = q * q / 12.0 / ctx.var;
+  const double added = roundingAddedVariance(channelData(ctx.record, ctx.channel), q);  // [SI^2]
+  const double share = added / ctx.var;
   const std::string ev = "values on a lattice of " + quantity(q, u.level) + " (" +
                          "differences are integer multiples of it); rounding adds " +
-                         num(100 * share, 3) + " % of the sample variance";
+                         num(100 * share, 3) + " % of the sample variance at the shortest scales";
   Candidate rateLsb;
   rateLsb.effect = "quantization";
   rateLsb.freeSize = false;
-  rateLsb.g = ctx.shape([&](double t) { return q * q / 12.0 * dt / t; });  // white, var q^2/12
+  rateLsb.g = ctx.shape([&](double t) { return added * dt / t; });  // white
+  rateLsb.roundingVar = added;
   rateLsb.zSpecial = kMaxScore;
   rateLsb.lsbRate = q;
   rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
