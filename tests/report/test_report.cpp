@@ -415,8 +415,8 @@ TEST_CASE("write is atomic: the whole file or nothing") {
 }
 
 TEST_CASE("bar chart: bars in the order given, lengths proportional to the values") {
-  BarChart chart{"budget", "share [%]", {{"gyro <x>", 60.0, "60 %"}, {"accel", 30.0, "30 %"},
-                                         {"none", -1.0, "-1 %"}}};
+  BarChart chart{"budget", "share [%]", {{"gyro <x>", 60.0, "60 %", ""}, {"accel", 30.0, "30 %", ""},
+                                         {"none", -1.0, "-1 %", ""}}};
   const std::string svg = chart.svg(600);
   CHECK(xmlProblem(svg).empty());  // well-formed, the label escaped
   CHECK(svg.find("gyro &lt;x&gt;") < svg.find(">accel<"));
