@@ -372,10 +372,17 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         fit::GaussMarkovFitOptions go;
         go.recordLength = n;
         if (opt.kind == IdentifyKind::Gm) {
-          ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
-          ax.written.notes.push_back("for comparison, GM from the ACF (not written): sigma " +
-                                     friendly(ax.gaussMarkov->sigma, sensor) + ", tau " +
-                                     significant(ax.gaussMarkov->tau, 4) + " s");
+          // Only a comparison: a white-dominated record's ACF past lag 0 is estimation noise and
+          // may not decay at all; that must not fail the composite fit, which is what is written.
+          try {
+            ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
+            ax.written.notes.push_back("for comparison, GM from the ACF (not written): sigma " +
+                                       friendly(ax.gaussMarkov->sigma, sensor) + ", tau " +
+                                       significant(ax.gaussMarkov->tau, 4) + " s");
+          } catch (const InputError& e) {
+            ax.written.notes.push_back(std::string("for comparison, no GM from the ACF: ") +
+                                       e.what());
+          }
         }
         fit::LatentFitOptions lo;
         lo.sampleInterval = dt;
