@@ -9,6 +9,10 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+/// The order of the whitening AR the level-shift test uses (selection's step finder, the outlier
+/// detector's step check).
+constexpr std::size_t kLevelShiftOrder = 10;
+
 struct LevelShift {
   std::size_t at = 0;  ///< first sample at the new level
   double size = 0;     ///< new level minus the old [the series' unit]

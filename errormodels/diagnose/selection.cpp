@@ -135,8 +135,6 @@ std::vector<const Candidate*> allanSet(const ChannelWork& w) {
 
 constexpr double kJumpP = 1e-3;  // the jump test's level for the whole record (Bonferroni inside)
 
-constexpr std::size_t kShiftOrder = 10;  // the level-shift test's whitening AR (level_shift.hpp)
-
 /// The level steps of the series x as a piecewise-constant series (empty: none): those of the
 /// window-mean jump test (levelSteps), else the level shifts of the residual test (levelShift)
 /// beyond the limit that keeps its scan of every sample at kJumpP (Bonferroni, 2 N Phi(-z) =
@@ -154,7 +152,7 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
   const double zLimit = normalTwoSidedCritical(kJumpP / double(x.size()));
   std::vector<double> r = x;
   for (int pass = 0; pass < maxPasses; ++pass) {
-    const auto s = levelShift(r, kShiftOrder, zLimit, w.factors, modelAvar);
+    const auto s = levelShift(r, kLevelShiftOrder, zLimit, w.factors, modelAvar);
     if (!s || !(std::fabs(s->size) > 1.5 * w.lattice)) break;
     if (steps.empty()) steps.assign(x.size(), 0.0);
     for (std::size_t k = s->at; k < x.size(); ++k) steps[k] += s->size, r[k] -= s->size;
