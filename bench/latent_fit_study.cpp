@@ -15,6 +15,8 @@
 //           [--min-coverage-averaged F]  (pooled over all seeds: LatentFit::averaged)
 //           [--max-walk-as-gm F]  (pooled over the cases with a walk: read as one more GM)
 //           (exit 1 below a floor: the ctest slices; --per-cell: in every cell and parameter)
+//           [--max-optimiser-misses K]  (with the oracle: records where the true set's own optimum
+//           scores best yet another set was chosen; STUDY_ORACLE=1 prints the oracle alone)
 //   STUDY_PROBE=1 (2: every block-scored set) prints per seed the block criterion of the true set at
 //   the true parameters, fitted and re-optimised from the truth, against the chosen set
 //   python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 100 --case ar2+rw
@@ -317,6 +319,168 @@ void probeTruth(const fit::LatentFit& f, const fit::LatentTermSet& truth, const 
                     c.whittleScore - bestWhittle, c.valid ? "valid" : "invalid", describeModel(c.whittleModel).c_str());
 }
 
+/// Whether each record is taken apart by oracleProbe (STUDY_ORACLE, --max-optimiser-misses).
+bool gOracle = false;
+
+/// STUDY_ORACLE: is the right set reachable on this record by the block criterion (block_likelihood.hpp
+/// step 4)? D_S = the criterion's -2 log L of set S at its optimum (S + drift: its slope profiled
+/// out), for the true set the better of its fit from the Whittle start and from the true
+/// parameters (no optimiser miss can hide the truth). Per record:
+///  same      the truth's D + its penalty is below every other block-scored set's score (S or
+///            S + drift + 6.63, + S's penalty) that the choice could take (a valid Allan fit of S or
+///            S + drift) and the walk-for-GM rule keeps, and the rule keeps the
+///            truth: a choice with these penalties and a perfect optimiser is right (the truth +
+///            drift aside);
+///  monotone  the truth's D is below D_S of every other set S with at most as many parameters
+///            (S + drift counts one more): NO penalty that grows with the parameter count can be
+///            right without it (a bound on every such choice);
+///  detectable the truth's penalised score is below every block-scored strict subset's (each of
+///            its terms pays its cost on this record).
+struct Oracle {
+  bool same = false, monotone = false, detectable = false;
+  /// The true set's exact ML (the block criterion's optimum) with the 1-sigma of the observed
+  /// information (2 H^-1, H the central-difference Hessian of -2 log L in the log parameters):
+  /// per parameter, |ln estimate - ln truth| <= 2 sd(ln). Empty where H is not positive definite.
+  std::map<std::string, bool> mlCovers;
+};
+
+/// The block criterion's parameters: ln of each variance (Q^2, N^2, sigma_j^2 and ln T_j, B^2, K^2),
+/// in block_likelihood.cpp's order, with the study's parameter names and whether each is a variance.
+struct LogParameter {
+  std::string name;
+  double value;
+  bool variance;
+};
+std::vector<LogParameter> logParametersOf(const fit::LatentTermSet& s, const fit::LatentModel& m) {
+  std::vector<LogParameter> p;
+  auto v = [&](const std::string& n, double a) { p.push_back({n, std::log(a * a), true}); };
+  if (s.quantization) v("quantization", m.quantization);
+  if (s.white) v("white", m.white);
+  for (std::size_t g = 0; g < m.gm.size(); ++g) {
+    const std::string k = "gm" + std::to_string(g + 1);
+    v(k + ".sigma", m.gm[g].sigma);
+    p.push_back({k + ".tau", std::log(m.gm[g].tau), false});
+  }
+  if (s.flicker) v("flicker", m.flicker);
+  if (s.randomWalk) v("random_walk", m.randomWalk);
+  return p;
+}
+fit::LatentModel modelOfLog(const fit::LatentTermSet& s, const std::vector<LogParameter>& p) {
+  fit::LatentModel m;
+  std::size_t i = 0;
+  auto v = [&]() { return std::exp(0.5 * p[i++].value); };
+  if (s.quantization) m.quantization = v();
+  if (s.white) m.white = v();
+  for (int k = 0; k < s.gm; ++k) {
+    const double sigma = v();
+    m.gm.push_back({sigma, std::exp(p[i++].value)});
+  }
+  if (s.flicker) m.flicker = v();
+  if (s.randomWalk) m.randomWalk = v();
+  return m;
+}
+
+std::map<std::string, bool> mlCoverage(const fit::BlockObjective& objective, const fit::LatentTermSet& set,
+                                       const fit::LatentModel& ml, const std::map<std::string, double>& params) {
+  std::vector<LogParameter> p = logParametersOf(set, ml);
+  const auto n = static_cast<Eigen::Index>(p.size());
+  constexpr double h = 1e-2;  // in ln: the 1-sigma of ln K^2 etc. is 0.05-1 on these records
+  auto at = [&](Eigen::Index i, double di, Eigen::Index j, double dj) {
+    std::vector<LogParameter> q = p;
+    q[std::size_t(i)].value += di, q[std::size_t(j)].value += dj;
+    return objective(modelOfLog(set, q), false);
+  };
+  Eigen::MatrixXd H(n, n);
+  const double f0 = objective(modelOfLog(set, p), false);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    H(i, i) = (at(i, h, i, 0) - 2 * f0 + at(i, -h, i, 0)) / (h * h);
+    for (Eigen::Index j = 0; j < i; ++j)
+      H(i, j) = H(j, i) = (at(i, h, j, h) - at(i, h, j, -h) - at(i, -h, j, h) + at(i, -h, j, -h)) / (4 * h * h);
+  }
+  std::map<std::string, bool> out;
+  Eigen::LLT<Eigen::MatrixXd> llt(H);
+  if (llt.info() != Eigen::Success) return out;
+  const Eigen::MatrixXd cov = 2.0 * llt.solve(Eigen::MatrixXd::Identity(n, n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const LogParameter& q = p[std::size_t(i)];
+    const auto t = params.find(q.name);
+    if (t == params.end()) continue;
+    const double scale = q.variance ? 0.5 : 1.0;  // ln A = ln A^2 / 2
+    out[q.name] = std::abs(scale * q.value - std::log(t->second)) <= 2.0 * scale * std::sqrt(cov(i, i));
+  }
+  return out;
+}
+
+Oracle oracleProbe(const fit::LatentFit& f, const fit::LatentTermSet& truth,
+                   const std::map<std::string, double>& params, const std::vector<double>& x, double rate,
+                   const fit::LatentFitOptions& base, int seed) {
+  Oracle o;
+  const double dt = 1.0 / rate;
+  const std::size_t B = fit::blockSize(x.size(), f.m.front());
+  const fit::BlockMeans means = fit::blockMeans(x, dt, B);
+  const fit::WhittleBins bins = fit::whittleBins(x, dt);
+  const double wMax = kPi * dt / f.tau.front(), minT = base.minGmTauSamples * dt;
+  const double tHi = std::max(f.tau.back(), 2.0 * minT);
+  const double pen = fit::latentPenalty(truth, base);
+  fit::BlockSetFit truthFit = fit::blockFitSet(means, &bins, wMax, truth, truthModel(params), minT, tHi);
+  for (const auto& c : f.candidates)
+    if (c.terms == truth && std::isfinite(c.blockScore)) {
+      fit::BlockSetFit w = fit::blockFitSet(means, &bins, wMax, truth, c.whittleModel, minT, tHi);
+      if (w.m2LogLik < truthFit.m2LogLik) truthFit = w;
+    }
+  const double truthD = truthFit.m2LogLik;
+  if (f.terms == truth) {
+    const fit::BlockObjective objective(means, &bins, wMax, truth.flicker);
+    o.mlCovers = mlCoverage(objective, truth, truthFit.model, params);
+  }
+  // The raw D of a block-scored set (the truth's: truthD), for the walk-for-GM rule.
+  auto rawOf = [&](const fit::LatentTermSet& t) {
+    if (t == truth) return truthD;
+    for (const auto& c : f.candidates)
+      if (c.terms == t && std::isfinite(c.blockScore)) return c.blockScore - fit::latentPenalty(t, base);
+    return double(INFINITY);
+  };
+  const double nested = base.penaltyPerTerm + base.penaltyPerParameter;
+  double bestOther = INFINITY, bestSubset = INFINITY, bestSmaller = INFINITY;
+  std::string otherName, smallerName;
+  for (const auto& c : f.candidates) {
+    if (c.terms == truth || c.terms.drift || !std::isfinite(c.blockScore)) continue;
+    fit::LatentTermSet walk = c.terms;  // latent_fit.cpp withoutWalkLikeGms: then c is its walk set
+    walk.gm -= 1, walk.randomWalk = true;
+    const bool walkLike = c.terms.gm > 0 && !c.terms.randomWalk &&
+                          rawOf(walk) - (c.blockScore - fit::latentPenalty(c.terms, base)) < nested;
+    // As the choice (latent_fit.cpp firstValid): a set competes only with a valid Allan fit of it
+    // or of it + drift.
+    fit::LatentTermSet drifted = c.terms;
+    drifted.drift = true;
+    bool valid = c.valid;
+    for (const auto& d : f.candidates) valid = valid || (d.terms == drifted && d.valid);
+    if (!walkLike && valid && c.blockScore < bestOther) bestOther = c.blockScore, otherName = c.terms.name();
+    if (strictSubset(c.terms, truth)) bestSubset = std::min(bestSubset, c.blockScore);
+    if (c.terms.parameterCount() > truth.parameterCount()) continue;
+    const fit::BlockSetFit s = fit::blockFitSet(means, &bins, wMax, c.terms, c.whittleModel, minT, tHi);
+    if (!s.valid) continue;
+    double d = s.m2LogLik;
+    if (c.terms.parameterCount() < truth.parameterCount()) d = std::min(d, s.m2LogLikDrift);
+    if (d < bestSmaller) bestSmaller = d, smallerName = c.terms.name();
+  }
+  // The rule applies to the truth too: a true slow GM that does not beat its walk partner by a
+  // one-parameter cost is taken for the walk (a miss of the rule, not of the optimiser).
+  fit::LatentTermSet truthWalk = truth;
+  truthWalk.gm -= 1, truthWalk.randomWalk = true;
+  const bool truthWalkLike = truth.gm > 0 && !truth.randomWalk && rawOf(truthWalk) - truthD < nested;
+  o.same = !truthWalkLike && truthD + pen <= bestOther;
+  o.monotone = truthD < bestSmaller;
+  o.detectable = truthD + pen < bestSubset;
+  if (!(f.terms == truth))
+    std::printf("  oracle seed %d chosen [%s]: truth D %+.2f vs best other [%s] (penalised, relative %+.2f), "
+                "vs best no-larger [%s] raw %+.2f; same %d monotone %d detectable %d%s\n",
+                seed, f.terms.name().c_str(), truthD, otherName.c_str(), truthD + pen - bestOther,
+                smallerName.c_str(), truthD - bestSmaller, o.same, o.monotone, o.detectable,
+                truthWalkLike ? " (the truth's slow GM taken for a walk)" : "");
+  return o;
+}
+
 /// Whether this record carries every generating term detectably for the criterion: the truth
 /// set, fitted to it, scores below every valid strict subset of it (each term's chi^2 drop beats
 /// its penalty). When false the record is explained as well by fewer terms: a miss there is the
@@ -340,6 +504,17 @@ struct Tally {
   /// Records with a walk whose chosen set is the truth with the walk read as one more GM (drift
   /// aside): the swap withoutWalkLikeGms (latent_fit.cpp) holds to the nested test's 1 %.
   int walkAsGm = 0;
+  /// STUDY_ORACLE (oracleProbe): records right for the same penalties at best, for any penalty
+  /// monotone in the parameter count at best, block-detectable, and right among those.
+  int oracled = 0, oracleSame = 0, oracleMonotone = 0, oracleDetectable = 0, oracleRightDetectable = 0;
+  /// Records both block-detectable and monotone (no set of at most as many parameters fits them
+  /// better): distinguishable by some choice that keeps the false entries' costs; right among them.
+  int distinguishable = 0, rightDistinguishable = 0;
+  /// Records whose true set, at its best optimum (from the fit's start or from the true
+  /// parameters), scores below every other block-scored set, yet another set than the truth (or the
+  /// truth + drift, its own 1 % test) was chosen: a miss of the fit's optimiser.
+  int optimiserMisses = 0;
+  std::map<std::string, int> mlCovered;  ///< among right sets: the exact ML's 2-sigma covers (oracleProbe)
   std::map<std::string, int> covered, seen, chosen;
   /// Over every fitted seed (issue 11's floor): the chosen set has the parameter and its estimate
   /// lies within 2 stated sigma of the truth. A dropped term is a miss.
@@ -396,6 +571,18 @@ struct Tally {
       std::printf("\n");
     }
     if (std::getenv("STUDY_PROBE")) probeTruth(f, truth, params, x, rate, base, seed);
+    if (gOracle && f.blockSelected && !truth.ar && !truth.drift) {
+      const Oracle o = oracleProbe(f, truth, params, x, rate, base, seed);
+      ++oracled;
+      oracleSame += o.same, oracleMonotone += o.monotone, oracleDetectable += o.detectable;
+      oracleRightDetectable += o.detectable && f.terms == truth;
+      distinguishable += o.detectable && o.monotone;
+      rightDistinguishable += o.detectable && o.monotone && f.terms == truth;
+      fit::LatentTermSet plain = f.terms;
+      plain.drift = truth.drift;
+      optimiserMisses += o.same && !(plain == truth);
+      for (const auto& [name, c] : o.mlCovers) mlCovered[name] += c;
+    }
     ++chosen[f.terms.name()];
     if (truth.randomWalk) {
       fit::LatentTermSet swapped = truth, got = f.terms;
@@ -446,6 +633,20 @@ struct Tally {
       std::printf(" %s %d (inclusion %.2f)", name.c_str(), c == coveredAveraged.end() ? 0 : c->second,
                   w == inclusion.end() ? 0.0 : w->second / std::max(fitted, 1));
     }
+    if (oracled > 0)
+      std::printf("\n   oracle (block criterion, %d records): right with these penalties at best %d, with any "
+                  "parameter-monotone penalty at best %d; block-detectable %d, right among them %d; detectable "
+                  "and monotone %d, right among them %d; optimiser misses %d",
+                  oracled, oracleSame, oracleMonotone, oracleDetectable, oracleRightDetectable, distinguishable,
+                  rightDistinguishable, optimiserMisses);
+    if (!mlCovered.empty()) {
+      std::printf("\n   exact ML of the true set (block criterion, 1-sigma from its Hessian in ln), "
+                  "2-sigma among right sets:");
+      for (const auto& name : names) {
+        const auto c = mlCovered.find(name), k = seen.find(name);
+        std::printf(" %s %d/%d", name.c_str(), c == mlCovered.end() ? 0 : c->second, k == seen.end() ? 0 : k->second);
+      }
+    }
     if (walkAsGm > 0) std::printf("\n   the walk read as a GM: %d/%d", walkAsGm, fitted + failed);
     if (arOnlyMissed + jointMissed > 0)
       std::printf("\n   a long-tau point (tau >= duration/40) outside the 99 %% band: AR alone %d/%d, AR + slow %d/%d",
@@ -473,6 +674,9 @@ struct Floors {
   double maxWalkAsGm = 1.0;
   int expect = 0;
   bool perCell = false;
+  /// With the oracle (STUDY_ORACLE or --max-optimiser-misses): at most this many records, pooled,
+  /// where the fit's optimiser missed the true set's better optimum (Tally::optimiserMisses).
+  int maxOptimiserMisses = -1;
 };
 
 /// The cell's failures of the per-cell floors (empty: none).
@@ -539,8 +743,13 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detec
               "chosen set's sigma, %d/%d selection-aware\n",
               right, records, covered, checks, coveredAll, checksAll, coveredAveraged, checksAll);
   std::printf("the walk read as a GM: %d/%d records with a walk\n", walkAsGm, walkRecords);
+  int optimiserMisses = 0;
+  for (const auto& [label, tally] : tallies) optimiserMisses += tally.optimiserMisses;
+  if (floors.maxOptimiserMisses >= 0)
+    std::printf("optimiser misses (the true set's own optimum the best, another set chosen): %d\n", optimiserMisses);
   bool ok = records >= floors.expect && coveredAveraged >= floors.minCoverageAveraged * checksAll &&
-            walkAsGm <= floors.maxWalkAsGm * walkRecords;
+            walkAsGm <= floors.maxWalkAsGm * walkRecords &&
+            (floors.maxOptimiserMisses < 0 || optimiserMisses <= floors.maxOptimiserMisses);
   if (floors.perCell) {
     for (const auto& [label, tally] : tallies) {
       const std::string s = cellShortfall(tally, floors);
@@ -551,8 +760,8 @@ int runStdin(const fit::LatentFitOptions& base, const Floors& floors, bool detec
     ok = ok && right >= floors.minRight * records && covered >= floors.minCoverage * checks;
   }
   if (!ok) std::printf("FAIL: below the floors (records >= %d, right >= %g, coverage >= %g, selection-aware >= %g, "
-                       "walk read as a GM <= %g)\n", floors.expect, floors.minRight, floors.minCoverage,
-                       floors.minCoverageAveraged, floors.maxWalkAsGm);
+                       "walk read as a GM <= %g, optimiser misses <= %d)\n", floors.expect, floors.minRight,
+                       floors.minCoverage, floors.minCoverageAveraged, floors.maxWalkAsGm, floors.maxOptimiserMisses);
   return ok ? 0 : 1;
 }
 
@@ -580,11 +789,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--min-coverage-averaged")) floors.minCoverageAveraged = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--expect")) floors.expect = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-walk-as-gm")) floors.maxWalkAsGm = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--max-optimiser-misses")) floors.maxOptimiserMisses = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--min-ar-miss")) floors.minArMiss = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--penalty-per-parameter")) base.penaltyPerParameter = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--rate")) rates = {std::atof(argv[++i])};
     else if (!std::strcmp(argv[i], "--duration")) durations = {std::atof(argv[++i])};
   }
+  gOracle = std::getenv("STUDY_ORACLE") != nullptr || floors.maxOptimiserMisses >= 0;
   if (fromStdin) return runStdin(base, floors, detectability);
   for (double rate : rates)
     for (double duration : durations)
