@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "errormodels/diagnose/level_shift.hpp"
+#include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/stats/special.hpp"
 
 using sinsim::errormodels::diagnose::detail::levelShift;
@@ -113,4 +114,44 @@ TEST_CASE("Gaussian records without a step show none at the test's level", "[dia
   CHECK(flagged[0] <= 1);
   CHECK(flagged[1] <= 1);
   CHECK(flagged[2] <= 1);
+}
+
+// The inflation covers the long scales the statistic sums over, not only the diagnosis' grid
+// (N/8): whenever a shift is reported, rho is at least the Allan ratio of the record without that
+// shift to the whitening AR's at every half-octave factor up to N/4 -- recomputed here with a
+// plain overlapping Allan variance and the same Burg AR(10) (fit::burg and fit::arAllanVariance,
+// checked against Octave's arburg and closed forms in tests/fit). Records: white noise of sd 1, a
+// walk the AR hardly sees (increments of sd 0.003; its Allan ratio to white 1 + q^2 m^2 / 3 is 15
+// at m = 2048 and 51 at m = 4096) and a step of 1 at N/2 (lambda_L ~ 70 before the inflation).
+TEST_CASE("the inflation reaches the walk the record shows up to N/4", "[diagnose][level_shift]") {
+  std::mt19937_64 g(16);
+  const std::vector<std::size_t> beyond = {2896, 4096};  // round(2^(j/2)) above 2048, <= N/4
+  int found = 0;
+  for (int seed = 0; seed < 10; ++seed) {
+    auto y = white(g, 1.0);
+    const auto inc = white(g, 0.003);
+    double walk = 0;
+    for (std::size_t k = 0; k < kN; ++k) y[k] += (walk += inc[k]) + (k >= kN / 2 ? 1.0 : 0.0);
+    const auto s = levelShift(y, kOrder, kLimit, kFactors);
+    if (!s) continue;
+    ++found;
+    const auto ar = sinsim::errormodels::fit::burg(y, kOrder);
+    const auto arAvar = sinsim::errormodels::fit::arAllanVariance(ar.a, ar.drivingVariance, beyond);
+    auto rest = y;
+    for (std::size_t k = s->at; k < kN; ++k) rest[k] -= s->size;
+    for (std::size_t i = 0; i < beyond.size(); ++i) {
+      const std::size_t m = beyond[i];
+      std::vector<double> prefix(kN + 1, 0.0);
+      for (std::size_t k = 0; k < kN; ++k) prefix[k + 1] = prefix[k] + rest[k];
+      double sum = 0;
+      for (std::size_t k = 0; k + 2 * m <= kN; ++k) {
+        const double d = (prefix[k + 2 * m] - 2 * prefix[k + m] + prefix[k]) / double(m);
+        sum += d * d;
+      }
+      const double ratio = sum / (2.0 * double(kN - 2 * m + 1)) / arAvar[i];
+      INFO("seed " << seed << ", m " << m << ": rho " << s->rho << ", Allan ratio " << ratio);
+      CHECK(s->rho >= ratio * (1 - 1e-9));
+    }
+  }
+  CHECK(found >= 5);
 }
