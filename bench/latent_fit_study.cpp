@@ -250,18 +250,6 @@ void printDetectability(const std::string& label, const fit::LatentTermSet& trut
   std::fflush(stdout);
 }
 
-/// The true model of a record from its parameters (generate.py's names).
-fit::LatentModel trueModel(const std::map<std::string, double>& params) {
-  fit::LatentModel m;
-  auto get = [&](const char* n) { const auto i = params.find(n); return i == params.end() ? 0.0 : i->second; };
-  m.quantization = get("quantization"), m.white = get("white"), m.flicker = get("flicker");
-  m.randomWalk = get("random_walk"), m.drift = get("drift");
-  for (const char* g : {"gm1", "gm2"})
-    if (params.count(std::string(g) + ".tau"))
-      m.gm.push_back({get((std::string(g) + ".sigma").c_str()), get((std::string(g) + ".tau").c_str())});
-  return m;
-}
-
 std::string describeModel(const fit::LatentModel& m) {
   char buf[400];
   std::string out;
@@ -271,6 +259,26 @@ std::string describeModel(const fit::LatentModel& m) {
   return out;
 }
 
+/// The block criterion's inputs for a record as the fit scored it (block_likelihood.hpp steps 1
+/// and 4): block means, periodogram bins, the Allan range's top frequency and the GM tau bounds.
+struct BlockSetup {
+  std::size_t B = 0;
+  fit::BlockMeans means;
+  fit::WhittleBins bins;
+  double wMax = 0, minT = 0, tHi = 0;
+};
+BlockSetup blockSetup(const fit::LatentFit& f, const std::vector<double>& x, double rate,
+                      const fit::LatentFitOptions& base) {
+  BlockSetup b;
+  const double dt = 1.0 / rate;
+  b.B = fit::blockSize(x.size(), f.m.front());
+  b.means = fit::blockMeans(x, dt, b.B);
+  b.bins = fit::whittleBins(x, dt);
+  b.wMax = kPi * dt / f.tau.front(), b.minT = base.minGmTauSamples * dt;
+  b.tHi = std::max(f.tau.back(), 2.0 * b.minT);
+  return b;
+}
+
 /// STUDY_PROBE: per seed, the block criterion (block_likelihood.hpp step 4) of the true set at the
 /// true parameters, at its fitted optimum (as scored in the fit) and re-optimised from the truth,
 /// against the chosen set's score: a fitted optimum above the truth's score is an optimiser miss,
@@ -278,14 +286,13 @@ std::string describeModel(const fit::LatentModel& m) {
 void probeTruth(const fit::LatentFit& f, const fit::LatentTermSet& truth, const std::map<std::string, double>& params,
                 const std::vector<double>& x, double rate, const fit::LatentFitOptions& base, int seed) {
   if (truth.ar || truth.drift || !f.blockSelected) return;
-  const double dt = 1.0 / rate;
-  const std::size_t B = fit::blockSize(x.size(), f.m.front());
-  const fit::BlockMeans means = fit::blockMeans(x, dt, B);
-  const fit::WhittleBins bins = fit::whittleBins(x, dt);
-  const double wMax = kPi * dt / f.tau.front(), minT = base.minGmTauSamples * dt;
-  const double tHi = std::max(f.tau.back(), 2.0 * minT);
+  const BlockSetup bs = blockSetup(f, x, rate, base);
+  const std::size_t B = bs.B;
+  const fit::BlockMeans& means = bs.means;
+  const fit::WhittleBins& bins = bs.bins;
+  const double wMax = bs.wMax, minT = bs.minT, tHi = bs.tHi;
   const fit::BlockObjective objective(means, &bins, wMax, truth.flicker);
-  const fit::LatentModel tm = trueModel(params);
+  const fit::LatentModel tm = truthModel(params);
   const double pen = fit::latentPenalty(truth, base);
   const double atTruth = objective(tm, false) + pen;
   const fit::BlockSetFit fromTruth = fit::blockFitSet(means, &bins, wMax, truth, tm, minT, tHi);
@@ -415,12 +422,10 @@ Oracle oracleProbe(const fit::LatentFit& f, const fit::LatentTermSet& truth,
                    const std::map<std::string, double>& params, const std::vector<double>& x, double rate,
                    const fit::LatentFitOptions& base, int seed) {
   Oracle o;
-  const double dt = 1.0 / rate;
-  const std::size_t B = fit::blockSize(x.size(), f.m.front());
-  const fit::BlockMeans means = fit::blockMeans(x, dt, B);
-  const fit::WhittleBins bins = fit::whittleBins(x, dt);
-  const double wMax = kPi * dt / f.tau.front(), minT = base.minGmTauSamples * dt;
-  const double tHi = std::max(f.tau.back(), 2.0 * minT);
+  const BlockSetup bs = blockSetup(f, x, rate, base);
+  const fit::BlockMeans& means = bs.means;
+  const fit::WhittleBins& bins = bs.bins;
+  const double wMax = bs.wMax, minT = bs.minT, tHi = bs.tHi;
   const double pen = fit::latentPenalty(truth, base);
   fit::BlockSetFit truthFit = fit::blockFitSet(means, &bins, wMax, truth, truthModel(params), minT, tHi);
   for (const auto& c : f.candidates)
