@@ -48,7 +48,16 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   for (double& v : e) v -= eMean;
   double sigma = robustSd(e);
   if (!(sigma > 0)) return std::nullopt;
-  const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, factors);
+  // The grid `factors`, then the half-octave factors beyond it up to N/4: the statistic sums e
+  // over up to the whole record, the grid stops at the diagnosis' longest tau (N/8), and under a
+  // walk-like excess (its Allan ratio to the AR growing as m^2) the ratio at N/8 understates the
+  // sums' variance up to 16x -- a walk's realised wander passes for a step. N/4 is the
+  // overlapping estimator's last factor with N/2 differences (few dof, but a real step is taken
+  // out before the record's ratio is measured there, below).
+  std::vector<std::size_t> longFactors = factors;
+  for (std::size_t m : halfOctaveFactors(y.size() / 4))
+    if (longFactors.empty() || m > longFactors.back()) longFactors.push_back(m);
+  const auto arAvar = fit::arAllanVariance(ar.a, ar.drivingVariance, longFactors);
   auto ratioTo = [&arAvar](const std::vector<double>& avar, double rho) {
     for (std::size_t k = 0; k < arAvar.size() && k < avar.size(); ++k)
       if (arAvar[k] > 0) rho = std::max(rho, avar[k] / arAvar[k]);
@@ -85,25 +94,8 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   Setup setup;
   setup.rate = 1.0;  // an Allan variance of rates does not depend on the sample interval
   setup.n = rest.size();
-  setup.factors = factors;
-  double rhoAll = ratioTo(allanVariance(rest, setup), rho);
-  // The statistic sums e over up to the whole record, the grid stops at the diagnosis' longest
-  // tau (N/8): under a walk-like excess (its Allan ratio to the AR growing as m^2) the ratio at
-  // N/8 understates the sums' variance up to 16x, and a walk's realised wander passes for a step.
-  // So the ratio is also taken, on the record without the shift, on the half-octave factors
-  // beyond the grid up to N/4 (the overlapping estimator's last with N/2 differences: few dof,
-  // but a real step is taken out before it is measured).
-  std::vector<std::size_t> beyond;
-  const double top = factors.empty() ? 1.0 : double(factors.back());
-  for (double m = top * std::sqrt(2.0); m <= 0.25 * double(rest.size()); m *= std::sqrt(2.0))
-    beyond.push_back(std::size_t(std::llround(m)));
-  if (!beyond.empty()) {
-    setup.factors = beyond;
-    const auto recordAvar = allanVariance(rest, setup);
-    const auto arBeyond = fit::arAllanVariance(ar.a, ar.drivingVariance, beyond);
-    for (std::size_t k = 0; k < beyond.size(); ++k)
-      if (arBeyond[k] > 0) rhoAll = std::max(rhoAll, recordAvar[k] / arBeyond[k]);
-  }
+  setup.factors = longFactors;
+  const double rhoAll = ratioTo(allanVariance(rest, setup), rho);
   bestZ *= std::sqrt(rho / rhoAll);
   best.rho = rho = rhoAll;
   if (!(bestZ > zLimit)) return std::nullopt;

@@ -14,18 +14,6 @@ namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
 
-/// Half-octave grid m = round(2^(j/2)) up to maxM: twice the points of the octave grid, so that
-/// "the fraction of tau outside a 95 % band" is not decided by one or two points.
-std::vector<std::size_t> halfOctaveFactors(std::size_t maxM) {
-  std::vector<std::size_t> factors;
-  for (int j = 0;; ++j) {
-    const auto m = std::size_t(std::llround(std::pow(2.0, 0.5 * j)));
-    if (m > maxM) break;
-    if (factors.empty() || m != factors.back()) factors.push_back(m);
-  }
-  return factors;
-}
-
 /// Log-spaced bands over bins 1..L/2 (DC left out: every segment's mean is removed).
 void psdBands(Setup& s, std::size_t bands) {
   const std::size_t L = s.psdSegment, kMax = L / 2;
@@ -75,6 +63,16 @@ std::vector<double> acfFromWelch(const std::vector<double>& psd, const Setup& s)
 }
 
 }  // namespace
+
+std::vector<std::size_t> halfOctaveFactors(std::size_t maxM) {
+  std::vector<std::size_t> factors;
+  for (int j = 0;; ++j) {
+    const auto m = std::size_t(std::llround(std::pow(2.0, 0.5 * j)));
+    if (m > maxM) break;
+    if (factors.empty() || m != factors.back()) factors.push_back(m);
+  }
+  return factors;
+}
 
 Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o) {
   Setup s;

@@ -29,6 +29,9 @@ struct SeriesStats {
   double trend = 0;          // least-squares slope [SI/s] (trendSlope)
   std::vector<double> lowFreq;  // coefficients on the slow directions [SI] (lowFrequencyCoefficients)
 };
+/// Half-octave grid m = round(2^(j/2)) up to maxM: twice the points of the octave grid, so that
+/// "the fraction of tau outside a 95 % band" is not decided by one or two points.
+std::vector<std::size_t> halfOctaveFactors(std::size_t maxM);
 /// The grids for n samples at rate [Hz]; InputError when the PSD segment exceeds the record.
 Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o);
 SeriesStats seriesStats(const std::vector<double>& y, const Setup& s);
