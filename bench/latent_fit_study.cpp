@@ -445,7 +445,7 @@ Oracle oracleProbe(const fit::LatentFit& f, const fit::LatentTermSet& truth,
       if (c.terms == t && std::isfinite(c.blockScore)) return c.blockScore - fit::latentPenalty(t, base);
     return double(INFINITY);
   };
-  const double nested = base.penaltyPerTerm + base.penaltyPerParameter;
+  const double nested = fit::walkForGmCost(base);
   double bestOther = INFINITY, bestSubset = INFINITY, bestSmaller = INFINITY;
   std::string otherName, smallerName;
   for (const auto& c : f.candidates) {

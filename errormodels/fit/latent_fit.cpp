@@ -551,7 +551,7 @@ template <class Score>
 std::vector<std::size_t> withoutWalkLikeGms(const std::vector<LatentCandidate>& cands,
                                             const std::vector<std::size_t>& order, const LatentFitOptions& penalty,
                                             Score score) {
-  const double nested = penalty.penaltyPerTerm + penalty.penaltyPerParameter;
+  const double nested = walkForGmCost(penalty);
   auto raw = [&](std::size_t i) { return score(cands[i]) - latentPenalty(cands[i].terms, penalty); };
   std::vector<std::size_t> out;
   for (std::size_t i : order) {

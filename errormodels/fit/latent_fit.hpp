@@ -123,6 +123,12 @@ struct LatentFitOptions {
 
 /// The score's penalty of a term set: penaltyPerTerm * terms + penaltyPerParameter * parameters.
 double latentPenalty(const LatentTermSet& set, const LatentFitOptions& options);
+/// The cost a slow GM must beat its walk partner (the GM replaced by a random walk, one parameter
+/// fewer) by to stay a GM: one term's and one parameter's penalty (latent_fit.cpp
+/// withoutWalkLikeGms).
+inline double walkForGmCost(const LatentFitOptions& options) {
+  return options.penaltyPerTerm + options.penaltyPerParameter;
+}
 
 /// One parameter of the fitted model with its 1-sigma uncertainty (SI of the channel, see
 /// latent_model.hpp for the units).
