@@ -43,12 +43,24 @@ struct Candidate {
   std::vector<double> g;       // AVAR contribution at each tau [SI^2]
   double zSpecial = 0.0;       // its own test, Gaussian-equivalent
   /// A test of the candidate given the current model (the ramp's trend against the scatter the
-  /// model predicts for it), Gaussian-equivalent, or empty.
+  /// model predicts for it), Gaussian-equivalent (a degree-2 temperature: the root of its two
+  /// coefficients' chi-square), or empty.
   std::function<double(const ModelNow& model)> zConditional;
   std::string evidence;
   /// The fitted deterministic signal [SI] per sample (ramp, warm-up, sinusoid, temperature,
   /// outliers): removed from the record before the base AR is refitted. Empty otherwise.
   std::vector<double> signal;
+  /// The signal's regressors per sample, without the constant (the ramp's line, the warm-up's
+  /// exponential at its time constant, the temperature's powers): once the signal is taken out, a
+  /// later signal is fitted beside them (DetectorContext::taken). Empty for noises and for
+  /// signals no slow shape overlaps (lines, spikes).
+  std::vector<std::vector<double>> basis;
+  /// The signal as `describe` states it, where that differs from `signal`: a signal fitted beside
+  /// signals already taken out has its joint size (Frisch-Waugh-Lovell), and `signal` is only its
+  /// part apart from them (what the record without them still holds); this is the whole effect
+  /// at that size. Empty: the same as `signal`.
+  std::vector<double> stated;
+  const std::vector<double>& statedSignal() const { return stated.empty() ? signal : stated; }
   /// Quantization from the value lattice: the rate LSB [SI] and whether the remainder is carried
   /// (its autocovariance is subtracted when the base AR is refitted).
   double lsbRate = 0.0;

@@ -30,16 +30,21 @@ const std::vector<DetectorType>& detectorTypes() {
 // the line's ratio. The line's V_trend includes the Gaussian noise the record without x's fit
 // still shows (ModelNow::trendVarWith), so a walk the model lacks does not pass for x.
 std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
-                                                               const std::vector<double>& x, double trials) {
+                                                               const std::vector<double>& shape, double trials,
+                                                               const std::vector<std::vector<double>>& beside) {
+  const bool apart = !ctx.taken.empty() || !beside.empty();
+  const std::vector<double> x = apart ? ctx.apart(shape, beside) : shape;
+  const std::vector<double> yBeside = beside.empty() ? std::vector<double>{} : ctx.apart(ctx.y, beside);
+  const std::vector<double>& y = beside.empty() ? ctx.y : yBeside;
   double xm = 0, ym = 0;
-  for (std::size_t k = 0; k < ctx.N; ++k) xm += x[k] / double(ctx.N), ym += ctx.y[k] / double(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) xm += x[k] / double(ctx.N), ym += y[k] / double(ctx.N);
   double xx = 0, xy = 0;
-  for (std::size_t k = 0; k < ctx.N; ++k) xx += (x[k] - xm) * (x[k] - xm), xy += (x[k] - xm) * (ctx.y[k] - ym);
+  for (std::size_t k = 0; k < ctx.N; ++k) xx += (x[k] - xm) * (x[k] - xm), xy += (x[k] - xm) * (y[k] - ym);
   if (!(xx > 0)) return {};
   const double c = xy / xx, n = double(ctx.N);
   const double tt = ctx.dt * ctx.dt * n * (n * n - 1) / 12;
   std::vector<double> rest(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = ctx.y[k] - c * (x[k] - xm);
+  for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = y[k] - c * (x[k] - xm);
   return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
           tau = ctx.tau, T = ctx.T, dt = ctx.dt](const ModelNow& m) {
     const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}};
@@ -53,9 +58,37 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
   };
 }
 
+std::vector<double> DetectorContext::apart(const std::vector<double>& x,
+                                           const std::vector<std::vector<double>>& beside) const {
+  const auto cols = Eigen::Index(taken.size() + beside.size() + 1);
+  Eigen::MatrixXd A(Eigen::Index(N), cols);
+  A.col(0).setOnes();
+  for (std::size_t j = 0; j < taken.size() + beside.size(); ++j) {
+    const auto& v = j < taken.size() ? taken[j] : beside[j - taken.size()];
+    A.col(Eigen::Index(j + 1)) = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(N));
+  }
+  const Eigen::Map<const Eigen::VectorXd> xv(x.data(), Eigen::Index(N));
+  Eigen::VectorXd beta;
+  leastSquares(A, xv, beta);
+  std::vector<double> out(N);
+  Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(N)) = xv - A * beta;
+  return out;
+}
+
+bool DetectorContext::spanned(const std::vector<double>& x) const {
+  if (taken.empty()) return false;
+  double m = 0;
+  for (double v : x) m += v / double(N);
+  double ss = 0, rr = 0;
+  for (double v : x) ss += (v - m) * (v - m);
+  for (double v : apart(x)) rr += v * v;
+  return !(rr > 1e-9 * ss);
+}
+
 std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
                                        double lattice, const std::vector<double>& tau, const Setup& setup,
-                                       const std::vector<std::string>& modelEffects) {
+                                       const std::vector<std::string>& modelEffects,
+                                       const std::vector<std::vector<double>>& taken) {
   const std::size_t N = y.size();
   const double dt = 1.0 / record.rate_hz;
   double mean = 0;
@@ -64,9 +97,10 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
   double var = 0;
   for (double v : y) var += (v - mean) * (v - mean);
   var /= double(N);
-  const DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
-                            mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
-                            isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration()};
+  DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
+                      mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
+                      isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}};
+  for (const auto& x : taken) ctx.takenBlocks.push_back(blockMeans(x, dt, 2000).m);
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
     if (!d.repeatable && std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end())

@@ -41,6 +41,19 @@ struct DetectorContext {
   BlockMeans blocks;                 // <= 2000 block means of y
   const std::vector<std::string>& modelEffects;  // enabled effect types of the model here
   Dimension signal;                  // of the channel: angular rate or acceleration
+  /// The regressors of the signals already taken out of y (Candidate::basis of the accepted
+  /// ones; empty in the first round) and their block means (on `blocks`).
+  const std::vector<std::vector<double>>& taken;
+  std::vector<std::vector<double>> takenBlocks;
+
+  /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a shape the
+  /// record without the taken signals can still show. A coefficient on it is the joint fit's
+  /// (Frisch-Waugh-Lovell); judged on the shape itself, a ramp beside a thermal drift of nearly
+  /// its form would be credited only with what the drift left of it.
+  std::vector<double> apart(const std::vector<double>& x, const std::vector<std::vector<double>>& beside = {}) const;
+  /// Whether x lies in the span of the constant and `taken` (its part apart from them below 1e-9 of
+  /// its spread): an effect of that shape is taken out already, and no candidate of it is proposed.
+  bool spanned(const std::vector<double>& x) const;
 
   /// g_k = f(tau_k): an Allan signature on the tau grid.
   template <class F>
@@ -56,10 +69,13 @@ struct DetectorContext {
 /// current model predicts for it, Var c = V_trend t't / x'x (ModelNow's trend variance; exact for
 /// white noise, on the safe side for red noise and slow monotone x: see detector.cpp), the
 /// accepted noises' share of it no more than their variance on x's cosines; Student's t with the
-/// effective dof (satterthwaiteDof), Bonferroni over `trials` shapes searched. Returns the
-/// candidate's zConditional (empty when x is constant).
+/// effective dof (satterthwaiteDof), Bonferroni over `trials` shapes searched. x is taken apart
+/// from the signals already taken out and from the shapes `beside` (ctx.apart), which are fitted
+/// with it: a coefficient tested beside a shape still in the record (the temperature's second
+/// power beside its first). Returns the candidate's zConditional (empty when x is constant).
 std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
-                                                               const std::vector<double>& x, double trials = 1);
+                                                               const std::vector<double>& x, double trials = 1,
+                                                               const std::vector<std::vector<double>>& beside = {});
 
 using DetectFn = std::vector<Candidate> (*)(const DetectorContext& ctx);
 
@@ -76,10 +92,12 @@ const std::vector<DetectorType>& detectorTypes();
 
 /// The candidates of every detector that is repeatable or whose effect is not among modelEffects,
 /// on the series y of the record's channel (the channel's samples, or them without the signals
-/// accepted so far) whose value lattice is `lattice` (latticeStep of the channel as recorded).
+/// accepted so far, whose regressors are `taken`) whose value lattice is `lattice` (latticeStep
+/// of the channel as recorded).
 std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
                                        double lattice, const std::vector<double>& tau, const Setup& setup,
-                                       const std::vector<std::string>& modelEffects);
+                                       const std::vector<std::string>& modelEffects,
+                                       const std::vector<std::vector<double>>& taken = {});
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"

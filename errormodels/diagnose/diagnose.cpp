@@ -129,10 +129,10 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   const double noiseSd = std::sqrt(dd / double(std::max<std::size_t>(y.size() - 1, 1)) / 2.0);
   w.lattice = lattice > 2.0 * noiseSd ? lattice : 0.0;
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
-                  const std::vector<double>& series) {
-    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects);
+                  const std::vector<double>& series, const std::vector<std::vector<double>>& taken) {
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken);
   };
-  w.cands = w.propose(y);
+  w.cands = w.propose(y, {});
   selectFindings(w, o.threshold);
   w.propose = nullptr;  // it refers to this call's record and setup
   return w;

@@ -25,8 +25,12 @@ struct ChannelWork {
   double rate = 0;
   /// The detectors' candidates on a series of this channel (during the diagnosis only): proposed
   /// again on the record without an accepted signal, so that the next effect is fitted and
-  /// tested on what the first leaves (a temperature fit is not bent by spikes).
-  std::function<std::vector<Candidate>(const std::vector<double>& series)> propose;
+  /// tested on what the first leaves (a temperature fit is not bent by spikes), beside the
+  /// regressors of the signals taken out (`taken`, DetectorContext::taken).
+  std::function<std::vector<Candidate>(const std::vector<double>& series,
+                                       const std::vector<std::vector<double>>& taken)>
+      propose;
+  std::vector<std::vector<double>> taken;
   /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal
   /// (selection.cpp): the AR order (0: no AR base), the accepted signals' sum and the closed-form
   /// AVAR of the AR refitted on the record without them.

@@ -213,7 +213,7 @@ void remeasure(ChannelWork& w, Trials& t) {
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
   for (std::size_t j = 0; j < cands.size(); ++j) w.accepted[j] = j;
-  for (auto& c : w.propose(x)) cands.push_back(std::move(c));
+  for (auto& c : w.propose(x, w.taken)) cands.push_back(std::move(c));
   w.cands = std::move(cands);
   t.resize(w.cands.size());
   markJumps(w, x);
@@ -366,6 +366,34 @@ std::vector<LevelStep> unexplainedSteps(const ChannelWork& w) {
   return out;
 }
 
+/// The accepted signals sized as one joint fit: a signal fitted beside earlier ones has its
+/// joint size (Candidate::stated), and each earlier one with regressors is fitted again on the
+/// record without the others as stated (one backfitting pass), so that the sizes reported and
+/// added hold the shape they share once -- not a ramp's likeness to a thermal drift in both.
+void restateSignals(ChannelWork& w) {
+  std::vector<std::size_t> sig;
+  bool joint = false;
+  for (auto i : w.accepted)
+    if (!w.cands[i].signal.empty()) sig.push_back(i), joint = joint || !w.cands[i].stated.empty();
+  if (!joint || !w.propose) return;
+  for (std::size_t a = 0; a + 1 < sig.size(); ++a) {
+    Candidate& c = w.cands[sig[a]];
+    if (c.basis.empty()) continue;
+    std::vector<double> x = *w.y;
+    for (auto i : sig) {
+      if (i == sig[a]) continue;
+      const auto& s = w.cands[i].statedSignal();
+      for (std::size_t k = 0; k < x.size() && k < s.size(); ++k) x[k] -= s[k];
+    }
+    for (auto& n : w.propose(x, {}))
+      if (n.effect == c.effect && n.parameters == c.parameters) {
+        c.describe = std::move(n.describe);
+        c.stated = std::move(n.signal);
+        break;
+      }
+  }
+}
+
 }  // namespace
 
 double criterionPenalty(std::size_t points) { return std::log(double(std::max<std::size_t>(points, 2))); }
@@ -414,6 +442,7 @@ void selectFindings(ChannelWork& w, double threshold) {
       }
       w.removed.resize(c.signal.size(), 0.0);
       for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
+      w.taken.insert(w.taken.end(), c.basis.begin(), c.basis.end());
       remeasure(w, t);
       auto start = w.sol.theta;
       start.pop_back();
@@ -421,6 +450,7 @@ void selectFindings(ChannelWork& w, double threshold) {
     }
     d.findings.push_back(f);
   }
+  restateSignals(w);
   // Sizes of the reported ones from the final joint fit (an accepted signal has its own size).
   const auto set = allanSet(w);
   for (std::size_t j = 0, a = 0; j < w.accepted.size(); ++j) {

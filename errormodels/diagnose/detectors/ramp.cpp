@@ -40,12 +40,30 @@ double oneSignTest(const DetectorContext& ctx, double& tBest) {
 
 std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   const Units& u = ctx.units;
-  const double slope = trendSlope(ctx.y, ctx.dt);
+  std::vector<double> line(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) line[k] = (double(k) + 0.5) * ctx.dt;
+  if (ctx.spanned(line)) return {};
   Candidate c;
   c.effect = "ramp";
-  c.signal.resize(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) c.signal[k] = slope * ((double(k) + 0.5) * ctx.dt - 0.5 * ctx.T);
-  c.g = ctx.shape([](double t) { return t * t / 2.0; });
+  c.basis = {line};
+  double slope = 0;
+  if (ctx.taken.empty()) {
+    slope = trendSlope(ctx.y, ctx.dt);
+    c.signal.resize(ctx.N);
+    for (std::size_t k = 0; k < ctx.N; ++k) c.signal[k] = slope * (line[k] - 0.5 * ctx.T);
+    c.g = ctx.shape([](double t) { return t * t / 2.0; });
+  } else {
+    // Beside the signals taken out: the slope of the joint fit, the line apart from them
+    // (DetectorContext::apart) as the signal left to remove and as the Allan shape.
+    const auto x = ctx.apart(line);
+    double xy = 0, xx = 0;
+    for (std::size_t k = 0; k < ctx.N; ++k) xy += x[k] * ctx.y[k], xx += x[k] * x[k];
+    slope = xx > 0 ? xy / xx : 0.0;
+    c.signal.resize(ctx.N);
+    c.stated.resize(ctx.N);
+    for (std::size_t k = 0; k < ctx.N; ++k) c.signal[k] = slope * x[k], c.stated[k] = slope * (line[k] - 0.5 * ctx.T);
+    c.g = allanVariance(x, ctx.setup);
+  }
   double tBest = 0;
   c.zSpecial = oneSignTest(ctx, tBest);
   // Conditional test: the record's trend against the scatter of a least-squares trend under the
@@ -58,8 +76,6 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   // the warm-up and the temperature with the line as the shape (the same variance rule for all
   // three: a settling of long time constant is nearly a line, and a tie between them must not be
   // decided by which variance bound each uses).
-  std::vector<double> line(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) line[k] = (double(k) + 0.5) * ctx.dt;
   c.zConditional = regressorTestGivenModel(ctx, line);
   c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";

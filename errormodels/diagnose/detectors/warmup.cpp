@@ -20,9 +20,13 @@ Settling fitSettling(const DetectorContext& ctx) {
   const auto& bt = ctx.blocks.t;
   const std::size_t nb = ctx.blocks.m.size();
   Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
+  // Beside the signals already taken out, their regressors are fitted with it (joint amplitude).
   auto rss = [&](double tw, Eigen::VectorXd& beta) {
-    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), 2);
-    for (std::size_t j = 0; j < nb; ++j) X(Eigen::Index(j), 0) = 1, X(Eigen::Index(j), 1) = std::exp(-bt[j] / tw);
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), Eigen::Index(2 + ctx.takenBlocks.size()));
+    for (std::size_t j = 0; j < nb; ++j) {
+      X(Eigen::Index(j), 0) = 1, X(Eigen::Index(j), 1) = std::exp(-bt[j] / tw);
+      for (std::size_t i = 0; i < ctx.takenBlocks.size(); ++i) X(Eigen::Index(j), Eigen::Index(2 + i)) = ctx.takenBlocks[i][j];
+    }
     return leastSquares(X, yb, beta);
   };
   const double lo = std::log(3.0 * double(ctx.blocks.size) * ctx.dt), hi = std::log(ctx.T / 2);
@@ -83,12 +87,21 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   const Units& u = ctx.units;
   const Settling s = fitSettling(ctx);
   const double A = s.A, tw = s.tau;
+  std::vector<double> shapeX(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) shapeX[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  if (ctx.spanned(shapeX)) return {};
   std::vector<double> w(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * shapeX[k];
   Candidate c;
   c.effect = "warmup";
   c.freeSize = false;
   c.parameters = 2;  // amplitude and time constant
+  c.basis = {shapeX};
+  if (!ctx.taken.empty()) {  // the part apart from the signals taken out is what is left to remove
+    c.stated = w;
+    w = ctx.apart(shapeX);
+    for (double& v : w) v *= A;
+  }
   c.g = allanVariance(w, ctx.setup);
   c.signal = w;
   double tStart = 0;
@@ -98,8 +111,6 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   // tau_w searched (neighbouring time constants give strongly correlated shapes: an upper bound).
   // The start test above compares the first window step with the later ones' own scatter, not
   // with what the model (and the effects it has accepted) predicts.
-  std::vector<double> shapeX(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) shapeX[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
   c.zConditional = regressorTestGivenModel(ctx, shapeX, s.octaves);
   c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
                num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
