@@ -339,6 +339,46 @@ TEST_CASE("a line at the lowest Welch bins is still a line", "[diagnose][selecti
   }
 }
 
+// A line below the Welch bins (detectors/sinusoid.cpp, lowLineTest): 25 cycles in 300 s
+// (0.0833 Hz, 1.7 Welch bins: the Welch test, bins >= 3, cannot see it; before the whole-record
+// scan no sinusoid candidate was proposed on any of these seeds), A = 0.01 deg/s on the white
+// floor: its ordinate over the continuum's mean is A^2 N / (4 s^2) = 75 (s^2 = 0.01 (deg/s)^2),
+// P ~ 36 e^-75: z ~ 11 against the Bonferroni limit. Every seed of ten must give z > 5.5 and the
+// frequency within 0.5 / T (the periodogram peak's sd from noise: sqrt(6) / (pi T sqrt(75)) = 3e-4 Hz).
+TEST_CASE("a line below the Welch bins is found on the whole record's periodogram", "[diagnose][selection]") {
+  const double f0 = 25.0 / (double(kLineN) / kRate);
+  for (std::uint64_t seed = 1300; seed < 1310; ++seed) {
+    auto r = simulate(kWhite, kLineN, seed);
+    for (std::size_t k = 0; k < r.rows; ++k)
+      r.gyro[0][k] += 0.01 * M_PI / 180 * std::sin(2 * M_PI * f0 * (double(k) + 0.5) / kRate + 0.7 * double(seed));
+    const auto [z, f] = lineZ(r);
+    INFO("seed " << seed << ": z " << z << ", f " << f);
+    CHECK(z > 5.5);
+    CHECK(std::fabs(f - f0) < 0.5 / (double(kLineN) / kRate));
+  }
+}
+
+// Red continua below the Welch bins are no line: the scan compares each ordinate with a line in
+// log-log through its neighbours, so a continuum's slope (f^-2 of a walk, the bend of a
+// Gauss-Markov whose corner, 1 / (2 pi 2 s) = 0.08 Hz, lies in the scanned band, f^-1 of
+// flicker) is followed, not taken for a peak. 40 seeds of each of the three: the scan's z beyond
+// 5.5 (a Bonferroni-corrected tail of 4e-8) on at most 1 of the 120.
+TEST_CASE("red continua below the Welch bins make no line", "[diagnose][selection]") {
+  const std::vector<std::string> reds = {
+      kWhite + "    - {type: random_walk, K: 20 deg/h/sqrt(s)}\n",
+      kWhite + "    - {type: gauss_markov, sigma: 0.1 deg/s, tau: 2 s}\n",
+      kWhite + "    - {type: bias_instability, B: 0.05 deg/s, tau_range: [0.01 s, 300 s]}\n"};
+  int beyond = 0;
+  double worst = 0;
+  for (const auto& model : reds)
+    for (std::uint64_t seed = 1400; seed < 1440; ++seed) {
+      const double z = lineZ(simulate(model, kLineN, seed)).first;
+      beyond += z > 5.5, worst = std::max(worst, z);
+    }
+  INFO("largest z " << worst);
+  CHECK(beyond <= 1);
+}
+
 namespace {
 
 /// A sensor warming up over the record: 25 degC + 15 (1 - exp(-t / (T / 4))) [K].
