@@ -46,13 +46,15 @@ struct DetectorContext {
   const std::vector<std::vector<double>>& taken;
   std::vector<std::vector<double>> takenBlocks;
 
-  /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a shape the
-  /// record without the taken signals can still show. A coefficient on it is the joint fit's
-  /// (Frisch-Waugh-Lovell); judged on the shape itself, a ramp beside a thermal drift of nearly
-  /// its form would be credited only with what the drift left of it.
-  std::vector<double> apart(const std::vector<double>& x, const std::vector<std::vector<double>>& beside = {}) const;
-  /// Whether x lies in the span of the constant and `taken` (its part apart from them below 1e-9 of
-  /// its spread): an effect of that shape is taken out already, and no candidate of it is proposed.
+  /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
+  /// shape the record without the taken signals can still show. A coefficient on it is the joint
+  /// fit's (Frisch-Waugh-Lovell); judged on the shape itself, a ramp beside a thermal drift of
+  /// nearly its form would be credited only with what the drift left of it.
+  std::vector<double> apart(const std::vector<double>& x,
+                            const std::vector<std::vector<double>>& beside = {}) const;
+  /// Whether x lies in the span of the constant and `taken` (its part apart from them below 1e-9
+  /// of its spread): an effect of that shape is taken out already, and no candidate of it is
+  /// proposed.
   bool spanned(const std::vector<double>& x) const;
 
   /// g_k = f(tau_k): an Allan signature on the tau grid.

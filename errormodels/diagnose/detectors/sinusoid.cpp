@@ -201,10 +201,10 @@ double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const Li
 /// A line below the Welch test's reach (its bins k >= 3, f >= 3 rate / L: on a record of n
 /// samples the lowest 3 n / L Fourier frequencies, up to ~730 cycles per record at 1e6 samples).
 /// On the whole record's tapered periodogram (taperedPeriodogram, 10 % split-cosine bell, line
-/// removed: a steep continuum's power stays local), each ordinate I_j, j = 15 .. 3 n / L + 2,
+/// removed: a steep continuum's power stays local), each ordinate I_j, j = 12 .. 3 n / L + 2,
 /// against the continuum there: a least-squares line in log I over log j fitted to its neighbours
-/// j +- 3..12 (the line's own main lobe left out; a red continuum's slope followed, not taken for
-/// a peak), predicting ln S_j - gamma (E ln of an Exp(1) ordinate is -gamma, its variance
+/// j +- 3..24 from j = 3 up (the line's own main lobe left out; a red continuum's slope followed,
+/// not taken for a peak), predicting ln S_j - gamma (E ln of an Exp(1) ordinate is -gamma, its variance
 /// pi^2 / 6). Then r = I_j / S_j-hat is Exp(1) times exp(-e), e the prediction's error
 /// (~ N(0, s^2), s from the fit), so P(r > x) = E exp(-x e^e), integrated numerically, and
 /// Bonferroni over the ordinates scanned. Returns the largest r's z and its frequency (z 0: none).

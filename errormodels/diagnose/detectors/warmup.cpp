@@ -25,7 +25,8 @@ Settling fitSettling(const DetectorContext& ctx) {
     Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), Eigen::Index(2 + ctx.takenBlocks.size()));
     for (std::size_t j = 0; j < nb; ++j) {
       X(Eigen::Index(j), 0) = 1, X(Eigen::Index(j), 1) = std::exp(-bt[j] / tw);
-      for (std::size_t i = 0; i < ctx.takenBlocks.size(); ++i) X(Eigen::Index(j), Eigen::Index(2 + i)) = ctx.takenBlocks[i][j];
+      for (std::size_t i = 0; i < ctx.takenBlocks.size(); ++i)
+        X(Eigen::Index(j), Eigen::Index(2 + i)) = ctx.takenBlocks[i][j];
     }
     return leastSquares(X, yb, beta);
   };
