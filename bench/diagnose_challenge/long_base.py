@@ -5,6 +5,7 @@ One gyro channel (gz) of white noise (0.3 deg/sqrt(h)) plus a first-order Gauss-
 form, and the loop that diagnoses one record per seed and counts the first findings. NumPy/SciPy
 only, no sinsim code.
 """
+import argparse
 import math
 import os
 import subprocess
@@ -40,6 +41,19 @@ def write_record(path, x, dt):
     with open(path, "w") as fh:
         fh.write("t[s],gz[rad/s]\n")
         np.savetxt(fh, np.column_stack([np.arange(len(x)) * dt, x]), delimiter=",", fmt="%.10e")
+
+
+def options(doc, duration, work):
+    """The studies' command line: sinsim, seeds, size, rate, duration [s], work folder."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("--sinsim", default="build/sinsim")
+    ap.add_argument("--seeds", type=int, default=12)
+    ap.add_argument("--first-seed", type=int, default=1)
+    ap.add_argument("--size", type=float, default=3.0)
+    ap.add_argument("--rate", type=float, default=100.0)
+    ap.add_argument("--duration", type=float, default=duration, help="[s]")
+    ap.add_argument("--work", default=work)
+    return ap.parse_args()
 
 
 def count_first(a, make, effect):

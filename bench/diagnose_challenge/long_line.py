@@ -12,7 +12,6 @@ sinusoid first (docs/diagnose.md, "lines below the Welch bins").
     /usr/bin/python3 bench/diagnose_challenge/long_line.py --sinsim build/sinsim \
         --seeds 16 --size 3 --rate 100 --duration 3600 --work /tmp/long_line
 """
-import argparse
 import math
 
 import numpy as np
@@ -38,18 +37,9 @@ def record(path, seed, size, fs, duration):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--sinsim", default="build/sinsim")
-    ap.add_argument("--seeds", type=int, default=12)
-    ap.add_argument("--first-seed", type=int, default=1)
-    ap.add_argument("--size", type=float, default=3.0)
-    ap.add_argument("--rate", type=float, default=100.0)
-    ap.add_argument("--duration", type=float, default=3600.0, help="[s]")
-    ap.add_argument("--work", default="/tmp/long_line")
-    a = ap.parse_args()
+    a = lb.options(__doc__, 3600.0, "/tmp/long_line")
     first = lb.count_first(a, lambda path, seed: record(path, seed, a.size, a.rate, a.duration), "sinusoid")
     print(f"sinusoid first: {first}/{a.seeds} ({a.size}x, {a.rate:g} Hz, {a.duration:g} s)")
-
 
 if __name__ == "__main__":
     main()

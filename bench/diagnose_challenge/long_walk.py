@@ -10,7 +10,6 @@ docs/diagnose.md were measured so). NumPy/SciPy only, no sinsim code. Counts how
     /usr/bin/python3 bench/diagnose_challenge/long_walk.py --sinsim build/sinsim \
         --seeds 12 --size 3 --rate 100 --duration 7200 --work /tmp/long_walk
 """
-import argparse
 import math
 
 import numpy as np
@@ -31,18 +30,9 @@ def record(path, seed, size, fs, duration):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--sinsim", default="build/sinsim")
-    ap.add_argument("--seeds", type=int, default=12)
-    ap.add_argument("--first-seed", type=int, default=1)
-    ap.add_argument("--size", type=float, default=3.0)
-    ap.add_argument("--rate", type=float, default=100.0)
-    ap.add_argument("--duration", type=float, default=7200.0, help="[s]")
-    ap.add_argument("--work", default="/tmp/long_walk")
-    a = ap.parse_args()
+    a = lb.options(__doc__, 7200.0, "/tmp/long_walk")
     first = lb.count_first(a, lambda path, seed: record(path, seed, a.size, a.rate, a.duration), "random_walk")
     print(f"random_walk first: {first}/{a.seeds} ({a.size}x at T/8, {a.rate:g} Hz, {a.duration:g} s)")
-
 
 if __name__ == "__main__":
     main()
