@@ -29,6 +29,13 @@ def base_series(rng, n, dt):
     return x + lfilter([1.0], [1.0, -phi], drive, zi=[phi * GM_SIGMA * rng.standard_normal()])[0]
 
 
+def base_record(seed, fs, duration):
+    """The generator of one seed, the samples n, the interval dt [s] and the base's n samples."""
+    rng = np.random.default_rng(seed)
+    n, dt = int(fs * duration), 1.0 / fs
+    return rng, n, dt, base_series(rng, n, dt)
+
+
 def base_avar(tau):
     """The base's Allan variance [rad^2/s^2]: GM 2 s^2 T / tau [1 - T / (2 tau) (3 - 4 e^-tau/T +
     e^-2tau/T)] plus white N^2 / tau."""

@@ -20,9 +20,7 @@ import long_base as lb
 
 
 def record(path, seed, size, fs, duration):
-    rng = np.random.default_rng(seed)
-    n, dt = int(fs * duration), 1.0 / fs
-    x = lb.base_series(rng, n, dt)
+    rng, n, dt, x = lb.base_record(seed, fs, duration)
     L = 16
     while L * 2 <= n // 8 and L * 2 <= 4096:
         L *= 2
@@ -40,6 +38,7 @@ def main():
     a = lb.options(__doc__, 3600.0, "/tmp/long_line")
     first = lb.count_first(a, lambda path, seed: record(path, seed, a.size, a.rate, a.duration), "sinusoid")
     print(f"sinusoid first: {first}/{a.seeds} ({a.size}x, {a.rate:g} Hz, {a.duration:g} s)")
+
 
 if __name__ == "__main__":
     main()

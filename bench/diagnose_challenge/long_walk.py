@@ -18,9 +18,7 @@ import long_base as lb
 
 
 def record(path, seed, size, fs, duration):
-    rng = np.random.default_rng(seed)
-    n, dt = int(fs * duration), 1.0 / fs
-    x = lb.base_series(rng, n, dt)
+    rng, n, dt, x = lb.base_record(seed, fs, duration)
     tau8 = duration / 8
     base = math.sqrt(lb.GM_SIGMA ** 2 * 2 * lb.GM_TAU / tau8 + lb.N_WHITE ** 2 / tau8)
     k = size * base / math.sqrt(tau8 / 3)
@@ -33,6 +31,7 @@ def main():
     a = lb.options(__doc__, 7200.0, "/tmp/long_walk")
     first = lb.count_first(a, lambda path, seed: record(path, seed, a.size, a.rate, a.duration), "random_walk")
     print(f"random_walk first: {first}/{a.seeds} ({a.size}x at T/8, {a.rate:g} Hz, {a.duration:g} s)")
+
 
 if __name__ == "__main__":
     main()
