@@ -58,20 +58,44 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
   };
 }
 
+namespace {
+
+/// The columns [1, vs...] (N rows) as a matrix.
+Eigen::MatrixXd withConstant(std::size_t N, const std::vector<std::vector<double>>& vs) {
+  Eigen::MatrixXd A(Eigen::Index(N), Eigen::Index(vs.size() + 1));
+  A.col(0).setOnes();
+  for (std::size_t j = 0; j < vs.size(); ++j)
+    A.col(Eigen::Index(j + 1)) = Eigen::Map<const Eigen::VectorXd>(vs[j].data(), Eigen::Index(N));
+  return A;
+}
+
+/// An orthonormal basis of the column span of A (rank-revealing QR: nearly collinear columns
+/// count once).
+Eigen::MatrixXd orthonormalBasis(const Eigen::MatrixXd& A) {
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(A.rows(), qr.rank());
+}
+
+}  // namespace
+
 std::vector<double> DetectorContext::apart(const std::vector<double>& x,
                                            const std::vector<std::vector<double>>& beside) const {
-  const auto cols = Eigen::Index(taken.size() + beside.size() + 1);
-  Eigen::MatrixXd A(Eigen::Index(N), cols);
-  A.col(0).setOnes();
-  for (std::size_t j = 0; j < taken.size() + beside.size(); ++j) {
-    const auto& v = j < taken.size() ? taken[j] : beside[j - taken.size()];
-    A.col(Eigen::Index(j + 1)) = Eigen::Map<const Eigen::VectorXd>(v.data(), Eigen::Index(N));
-  }
   const Eigen::Map<const Eigen::VectorXd> xv(x.data(), Eigen::Index(N));
+  std::vector<double> out(N);
+  Eigen::Map<Eigen::VectorXd> o(out.data(), Eigen::Index(N));
+  if (beside.empty() && takenBasis.size() > 0) {
+    o = xv - takenBasis * (takenBasis.transpose() * xv);
+    return out;
+  }
+  Eigen::MatrixXd A = withConstant(N, beside);
+  if (takenBasis.size() > 0) {
+    Eigen::MatrixXd B(A.rows(), A.cols() + takenBasis.cols());
+    B << A, takenBasis;
+    A = std::move(B);
+  }
   Eigen::VectorXd beta;
   leastSquares(A, xv, beta);
-  std::vector<double> out(N);
-  Eigen::Map<Eigen::VectorXd>(out.data(), Eigen::Index(N)) = xv - A * beta;
+  o = xv - A * beta;
   return out;
 }
 
@@ -101,6 +125,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
                       mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
                       isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}};
   for (const auto& x : taken) ctx.takenBlocks.push_back(blockMeans(x, dt, 2000).m);
+  if (!taken.empty()) ctx.takenBasis = orthonormalBasis(withConstant(N, taken));
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
     if (!d.repeatable && std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end())

@@ -45,6 +45,9 @@ struct DetectorContext {
   /// ones; empty in the first round) and their block means (on `blocks`).
   const std::vector<std::vector<double>>& taken;
   std::vector<std::vector<double>> takenBlocks;
+  /// An orthonormal basis (N x rank) of the constant and `taken`, made once (buildCandidates) so
+  /// that apart() is two products, not a least-squares solve per shape. Empty without `taken`.
+  Eigen::MatrixXd takenBasis;
 
   /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
   /// shape the record without the taken signals can still show. A coefficient on it is the joint
