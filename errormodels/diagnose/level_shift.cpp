@@ -29,6 +29,35 @@ double longRunRatio(const std::vector<double>& e, double sigma) {
   return rho;
 }
 
+/// The inflation at a shift splitting the record into a and b samples, beyond the grid: the
+/// statistic is (ab/N) (mean after - mean before), whose variance under a walk of per-sample
+/// increment variance q is q a^2 b^2 / (3N) against the white part's sigma^2 ab/N, so it needs
+/// 1 + q ab / (3 sigma^2) -- while the Allan ratio at m shows 1 + q m^2 / (3 sigma^2): 16x less
+/// excess at the grid's top (N/8) for a shift at N/2. The ratio beyond N/8 is measured on the
+/// record without the shift, which takes the largest wander of a walk with it; at the grid's
+/// scales one shift changes little. So the excess R(m) = ratio - 1 at the grid's top is carried
+/// to sqrt(ab) with its log-log slope over the grid's top octaves (least squares, clamped to
+/// [0, 2]: a walk's 2, flat for white noise or a Gauss-Markov the grid saturates), when it is
+/// clearly there (R > 1 at the top: the ratio's scatter there is ~0.5).
+double beyondGrid(const std::vector<double>& avar, const std::vector<double>& arAvar,
+                  const std::vector<std::size_t>& factors, std::size_t grid, std::size_t at, std::size_t n) {
+  grid = std::min({grid, avar.size(), arAvar.size(), factors.size()});
+  if (grid < 4 || !(arAvar[grid - 1] > 0)) return 1.0;
+  const double top = avar[grid - 1] / arAvar[grid - 1] - 1, m = double(factors[grid - 1]);
+  const double scale2 = double(at) * double(n - at) / (m * m);
+  if (!(top > 1) || !(scale2 > 1)) return 1.0;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, k = 0;
+  for (std::size_t j = grid > 6 ? grid - 6 : 0; j < grid; ++j) {
+    const double r = arAvar[j] > 0 ? avar[j] / arAvar[j] - 1 : 0.0;
+    if (!(r > 0)) continue;
+    const double x = std::log(double(factors[j])), v = std::log(r);
+    sx += x, sy += v, sxx += x * x, sxy += x * v, k += 1;
+  }
+  const double det = k * sxx - sx * sx;
+  const double slope = k >= 3 && det > 0 ? (k * sxy - sx * sy) / det : 0.0;
+  return 1 + top * std::pow(scale2, 0.5 * std::clamp(slope, 0.0, 2.0));
+}
+
 }  // namespace
 
 std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
@@ -76,7 +105,7 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   std::vector<double> tail(M + 1, 0.0);  // sum of e from t on
   for (std::size_t t = M; t-- > 0;) tail[t] = tail[t + 1] + e[t];
   LevelShift best;
-  double bestZ = -1;
+  double bestZ = -1, bestLongShare = 0;
   for (std::size_t k = p + 1; k + p + 1 < M; ++k) {
     double s = A1 * tail[k + p];
     for (std::size_t j = 0; j < p; ++j) s += c[j] * e[k + j];
@@ -85,7 +114,7 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
     const double norm2 = sumSq - sum * sum / double(M);  // |u_k| after the mean is taken out
     if (!(norm2 > 0)) continue;
     const double z = std::fabs(s) / (sigma * std::sqrt(rho * norm2));
-    if (z > bestZ) bestZ = z, best.at = k + p, best.size = s / norm2;
+    if (z > bestZ) bestZ = z, best.at = k + p, best.size = s / norm2, bestLongShare = A1 * A1 * longPart / sumSq;
   }
   if (!(bestZ > zLimit)) return std::nullopt;
   // the record's own Allan variance without the shift (a scalar rho: the argmax stays)
@@ -95,7 +124,12 @@ std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t o
   setup.rate = 1.0;  // an Allan variance of rates does not depend on the sample interval
   setup.n = rest.size();
   setup.factors = longFactors;
-  const double rhoAll = ratioTo(allanVariance(rest, setup), rho);
+  const auto restAvar = allanVariance(rest, setup);
+  // Beyond the grid the excess inflates only the long part of the statistic (A(1) times the
+  // residuals' tail sum), not the p samples of its start: a walk the AR follows (A(1) ~ 0) leaves
+  // a step as one large residual, whatever the walk's wander.
+  const double beyond = beyondGrid(restAvar, arAvar, longFactors, factors.size(), best.at, y.size());
+  const double rhoAll = std::max(ratioTo(restAvar, rho), 1 + bestLongShare * (beyond - 1));
   bestZ *= std::sqrt(rho / rhoAll);
   best.rho = rho = rhoAll;
   if (!(bestZ > zLimit)) return std::nullopt;

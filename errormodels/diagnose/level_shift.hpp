@@ -35,8 +35,10 @@ struct LevelShift {
 /// (when given) and of the record's own without the shift found (y minus it: a step must not
 /// hide behind its own Allan excess) to the whitening AR's (fit::arAllanVariance), the record's on
 /// `factors` and on the half-octave factors beyond them up to N/4 (the statistic's sums reach
-/// N/2, and a walk's Allan ratio to the AR grows as m^2). The shift must stand out against every
-/// variance the model or the record shows at long tau.
+/// N/2, and a walk's Allan ratio to the AR grows as m^2). At the shift found, a walk-like excess
+/// at the grid's top is also carried to the split's own scale sqrt(a b) (a | b samples on either
+/// side) along its log-log slope, for the statistic's long part (level_shift.cpp, beyondGrid).
+/// The shift must stand out against every variance the model or the record shows at long tau.
 std::optional<LevelShift> levelShift(const std::vector<double>& y, std::size_t order, double zLimit,
                                      const std::vector<std::size_t>& factors,
                                      const std::vector<double>& modelAvar = {});
