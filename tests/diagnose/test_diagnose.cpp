@@ -270,6 +270,26 @@ TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
   CHECK(latticeStep(z) == 0.0);
 }
 
+// A record written with a fixed number of decimals sits on a value lattice too: gx's base
+// (sd ~2e-3 rad/s) on a 0.5 rad/s offset written as %.7f is on a 1e-7 rad/s lattice, whose
+// rounding adds q^2/12 ~ 1e-15 rad^2/s^2 -- ~1e-10 of the record's one-sample Allan variance,
+// far below its own scatter (sqrt(3/N) = 0.4 %). No quantization is proposed (before: a finding
+// of score 40 on every such channel), the lattice is still found, and a real LSB of the same
+// record's size (the ADIS16405's, above) still is.
+TEST_CASE("a CSV's printing precision is no quantization", "[diagnose]") {
+  for (std::uint64_t seed : {204, 205}) {
+    auto r = record("", seed);
+    for (double& v : r.gyro[0]) v = 1e-7 * std::nearbyint((0.5 + v) / 1e-7);
+    REQUIRE(dg::detail::latticeStep(r.gyro[0]) == Approx(1e-7).epsilon(1e-3));
+    const auto d = dg::diagnose(r, fitBase(r), options());
+    for (const auto& f : d.axis("gx").findings) {
+      INFO(f.effect << " score " << f.score);
+      CHECK(f.effect != "quantization");
+      CHECK_FALSE(f.reported);
+    }
+  }
+}
+
 // The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
 // `false` and `off` switch it off for both (the reader's side is in test_model_spec). A ramp on gx
 // listed after the base keeps the base's random streams (they are keyed by list position), so a
