@@ -290,6 +290,22 @@ TEST_CASE("a CSV's printing precision is no quantization", "[diagnose]") {
   }
 }
 
+// A base whose density is 10x the record's (a model written in the wrong unit) cannot be lowered
+// by any effect: the table says the level the record shows, the square root of the fitted
+// variance factor (0.1 within the band's few %), and names the units and densities.
+TEST_CASE("a model 10x too high is said to be off in level", "[diagnose]") {
+  const auto r = record("", 206);
+  auto base = fitBase(r);
+  const auto tooHigh = errorModelFromString(
+      "gyro:\n  x:\n    - {type: ar, a: [-1.2, 0.4], sigma: 0.2 deg/s, rate: 100 Hz}\n", "high.yaml");
+  const auto d = dg::diagnose(r, tooHigh, options());
+  CHECK(std::sqrt(d.axis("gx").noiseScale) == Approx(0.1).epsilon(0.05));
+  const auto table = dg::summaryTable(d);
+  CHECK_THAT(table, Catch::Contains("gx level: the record's noise is x0.1"));
+  CHECK_THAT(table, Catch::Contains("units and densities"));
+  CHECK_THAT(dg::summaryTable(dg::diagnose(r, base, options())), !Catch::Contains("level:"));
+}
+
 // The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
 // `false` and `off` switch it off for both (the reader's side is in test_model_spec). A ramp on gx
 // listed after the base keeps the base's random streams (they are keyed by list position), so a
