@@ -53,17 +53,19 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
     f.params["lsb"] = q * dt;
     f.params["lattice"] = q;
   };
-  // A variant whose Allan variance at one sample is below the scatter of the record's own there
-  // (relative sd sqrt(3/N) for white noise) is no effect any statistic here can see: the printing
-  // precision of a CSV (9.81 written with 7 digits sits on a 1e-6 lattice whose rounding is 1e-10
-  // of a MEMS accelerometer's variance), not a sensor's LSB.
+  // A variant whose nominal Allan variance at one sample (q^2/12 rounded per sample, q^2/4
+  // carried) is below the scatter of the record's own there (relative sd sqrt(3/N) for white
+  // noise) is no effect any statistic here can see: the printing precision of a CSV (9.81 written
+  // with 7 digits sits on a 1e-6 lattice whose rounding is 1e-10 of a MEMS accelerometer's
+  // variance), not a sensor's LSB. Nominal, not the variance the rounding added to this record: on
+  // a lattice coarser than the noise that can be ~0 while the rounding shapes every sample.
   double avar1 = 0;
   for (std::size_t k = 1; k < ctx.N; ++k) avar1 += (ctx.y[k] - ctx.y[k - 1]) * (ctx.y[k] - ctx.y[k - 1]);
   avar1 /= 2.0 * double(ctx.N - 1);
   const double seen = std::sqrt(3.0 / double(ctx.N)) * avar1;
   std::vector<Candidate> out;
-  for (auto* c : {&rateLsb, &carry})
-    if (!c->g.empty() && c->g.front() > seen) out.push_back(std::move(*c));
+  if (q * q / 12.0 > seen) out.push_back(std::move(rateLsb));
+  if (q * q / 4.0 > seen) out.push_back(std::move(carry));
   return out;
 }
 
