@@ -1,4 +1,5 @@
 // The terminal table of a diagnosis and of an improvement (diagnose.hpp: summaryTable).
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -42,9 +43,11 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
   for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";
-  // The shapes are compared at the level the record shows (the fitted variance factor s); a base
-  // off by more than 2x in ADEV is said, since no effect can lower a model that is too high.
-  if (a.noiseScale > 0 && (a.noiseScale < 0.25 || a.noiseScale > 4))
+  // The shapes are compared at the level the record shows (the fitted variance factor s); where
+  // nothing is reported, a base off by more than 2x in ADEV is said (no effect can lower a model
+  // that is too high). Beside findings s also absorbs their fit (a line's, a coarse lattice's).
+  const bool reported = std::any_of(a.findings.begin(), a.findings.end(), [](const Finding& f) { return f.reported; });
+  if (!reported && a.noiseScale > 0 && (a.noiseScale < 0.25 || a.noiseScale > 4))
     o << "  " << a.channel << " level: the record's noise is x" << num(std::sqrt(a.noiseScale), 3)
       << " the model's base noise in ADEV (Allan variance factor " << num(a.noiseScale, 3)
       << ", fitted with the findings): check the model's units and densities\n";
