@@ -59,10 +59,10 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   // with 7 digits sits on a 1e-6 lattice whose rounding is 1e-10 of a MEMS accelerometer's
   // variance), not a sensor's LSB. Nominal, not the variance the rounding added to this record: on
   // a lattice coarser than the noise that can be ~0 while the rounding shapes every sample.
-  double avar1 = 0;
-  for (std::size_t k = 1; k < ctx.N; ++k) avar1 += (ctx.y[k] - ctx.y[k - 1]) * (ctx.y[k] - ctx.y[k - 1]);
-  avar1 /= 2.0 * double(ctx.N - 1);
-  const double seen = std::sqrt(3.0 / double(ctx.N)) * avar1;
+  Setup one = ctx.setup;
+  one.factors = {1};
+  const auto avar1 = allanVariance(ctx.y, one);
+  const double seen = avar1.empty() ? 0.0 : std::sqrt(3.0 / double(ctx.N)) * avar1.front();
   std::vector<Candidate> out;
   if (q * q / 12.0 > seen) out.push_back(std::move(rateLsb));
   if (q * q / 4.0 > seen) out.push_back(std::move(carry));
