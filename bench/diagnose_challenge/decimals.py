@@ -10,9 +10,7 @@ the exact base), rewritten in FORMAT; counts the clean channels that report a fi
 """
 import argparse
 import collections
-import json
 import os
-import subprocess
 
 import numpy as np
 
@@ -38,13 +36,13 @@ def main():
             header = fh.readline().strip()
         data = np.loadtxt(row["record"], delimiter=",", skiprows=1)
         np.savetxt(row["record"], data, delimiter=",", header=header, comments="", fmt=a.format)
-        out = row["record"][:-4] + ".json"
-        subprocess.run([a.sinsim, "diagnose", row["record"], "--model", row["model"], "--realisations",
-                        str(a.realisations), "--json", out], capture_output=True, text=True, check=True)
+        res = challenge.diagnose(a.sinsim, row, argparse.Namespace(sinsim=a.sinsim, threads=1, threshold=None,
+                                                                   realisations=a.realisations))
         os.remove(row["record"])
-        for axis in json.load(open(out))["axes"]:
+        if "error" in res:
+            raise SystemExit(f"{row['record']}: {res['error']}")
+        for found in (r["findings"] for r in res.values()):
             channels += 1
-            found = [f["effect"] for f in axis["findings"] if f["reported"]]
             reported += bool(found)
             effects.update(found)
         print(f"\r{i + 1}/{a.records} records", end="", flush=True)
