@@ -226,6 +226,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
     page.plotRow({acfPlot(a)});
     page.table(findingsTable(a, d.threshold));
     for (const std::string& u : dg::unexplainedSentences(a)) page.paragraph("Unexplained: " + u + ".");
+    if (const std::string s = dg::switchingSentence(a); !s.empty()) page.paragraph("Level steps: " + s + ".");
     if (imp) {
       const auto& after = imp->after.axis(a.channel);
       Plot p("Before → after — " + a.channel, "averaging time τ [s]", "σ(τ) [" + a.unit + "]");

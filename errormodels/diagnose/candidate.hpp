@@ -71,6 +71,11 @@ struct Candidate {
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
   std::function<std::vector<double>(std::size_t maxLag)> acov;
+  /// A process whose realisation may be a two-level switching (a telegraph: exponential
+  /// autocorrelation, the Gauss-Markov's): on a record whose level steps go back and forth
+  /// (selection.cpp, revertingSteps) the steps are its realisation, and it is credited on the
+  /// record with them.
+  bool switching = false;
   /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
   std::function<void(double theta, Finding&)> describe;
 };

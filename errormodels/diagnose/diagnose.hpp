@@ -138,6 +138,9 @@ struct AxisDiagnosis {
   /// The level steps no reported finding takes out (a warm-up's or a temperature's signal may):
   /// no effect of the catalogue makes them, so they are unexplained too, with time and size.
   std::vector<LevelStep> unexplainedSteps;
+  /// Level steps that go back and forth, explained instead by a reported switching process (a
+  /// Gauss-Markov: a telegraph's autocorrelation is its) as that process' realisation.
+  std::vector<LevelStep> switchingSteps;
   bool fits(double threshold) const;  ///< no reported finding and chi2 below its 0.999 quantile
 };
 
@@ -220,6 +223,10 @@ std::string summaryTable(const Improvement& imp);
 /// the τ range the model with its findings still misses, the level steps no finding takes out.
 /// Empty when nothing is left.
 std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a);
+
+/// The level steps a reported switching process explains (AxisDiagnosis::switchingSteps), as one
+/// sentence; empty when there are none.
+std::string switchingSentence(const AxisDiagnosis& a);
 
 /// An effect of a channel ("gx".."az") in model-file syntax, e.g. {type: ramp, slope: 12 deg/h^2}:
 /// the one writer's inline form (errormodels/model_io.hpp: effectYaml) in the channel's units;

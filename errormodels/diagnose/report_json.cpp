@@ -54,6 +54,8 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained
   for (const auto& st : a.unexplainedSteps)  // absent: no level step left
     j["unexplained_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
+  for (const auto& st : a.switchingSteps)  // absent: none a switching process explains
+    j["switching_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
   if (a.ljungBox)
     j["ljung_box"] = {{"lags", a.ljungBox->lags}, {"dof", a.ljungBox->dof}, {"Q", a.ljungBox->Q},
                       {"p", a.ljungBox->pValue}};

@@ -20,6 +20,16 @@ std::string pad(std::string s, std::size_t w) {
   return s;
 }
 
+/// "level steps at t = 12.5 s (+0.01 deg/s) ..." in the channel's unit.
+std::string stepsText(const AxisDiagnosis& a, const std::vector<LevelStep>& steps) {
+  std::ostringstream o;
+  o << "level step" << (steps.size() > 1 ? "s" : "") << " at";
+  for (const auto& st : steps)
+    o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
+      << a.unit << ")";
+  return o.str();
+}
+
 std::string findingsText(const AxisDiagnosis& a, double threshold) {
   std::string s;
   for (const auto& f : a.findings)
@@ -43,6 +53,7 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
   for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";
+  if (const std::string s = switchingSentence(a); !s.empty()) o << "  " << a.channel << " steps: " << s << "\n";
   // The shapes are compared at the level the record shows (the fitted variance factor s); where
   // nothing is reported, a base off by more than 2x in ADEV is said (no effect can lower a model
   // that is too high). Beside findings s also absorbs their fit (a line's, a coarse lattice's).
@@ -64,16 +75,17 @@ std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a) {
       << "); no candidate of the catalogue lowers the criterion there";
     out.push_back(o.str());
   }
-  if (!a.unexplainedSteps.empty()) {
-    std::ostringstream o;
-    o << "level step" << (a.unexplainedSteps.size() > 1 ? "s" : "") << " at";
-    for (const auto& st : a.unexplainedSteps)
-      o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
-        << a.unit << ")";
-    o << "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)";
-    out.push_back(o.str());
-  }
+  if (!a.unexplainedSteps.empty())
+    out.push_back(stepsText(a, a.unexplainedSteps) +
+                  "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)");
   return out;
+}
+
+std::string switchingSentence(const AxisDiagnosis& a) {
+  if (a.switchingSteps.empty()) return "";
+  return stepsText(a, a.switchingSteps) +
+         "; they go back and forth: the switching of the gauss_markov found (a telegraph's autocorrelation is a "
+         "Gauss-Markov's)";
 }
 
 std::string summaryTable(const Diagnosis& d) {

@@ -160,6 +160,30 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
   return steps;
 }
 
+/// Whether the piecewise-constant series `steps` goes back and forth: its jumps (those above a
+/// quarter of the largest: a step located in two pieces is one) change sign at least four times.
+/// One bias step has none, a few disturbances up, down, up two; a telegraph's switches alternate
+/// (a switch the test misses leaves the others alternating), and so does a series of excursions
+/// that come back. Such steps are a switching process' realisation, which a candidate with its
+/// second-order statistics (Candidate::switching) explains.
+bool revertingSteps(const std::vector<double>& steps) {
+  std::vector<double> jumps;
+  double largest = 0;
+  for (std::size_t k = 1; k < steps.size(); ++k) {
+    if (steps[k] == steps[k - 1]) continue;
+    jumps.push_back(steps[k] - steps[k - 1]);
+    largest = std::max(largest, std::fabs(jumps.back()));
+  }
+  int changes = 0;
+  double last = 0;
+  for (double j : jumps) {
+    if (!(std::fabs(j) > 0.25 * largest)) continue;
+    changes += last != 0 && (j > 0) != (last > 0);
+    last = j;
+  }
+  return changes >= 4;
+}
+
 /// w.steps, w.jumpFreeL and w.explainsJumps for the series x (the record without the accepted
 /// signals). A level jump (a bias step, a telegraph switch, a disturbance of the test stand) is no
 /// effect of the catalogue, and every candidate's Allan shape can absorb part of its excess: a
@@ -185,8 +209,10 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeCoef = lowFrequencyCoefficients(r, w.lowFreq);
   w.jumpFreeL.resize(av.size());
   for (std::size_t k = 0; k < av.size(); ++k) w.jumpFreeL[k] = std::log(std::max(av[k], 1e-300));
+  const bool reverting = revertingSteps(steps);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     const auto& sig = w.cands[i].signal;
+    if (w.cands[i].switching && reverting) w.explainsJumps[i] = 1;
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
     w.explainsJumps[i] = stepSeries(w, r, modelAvar, 1).empty();
@@ -358,8 +384,8 @@ std::optional<FailRange> unexplainedRange(const ChannelWork& w, const std::vecto
 }
 
 /// The level steps (markJumps) the record without the accepted signals still shows, as times and
-/// sizes: no effect of the catalogue makes them.
-std::vector<LevelStep> unexplainedSteps(const ChannelWork& w) {
+/// sizes: unexplained, unless they go back and forth beside a reported switching process.
+std::vector<LevelStep> stepList(const ChannelWork& w) {
   std::vector<LevelStep> out;
   for (std::size_t k = 1; k < w.steps.size(); ++k)
     if (w.steps[k] != w.steps[k - 1]) out.push_back({double(k) / w.rate, w.steps[k] - w.steps[k - 1]});
@@ -452,17 +478,25 @@ void selectFindings(ChannelWork& w, double threshold) {
   }
   restateSignals(w);
   // Sizes of the reported ones from the final joint fit (an accepted signal has its own size).
+  // Steps that go back and forth are the realisation of an accepted switching process: no longer
+  // unexplained, they are its evidence.
   const auto set = allanSet(w);
+  const bool reverting = revertingSteps(w.steps);
+  bool switched = false;
   for (std::size_t j = 0, a = 0; j < w.accepted.size(); ++j) {
     const auto& cand = w.cands[w.accepted[j]];
     Finding& f = d.findings[j];
     f.evidence = cand.evidence;
+    if (cand.switching && reverting) {
+      switched = true;
+      f.evidence += "; the level switches back and forth (" + std::to_string(stepList(w).size()) + " steps)";
+    }
     cand.describe(cand.signal.empty() ? w.sol.theta[a++] : 1.0, f);
   }
   d.noiseScale = w.sol.s;
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
-  d.unexplainedSteps = unexplainedSteps(w);
+  (switched ? d.switchingSteps : d.unexplainedSteps) = stepList(w);
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
   w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }

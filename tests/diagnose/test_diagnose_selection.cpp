@@ -180,6 +180,42 @@ TEST_CASE("a random walk with bias jumps is still named", "[diagnose][selection]
   }
 }
 
+// A random telegraph (bias switching between +A and -A at rate lambda, "popcorn noise") has the
+// autocorrelation A^2 exp(-2 lambda |t|): a Gauss-Markov's with sigma = A and tau = 1 / (2 lambda)
+// -- its physical equivalent in the catalogue (issue 12). With A the white noise's per-sample sd
+// each switch is a step of 2 sd, ~14 sd of a 100-sample window increment, and the step test finds
+// them; every noise was then credited only with what the record without them holds: here a GM
+// of tau 0.9-1.8 s that the imperfectly located switches leave (on the challenge's records r0104
+// and r0238 a flat floor: bias instability first). Switches that go back and forth are the GM's
+// realisation: it is credited on the record with them. lambda = 1/15 Hz: ~40 switches in 600 s,
+// tau = 7.5 s; the estimate from 40 switches scatters by ~1/sqrt(40), the GM grid's step is
+// sqrt(2): tau within a factor 2.
+TEST_CASE("a telegraph with many switches is named a Gauss-Markov", "[diagnose][selection]") {
+  const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n";
+  const double A = 0.1 * M_PI / 180, lambda = 1.0 / 15.0;
+  for (std::uint64_t seed : {21, 22, 23}) {
+    auto r = simulate(base, 60000, seed);
+    std::mt19937_64 gen(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double level = A;
+    for (std::size_t k = 0; k < r.rows; ++k) {
+      if (u(gen) < lambda / kRate) level = -level;
+      r.gyro[0][k] += level;
+    }
+    const auto d = dg::diagnose(r, errorModelFromString(base, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    REQUIRE_FALSE(d.findings.empty());
+    CHECK(d.findings[0].reported);
+    REQUIRE(d.findings[0].effect == "gauss_markov");
+    CHECK(d.findings[0].params.at("tau") > 0.5 / (2 * lambda));
+    CHECK(d.findings[0].params.at("tau") < 2.0 / (2 * lambda));
+    // the switches found are the GM's realisation, listed as such and not as unexplained
+    CHECK(d.unexplainedSteps.empty());
+    CHECK(d.switchingSteps.size() >= 10);
+    CHECK(dg::switchingSentence(d).find("go back and forth") != std::string::npos);
+  }
+}
+
 // Six channels on worker threads: each channel's result in its own slot, so the JSON is the
 // same byte for byte with one thread or two (realisation r is StreamKey (seed, r) wherever it runs).
 TEST_CASE("channels on worker threads give the same diagnosis as one thread", "[diagnose][selection]") {

@@ -192,4 +192,14 @@ TEST_CASE("diagnose report: what a channel leaves unexplained is on the page, as
   d.axes[0].unexplainedSteps.clear();
   CHECK(dg::unexplainedSentences(d.axes[0]).empty());
   CHECK(diagnoseReportHtml(d).find("Unexplained: ") == std::string::npos);
+  // Steps a reported switching process explains are listed as its, not as unexplained.
+  d.axes[0].switchingSteps = {{10.0, 0.03 * M_PI / 180.0}, {12.5, -0.03 * M_PI / 180.0}};
+  CHECK(dg::unexplainedSentences(d.axes[0]).empty());
+  const std::string sw = dg::switchingSentence(d.axes[0]);
+  CHECK(sw.find("t = 12.5 s (-0.03 deg/s)") != std::string::npos);
+  CHECK(sw.find("back and forth") != std::string::npos);
+  const std::string html2 = diagnoseReportHtml(d);
+  CHECK(html2.find("Level steps: level steps at t = 10 s (+0.03 deg/s) t = 12.5 s (-0.03 deg/s); they go back") !=
+        std::string::npos);
+  CHECK(html2.find("Unexplained: ") == std::string::npos);
 }

@@ -19,6 +19,7 @@ Candidate gmCandidate(const DetectorContext& ctx, double Tc) {
   Candidate c;
   c.effect = "gauss_markov";
   c.parameters = 2;  // sigma and its correlation time
+  c.switching = true;  // a telegraph's autocorrelation is exp(-2 lambda |t|): a GM's
   c.g = ctx.shape([&](double t) {
     const auto m = std::size_t(std::llround(t / dt));
     return fit::gmDiscreteAllanVariance(1.0, Tc, dt, m < 1 ? 1 : m);
