@@ -57,7 +57,9 @@ double roundingAddedVariance(const std::vector<double>& y, double q, std::size_t
     }
     const long k = std::lround(sum), ph = ((k % long(block)) + long(block)) % long(block);
     phases[ph] += 1.0 / double(nb);
-    v += (sum2 - sum * sum / double(block)) / double(block - 1) / double(nb);  // LSB^2
+    // A block above 2 LSB^2 (sigma > 1.4 q: q^2/12 added whatever its level) counts as 2, so that
+    // a few spikes or a step inside blocks cannot pass for a dithering noise over the whole record.
+    v += std::min(2.0, (sum2 - sum * sum / double(block)) / double(block - 1)) / double(nb);  // LSB^2
   }
   if (v >= 1.1) return q * q / 12.0;
   double a = 1e-3, b = std::sqrt(v) + 1.0;

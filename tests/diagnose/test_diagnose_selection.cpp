@@ -65,6 +65,28 @@ TEST_CASE("spikes under an oscillatory AR base are found as outliers", "[diagnos
   }
 }
 
+// On a lattice coarser than the noise (sd q/5 about a cell's centre: 1 % of the samples leave
+// it) the one-step residuals are mostly 0 and their MAD is 0: the outlier test had no scale and
+// proposed nothing (here a line or nothing was reported first; challenge record r0145: five
+// spikes of 40 LSB beside quantization, reported as quantization alone). The residual scale is at least the rounding's q/sqrt(12): a spike of 40 q is ~100 of
+// it, a one-level flip stays below the test's 4 LSB.
+TEST_CASE("spikes on a lattice coarser than the noise are found as outliers", "[diagnose][selection]") {
+  const double q = 0.05 * M_PI / 180;  // 0.05 deg/s; the white sd is 0.01 deg/s per sample
+  const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.001 deg/s/sqrt(Hz)}\n"
+                           "    - {type: quantization, lsb: 0.05 deg/s}\n";
+  for (std::uint64_t seed : {31, 32, 33}) {
+    auto r = simulate("gyro:\n  x:\n    - {type: white, density: 0.001 deg/s/sqrt(Hz)}\n", 30000, seed);
+    for (std::size_t k = 2500; k < r.rows; k += 5000) r.gyro[0][k] += (k % 2 ? 40 : -40) * q;
+    for (auto& v : r.gyro[0]) v = q * std::round(v / q);  // a level at a cell centre: 1 % flip
+    const auto d = dg::diagnose(r, errorModelFromString(base, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    REQUIRE_FALSE(d.findings.empty());
+    CHECK(d.findings[0].reported);
+    CHECK(d.findings[0].effect == "outliers");
+    CHECK(d.findings[0].params.at("amplitude") == Approx(40 * q).epsilon(0.05));
+  }
+}
+
 // A single bias step has the Allan variance of a random walk (one large increment), and the
 // Gaussian noise candidates would absorb it. Its window-mean increments show one far beyond the
 // rest, and on the record with that step taken out no Gaussian noise explains anything, so none

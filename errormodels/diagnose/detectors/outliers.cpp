@@ -28,7 +28,9 @@ struct AdditiveOutliers {
   std::vector<double> rho;   // correlation of the estimates at lags 0..kOrder
 };
 
-AdditiveOutliers additiveOutliers(const std::vector<double>& y, double& sigma) {
+/// The estimates for the record y on the value lattice `lattice` (0: none); sigma: the residuals'
+/// robust scale [SI].
+AdditiveOutliers additiveOutliers(const std::vector<double>& y, double lattice, double& sigma) {
   const auto ar = fit::burg(y, kOrder);
   const std::size_t N = y.size();
   std::vector<double> e(N, 0.0);
@@ -39,7 +41,10 @@ AdditiveOutliers additiveOutliers(const std::vector<double>& y, double& sigma) {
   }
   const std::vector<double> tail(e.begin() + kOrder, e.end());
   const double med = median(tail);
-  sigma = robustSd(tail);
+  // On a lattice coarser than the noise most residuals are 0 and their MAD is 0 (or a fraction of
+  // the step): the residual scale is at least the rounding's, q / sqrt(12) (a one-level flip
+  // stays below isolatedPeaks' 4 LSB).
+  sigma = std::max(robustSd(tail), lattice / std::sqrt(12.0));
   double norm2 = 0;
   for (std::size_t i = 0; i <= kOrder; ++i) norm2 += ar.a[i] * ar.a[i];
   AdditiveOutliers out;
@@ -95,7 +100,7 @@ std::vector<Candidate> detect_outliers(const DetectorContext& ctx) {
   const std::size_t N = ctx.N;
   if (N < 64) return {};
   double sigma = 0;
-  const auto ao = additiveOutliers(ctx.y, sigma);
+  const auto ao = additiveOutliers(ctx.y, ctx.lattice, sigma);
   if (!(sigma > 0)) return {};
   const double zt = zFromTwoSidedP(1e-3 / double(N));  // erfc(z/sqrt2) = 1e-3 / N
   auto iso = isolatedPeaks(ao, zt, ctx.lattice);
