@@ -74,15 +74,16 @@ constexpr double kMaxAcceleration = 1e4;
 constexpr double kMaxTemperature = 1273.15;
 
 // ---- Records (CSV) --------------------------------------------------------------------------
-/// [bytes] Largest record text after decompression. With the values below (and the text's last
-/// doubling while it is read) a record stays under ~1.2 GB of memory; at 1 GiB a 1 MB gzip of one
-/// long line ended in std::bad_alloc under a 1.5 GB limit.
-constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 29;
+/// [characters] Longest line of a record (a comment line before the header included). The text is
+/// read in chunks and parsed as it comes, so only a line is ever held: a 1 MB gzip of one 600 MB
+/// line used to be read whole (std::bad_alloc at 1 GiB of text).
+constexpr std::size_t kMaxRecordLineChars = std::size_t{1} << 20;
 /// Largest number of columns of a record.
 constexpr std::size_t kMaxRecordColumns = 64;
-/// Largest number of cells (rows × columns): 8 bytes each in memory (400 MB); 17 h of 8
-/// columns at 100 Hz.
-constexpr std::size_t kMaxRecordCells = 50000000;
+/// Largest number of cells (rows × columns): 8 bytes each in memory (2.4 GB at the limit); a
+/// 4-h record at 2 kHz with 10 columns (2.9e8) -- the longest and fastest static records the
+/// diagnosis is asked to take.
+constexpr std::size_t kMaxRecordCells = 300000000;
 /// [characters] Longest field of a record (a double needs at most ~25).
 constexpr std::size_t kMaxFieldChars = 64;
 

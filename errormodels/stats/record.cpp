@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -35,55 +36,59 @@ struct Column {
   detail::recordError(source, line, what);
 }
 
-/// Reads (and gunzips) `path` into `out`, at most `limit` bytes; with `out` nullptr only counts,
-/// up to `limit` + 1 (more than the limit). The number of bytes read. A read error or a truncated
-/// gzip stream fails with the file's name.
-std::size_t readGz(const std::string& path, char* out, std::size_t limit) {
+/// Calls `line(text, number)` for every line of `path` (gunzipped when it is a gzip stream; zlib
+/// reads plain files as they are), without its '\n', while the file is read in chunks: a record
+/// of any length needs memory for its values only, not for its text. A line longer than
+/// limits::kMaxRecordLineChars fails (a 1 MB gzip can hold a 1 GB line); so do a read error and a
+/// truncated gzip stream, with the file's name. Progress: the compressed bytes read of the file.
+template <class OnLine>
+void forEachLineOfFile(const std::string& path, OnLine&& line) {
+  requireRegularFile(path, "record");
   gzFile f = gzopen(path.c_str(), "rb");
   if (f == nullptr) fail(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+  struct Closer {
+    gzFile f;
+    ~Closer() { gzclose(f); }
+  } closer{f};
   gzbuffer(f, 1u << 20);
-  std::vector<char> scratch(out ? 0 : std::size_t{1} << 20);
-  std::size_t used = 0;
-  const std::size_t stop = out ? limit : limit + 1;
-  while (used < stop) {
-    const std::size_t room = out ? limit - used : scratch.size();
-    const unsigned want = static_cast<unsigned>(std::min<std::size_t>(room, 1u << 30));
-    const int got = gzread(f, out ? out + used : scratch.data(), want);
-    if (got < 0) {
-      int code = 0;
-      std::string msg = gzerror(f, &code);
-      gzclose(f);
-      fail(path, 0, "read error: " + msg);
+  std::error_code ec;
+  const auto fileBytes = std::filesystem::file_size(path, ec);
+  constexpr std::size_t kChunk = std::size_t{1} << 22;
+  std::vector<char> buf(kChunk + limits::kMaxRecordLineChars + 1);
+  std::size_t held = 0, number = 0;
+  auto readError = [&] {
+    int code = 0;
+    fail(path, 0, std::string("read error: ") + gzerror(f, &code));
+  };
+  for (bool eof = false; !eof;) {
+    const int got = gzread(f, buf.data() + held, static_cast<unsigned>(kChunk));
+    if (got < 0) readError();
+    eof = got == 0;
+    held += static_cast<std::size_t>(got);
+    const char* p = buf.data();
+    const char* const end = p + held;
+    for (;;) {
+      const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      if (eol == nullptr && !(eof && p < end)) break;
+      if (eol == nullptr) eol = end;
+      if (static_cast<std::size_t>(eol - p) > limits::kMaxRecordLineChars) break;
+      line(std::string_view(p, static_cast<std::size_t>(eol - p)), ++number);
+      p = eol < end ? eol + 1 : end;
     }
-    if (got == 0) break;
-    used += static_cast<std::size_t>(got);
+    held = static_cast<std::size_t>(end - p);
+    if (held > limits::kMaxRecordLineChars)
+      fail(path, number + 1, "a line longer than " + std::to_string(limits::kMaxRecordLineChars) +
+                                 " characters (docs/limits.md)");
+    std::memmove(buf.data(), p, held);
+    if (!eof) {
+      const auto at = gzoffset(f);
+      progress::checkpoint("reading " + path, at > 0 ? std::uint64_t(at) : 0, ec ? 0 : std::uint64_t(fileBytes));
+    }
   }
   // A truncated gzip stream ends with Z_BUF_ERROR ("unexpected end of file").
   int code = Z_OK;
-  const char* msg = gzerror(f, &code);
-  if (used <= limit && code != Z_OK && code != Z_STREAM_END) {
-    std::string m = msg;
-    gzclose(f);
-    fail(path, 0, "read error: " + m);
-  }
-  gzclose(f);
-  return used;
-}
-
-/// Reads a whole file, gunzipping when it is a gzip stream (zlib reads plain files as they are).
-/// Two passes: the size first, without keeping the text (a 1 MB gzip can hold 1 GB, and nothing
-/// is allocated for it), then one buffer of exactly that size. A buffer grown by doubling held the
-/// old and the new copy at once: 1 GB of memory for a 512 MB record.
-std::string readWholeFile(const std::string& path) {
-  requireRegularFile(path, "record");
-  const std::size_t size = readGz(path, nullptr, limits::kMaxRecordBytes);
-  if (size > limits::kMaxRecordBytes)
-    fail(path, 0, "record larger than " + std::to_string(limits::kMaxRecordBytes) +
-                      " bytes after decompression (docs/limits.md)");
-  std::string text(size, '\0');
-  const std::size_t again = readGz(path, text.data(), size);
-  if (again != size) fail(path, 0, "the file changed while it was read");
-  return text;
+  gzerror(f, &code);
+  if (code != Z_OK && code != Z_STREAM_END) readError();
 }
 
 struct UnitSpec {
@@ -251,121 +256,114 @@ inline const char* parseField(const char* p, const char* end, double& value, con
   return after;
 }
 
-}  // namespace
-
-Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
-  if (options.rate_hz) detail::checkRate(*options.rate_hz, source, "the rate option (--rate)");
-  if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
-    fail(source, 0, "time tolerance must be positive");
-  if (!(std::isfinite(options.skip_s) && options.skip_s >= 0))
-    fail(source, 0, "skip: expected a non-negative time, got " + limits::fmt(options.skip_s));
-  if (options.duration_s && !(std::isfinite(*options.duration_s) && *options.duration_s > 0))
-    fail(source, 0, "duration: expected a positive time, got " + limits::fmt(*options.duration_s));
-
-  // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  const char* p = text.data();
-  const char* const end = p + text.size();
-  std::size_t line = 0;
-  // Comment lines and blank lines before the header.
-  const bool noHeader = headerless(options.columns);
-  std::string_view header;
-  while (p < end) {
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-    if (eol == nullptr) eol = end;
-    ++line;
-    std::string_view l = trimmed(std::string_view(p, static_cast<std::size_t>(eol - p)));
-    const char* const lineStart = p;
-    p = eol < end ? eol + 1 : end;
-    if (l.empty() || l.front() == '#') continue;
-    header = l;
-    if (noHeader) {  // the first data row: read again below
-      p = lineStart;
-      --line;
-    }
-    break;
+/// The record's lines in order: comment and blank lines, the header (or, without one, the first
+/// data row), then the rows, each parsed into its columns as it comes -- so that a file is read
+/// in chunks and its text never held whole.
+class RowReader {
+ public:
+  RowReader(std::string source, const RecordOptions& options) : source_(std::move(source)), options_(options) {
+    if (options.rate_hz) detail::checkRate(*options.rate_hz, source_, "the rate option (--rate)");
+    if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
+      fail(source_, 0, "time tolerance must be positive");
+    if (!(std::isfinite(options.skip_s) && options.skip_s >= 0))
+      fail(source_, 0, "skip: expected a non-negative time, got " + limits::fmt(options.skip_s));
+    if (options.duration_s && !(std::isfinite(*options.duration_s) && *options.duration_s > 0))
+      fail(source_, 0, "duration: expected a positive time, got " + limits::fmt(*options.duration_s));
   }
-  if (header.empty()) fail(source, 0, "empty file: no header line and no data");
-  const std::size_t header_line = line;
-  const Separator sep = options.separator ? *options.separator : detectSeparator(header);
-  std::vector<std::string_view> fields = splitHeader(header, sep);
-  std::vector<std::string> numbered;  // a file without a header: "column 1", "column 2", ...
-  if (noHeader) {
-    for (std::size_t i = 0; i < fields.size(); ++i) numbered.push_back(std::to_string(i + 1));
-    fields.assign(numbered.begin(), numbered.end());
-  }
-  std::vector<Column> cols = parseHeader(fields, source, line, options);
-  if (noHeader)
-    for (Column& c : cols) c.header = "column " + c.header;
-  const std::size_t ncol = cols.size();
 
-  // Upper bound of the row count, so that columns are written in place.
-  const std::size_t max_rows =
-      static_cast<std::size_t>(std::count(p, end, '\n')) + 1;
-  if (max_rows > limits::kMaxRecordCells / ncol)
-    fail(source, 0, "record too large: up to " + std::to_string(max_rows) + " rows of " +
-                        std::to_string(ncol) + " columns, more than " +
-                        std::to_string(limits::kMaxRecordCells) + " values (docs/limits.md)");
-  std::vector<std::vector<double>> data(ncol);
-  for (auto& c : data) c.resize(max_rows);
-
-  std::size_t rows = 0;
-  while (p < end) {
-    const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-    if (eol == nullptr) eol = end;
-    ++line;
-    const char* q = p;
-    const char* next = eol < end ? eol + 1 : end;
+  /// One line (without its '\n'), numbered from 1.
+  void line(std::string_view l, std::size_t number) {
+    // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+    if (number == 1 && l.substr(0, 3) == "\xEF\xBB\xBF") l.remove_prefix(3);
+    if (cols_.empty()) return header(l, number);
     // Blank lines are allowed only at the end of the file.
-    if (trimmed(std::string_view(p, static_cast<std::size_t>(eol - p))).empty()) {
-      const char* r = next;
-      while (r < end && (*r == '\n' || *r == '\r' || *r == ' ' || *r == '\t')) ++r;
-      if (r == end) break;
-      fail(source, line, "empty row inside the data");
+    if (trimmed(l).empty()) {
+      if (blankAt_ == 0) blankAt_ = number;
+      return;
     }
+    if (blankAt_ != 0) fail(source_, blankAt_, "empty row inside the data");
+    row(l, number);
+  }
+
+  Record finish() {
+    if (cols_.empty()) fail(source_, 0, "empty file: no header line and no data");
+    if (rows_ == 0) fail(source_, headerLine_, "no data rows after the header");
+    Record rec;
+    rec.source = source_;
+    rec.rows = rows_;
+    for (std::size_t c = 0; c < cols_.size(); ++c) store(rec, cols_[c], std::move(data_[c]));
+    if (!rec.t.empty()) {
+      detail::checkTime(rec, headerLine_ + 1, options_);
+    } else {
+      if (!options_.rate_hz)
+        fail(source_, 0,
+             "the file has no time column (t): give the sample rate, or name its time column in the column mapping "
+             "(t=NAME)");
+      rec.rate_hz = *options_.rate_hz;
+    }
+    detail::checkRate(rec.rate_hz, source_, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
+    detail::applyWindow(rec, options_);
+    return rec;
+  }
+
+ private:
+  /// Comment and blank lines before the header are skipped; without a header (a numbered column
+  /// mapping) the first data row names the columns "column 1", ... and is read as a row too.
+  void header(std::string_view raw, std::size_t number) {
+    const std::string_view l = trimmed(raw);
+    if (l.empty() || l.front() == '#') return;
+    const bool noHeader = headerless(options_.columns);
+    headerLine_ = noHeader ? number - 1 : number;
+    sep_ = options_.separator ? *options_.separator : detectSeparator(l);
+    std::vector<std::string_view> fields = splitHeader(l, sep_);
+    std::vector<std::string> numbered;
+    if (noHeader) {
+      for (std::size_t i = 0; i < fields.size(); ++i) numbered.push_back(std::to_string(i + 1));
+      fields.assign(numbered.begin(), numbered.end());
+    }
+    cols_ = parseHeader(fields, source_, number, options_);
+    if (noHeader)
+      for (Column& c : cols_) c.header = "column " + c.header;
+    data_.resize(cols_.size());
+    if (noHeader) row(raw, number);
+  }
+
+  void row(std::string_view l, std::size_t number) {
+    const std::size_t ncol = cols_.size();
+    if ((rows_ + 1) > limits::kMaxRecordCells / ncol)
+      fail(source_, number, "record too large: more than " + std::to_string(limits::kMaxRecordCells) +
+                                " values in rows of " + std::to_string(ncol) + " columns (docs/limits.md)");
+    const char* q = l.data();
+    const char* const eol = q + l.size();
     for (std::size_t c = 0; c < ncol; ++c) {
-      if (q >= eol && c > 0) {
-        fail(source, line, "short row: " + std::to_string(c) + " field(s), the header has " +
-                               std::to_string(ncol));
-      }
+      if (q >= eol && c > 0)
+        fail(source_, number, "short row: " + std::to_string(c) + " field(s), the header has " + std::to_string(ncol));
       double v;
-      q = parseField(q, eol, v, cols[c], sep, source, line);
-      data[c][rows] = v;
+      q = parseField(q, eol, v, cols_[c], sep_, source_, number);
+      data_[c].push_back(v);
       if (c + 1 < ncol) {
         if (q >= eol)
-          fail(source, line, "short row: " + std::to_string(c + 1) + " field(s), the header has " +
-                                 std::to_string(ncol));
-        if (!sep.blanks) ++q;  // the separator (blanks were skipped by parseField)
+          fail(source_, number,
+               "short row: " + std::to_string(c + 1) + " field(s), the header has " + std::to_string(ncol));
+        if (!sep_.blanks) ++q;  // the separator (blanks were skipped by parseField)
       }
     }
-    if (q < eol) {
-      fail(source, line, "long row: more than the " + std::to_string(ncol) + " fields of the header");
-    }
-    ++rows;
-    p = next;
-    if ((rows & 0xffff) == 0) progress::checkpoint("reading " + source, rows, max_rows);
+    if (q < eol) fail(source_, number, "long row: more than the " + std::to_string(ncol) + " fields of the header");
+    ++rows_;
   }
-  if (rows == 0) fail(source, header_line, "no data rows after the header");
 
-  Record rec;
-  rec.source = source;
-  rec.rows = rows;
-  for (std::size_t c = 0; c < ncol; ++c) {
-    std::vector<double>& v = data[c];
-    v.resize(rows);
+  /// One column in SI units into its place in the record.
+  void store(Record& rec, const Column& col, std::vector<double> v) const {
     v.shrink_to_fit();
-    const Column& col = cols[c];
-    if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0)) {
+    if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0))
       for (double& x : v) x = col.scale * x + col.offset;
-    }
     // Beyond kMaxQuantity (SI) sums of squares in the statistics overflow to inf and NaN.
     if (col.role != Role::Aux)
-      for (std::size_t r = 0; r < rows; ++r)
+      for (std::size_t r = 0; r < v.size(); ++r)
         if (!(std::abs(v[r]) <= limits::kMaxQuantity))
-          fail(source, header_line + 1 + r,
+          fail(source_, headerLine_ + 1 + r,
                "column \"" + col.header + "\": value " + limits::fmt(v[r]) +
-                   " (SI) is beyond any sensor (|x| <= " + limits::fmt(limits::kMaxQuantity) +
-                   "; docs/limits.md)");
+                   " (SI) is beyond any sensor (|x| <= " + limits::fmt(limits::kMaxQuantity) + "; docs/limits.md)");
     switch (col.role) {
       case Role::Time: rec.t = std::move(v); break;
       case Role::Gyro: rec.gyro[col.axis] = std::move(v); break;
@@ -374,22 +372,35 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
       case Role::Aux: rec.aux.push_back({col.header, std::move(v)}); break;
     }
   }
-  if (!rec.t.empty()) {
-    detail::checkTime(rec, header_line + 1, options);
-  } else {
-    if (!options.rate_hz)
-      fail(source, 0, "the file has no time column (t): give the sample rate, or name its time column in the column mapping (t=NAME)");
-    rec.rate_hz = *options.rate_hz;
+
+  std::string source_;
+  const RecordOptions& options_;
+  std::vector<Column> cols_;
+  Separator sep_;
+  std::vector<std::vector<double>> data_;
+  std::size_t rows_ = 0, headerLine_ = 0, blankAt_ = 0;
+};
+
+}  // namespace
+
+Record parseRecord(std::string_view text, const std::string& source, const RecordOptions& options) {
+  RowReader reader(source, options);
+  std::size_t number = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t eol = text.find('\n', at);
+    if (eol == std::string_view::npos) eol = text.size();
+    reader.line(text.substr(at, eol - at), ++number);
+    at = eol + 1;
+    if ((number & 0xffff) == 0) progress::checkpoint("reading " + source, at, text.size());
   }
-  detail::checkRate(rec.rate_hz, source, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
-  detail::applyWindow(rec, options);
-  return rec;
+  return reader.finish();
 }
 
 Record loadRecord(const std::string& path, const RecordOptions& options) {
   progress::checkpoint("reading " + path);
-  const std::string text = readWholeFile(path);
-  return parseRecord(text, path, options);
+  RowReader reader(path, options);
+  forEachLineOfFile(path, [&](std::string_view l, std::size_t number) { reader.line(l, number); });
+  return reader.finish();
 }
 
 }  // namespace sinsim::errormodels

@@ -163,6 +163,59 @@ TEST_CASE("record: gzip files are read directly; missing or truncated files are 
   }(), Catch::Contains("/nonexistent/dir/x.csv") && Catch::Contains("cannot open"));
 }
 
+// The file is read in chunks of 4 MiB and parsed line by line as it comes (loadRecord); its
+// lines straddle the chunks. A record of ~10 MB (plain and gzip, LF and CRLF, a comment and a BOM
+// before the header, blank lines at the end) must give exactly what parseRecord gives on the
+// whole text, and an empty row inside the data must still fail at its own line.
+TEST_CASE("record: a file read in chunks equals the text parsed whole", "[record]") {
+  for (const std::string eol : {"\n", "\r\n"}) {
+    std::string text = "\xEF\xBB\xBF# a comment\nt [s],gx [deg/s],ax [g],temp [degC]" + eol;
+    char row[160];
+    for (int k = 0; k < 250000; ++k) {
+      std::snprintf(row, sizeof row, "%.3f,%.9f,%.9f,%.4f", k * 0.01, std::sin(0.37 * k) * 1e-3,
+                    -1.0 + 1e-4 * std::cos(0.11 * k), 25.0 + 1e-5 * k);
+      text += row + eol;
+    }
+    text += eol + eol;
+    REQUIRE(text.size() > 2 * (std::size_t{1} << 22));
+    const fs::path plain = tempPath("chunks.csv"), gz = tempPath("chunks.csv.gz");
+    {
+      std::ofstream(plain, std::ios::binary) << text;
+      gzFile f = gzopen(gz.string().c_str(), "wb1");
+      REQUIRE(f != nullptr);
+      gzwrite(f, text.data(), static_cast<unsigned>(text.size()));
+      gzclose(f);
+    }
+    const Record whole = parseRecord(text, "mem");
+    REQUIRE(whole.size() == 250000);
+    for (const fs::path& path : {plain, gz}) {
+      const Record r = loadRecord(path.string());
+      CHECK(r.size() == whole.size());
+      CHECK(r.t == whole.t);
+      CHECK(r.gyro[0] == whole.gyro[0]);
+      CHECK(r.accel[0] == whole.accel[0]);
+      CHECK(r.temperature == whole.temperature);
+    }
+    // an empty row in the middle (line 70002: the comment and the header come first)
+    std::string holed = text;
+    std::size_t at = 0;
+    for (int k = 0; k < 70001; ++k) at = holed.find('\n', at) + 1;
+    holed.insert(at, eol);
+    std::ofstream(plain, std::ios::binary | std::ios::trunc) << holed;
+    const std::string msg = [&] {
+      try {
+        loadRecord(plain.string());
+      } catch (const sinsim::InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string();
+    }();
+    CHECK_THAT(msg, Catch::Contains("chunks.csv:70002") && Catch::Contains("empty row inside the data"));
+    fs::remove(plain);
+    fs::remove(gz);
+  }
+}
+
 TEST_CASE("record: the ADIS16405 run 1 file", "[record][real]") {
   // Data README: 1,000,000 rows, 100 Hz, deg/s and g; gyro means ~ +0.40 / -0.42 / -0.29 deg/s,
   // z accel ~ -1.016 g. The means are quoted to 2 digits, hence +-0.01 deg/s and +-0.002 g.
