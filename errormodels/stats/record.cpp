@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <sstream>
 
 #include "common/error.hpp"
@@ -340,7 +341,7 @@ class RowReader {
         fail(source_, number, "short row: " + std::to_string(c) + " field(s), the header has " + std::to_string(ncol));
       double v;
       q = parseField(q, eol, v, cols_[c], sep_, source_, number);
-      data_[c].push_back(v);
+      push(c, v, number);
       if (c + 1 < ncol) {
         if (q >= eol)
           fail(source_, number,
@@ -350,6 +351,21 @@ class RowReader {
     }
     if (q < eol) fail(source_, number, "long row: more than the " + std::to_string(ncol) + " fields of the header");
     ++rows_;
+  }
+
+  /// Appends v to column c. A record within the value limit may still not fit in the memory the
+  /// process has (an address-space limit, a small machine): that is said with the file, the line
+  /// and what was read, not as std::bad_alloc.
+  void push(std::size_t c, double v, std::size_t number) {
+    try {
+      data_[c].push_back(v);
+    } catch (const std::bad_alloc&) {
+      data_.clear();
+      data_.shrink_to_fit();
+      fail(source_, number,
+           "the record does not fit in the memory left: " + std::to_string(rows_) + " rows of " +
+               std::to_string(cols_.size()) + " columns were read (8 bytes a value) when it ran out");
+    }
   }
 
   /// One column in SI units into its place in the record.
