@@ -160,26 +160,29 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
   return steps;
 }
 
-/// Whether the piecewise-constant series `steps` goes back and forth: its jumps (those above a
-/// quarter of the largest: a step located in two pieces is one) change sign at least four times.
-/// One bias step has none, a few disturbances up, down, up two; a telegraph's switches alternate
-/// (a switch the test misses leaves the others alternating), and so does a series of excursions
-/// that come back. Such steps are a switching process' realisation, which a candidate with its
-/// second-order statistics (Candidate::switching) explains.
-bool revertingSteps(const std::vector<double>& steps) {
-  std::vector<double> jumps;
+/// The jumps of the piecewise-constant series `steps` (empty: none), with their times at `rate`.
+std::vector<LevelStep> jumpsOf(const std::vector<double>& steps, double rate) {
+  std::vector<LevelStep> out;
+  for (std::size_t k = 1; k < steps.size(); ++k)
+    if (steps[k] != steps[k - 1]) out.push_back({double(k) / rate, steps[k] - steps[k - 1]});
+  return out;
+}
+
+/// Whether level steps go back and forth: those above a quarter of the largest (a step located in
+/// two pieces is one) change sign at least four times. One bias step has none, a few disturbances
+/// up, down, up two; a telegraph's switches alternate (a switch the test misses leaves the others
+/// alternating), and so does a series of excursions that come back. Such steps are a switching
+/// process' realisation, which a candidate with its second-order statistics
+/// (Candidate::switching) explains.
+bool revertingSteps(const std::vector<LevelStep>& jumps) {
   double largest = 0;
-  for (std::size_t k = 1; k < steps.size(); ++k) {
-    if (steps[k] == steps[k - 1]) continue;
-    jumps.push_back(steps[k] - steps[k - 1]);
-    largest = std::max(largest, std::fabs(jumps.back()));
-  }
+  for (const auto& j : jumps) largest = std::max(largest, std::fabs(j.size));
   int changes = 0;
   double last = 0;
-  for (double j : jumps) {
-    if (!(std::fabs(j) > 0.25 * largest)) continue;
-    changes += last != 0 && (j > 0) != (last > 0);
-    last = j;
+  for (const auto& j : jumps) {
+    if (!(std::fabs(j.size) > 0.25 * largest)) continue;
+    changes += last != 0 && (j.size > 0) != (last > 0);
+    last = j.size;
   }
   return changes >= 4;
 }
@@ -209,10 +212,13 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeCoef = lowFrequencyCoefficients(r, w.lowFreq);
   w.jumpFreeL.resize(av.size());
   for (std::size_t k = 0; k < av.size(); ++k) w.jumpFreeL[k] = std::log(std::max(av[k], 1e-300));
-  const bool reverting = revertingSteps(steps);
+  const bool reverting = revertingSteps(jumpsOf(steps, w.rate));
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     const auto& sig = w.cands[i].signal;
-    if (w.cands[i].switching && reverting) w.explainsJumps[i] = 1;
+    if (w.cands[i].switching && reverting) {
+      w.explainsJumps[i] = 1;
+      continue;
+    }
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
     w.explainsJumps[i] = stepSeries(w, r, modelAvar, 1).empty();
@@ -383,14 +389,6 @@ std::optional<FailRange> unexplainedRange(const ChannelWork& w, const std::vecto
   return best;
 }
 
-/// The level steps (markJumps) the record without the accepted signals still shows, as times and
-/// sizes: unexplained, unless they go back and forth beside a reported switching process.
-std::vector<LevelStep> stepList(const ChannelWork& w) {
-  std::vector<LevelStep> out;
-  for (std::size_t k = 1; k < w.steps.size(); ++k)
-    if (w.steps[k] != w.steps[k - 1]) out.push_back({double(k) / w.rate, w.steps[k] - w.steps[k - 1]});
-  return out;
-}
 
 /// The accepted signals sized as one joint fit: a signal fitted beside earlier ones has its
 /// joint size (Candidate::stated), and each earlier one with regressors is fitted again on the
@@ -481,7 +479,8 @@ void selectFindings(ChannelWork& w, double threshold) {
   // Steps that go back and forth are the realisation of an accepted switching process: no longer
   // unexplained, they are its evidence.
   const auto set = allanSet(w);
-  const bool reverting = revertingSteps(w.steps);
+  auto steps = jumpsOf(w.steps, w.rate);  // those the record without the accepted signals shows
+  const bool reverting = revertingSteps(steps);
   bool switched = false;
   for (std::size_t j = 0, a = 0; j < w.accepted.size(); ++j) {
     const auto& cand = w.cands[w.accepted[j]];
@@ -489,14 +488,14 @@ void selectFindings(ChannelWork& w, double threshold) {
     f.evidence = cand.evidence;
     if (cand.switching && reverting) {
       switched = true;
-      f.evidence += "; the level switches back and forth (" + std::to_string(stepList(w).size()) + " steps)";
+      f.evidence += "; the level switches back and forth (" + std::to_string(steps.size()) + " steps)";
     }
     cand.describe(cand.signal.empty() ? w.sol.theta[a++] : 1.0, f);
   }
   d.noiseScale = w.sol.s;
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
-  (switched ? d.switchingSteps : d.unexplainedSteps) = stepList(w);
+  (switched ? d.switchingSteps : d.unexplainedSteps) = std::move(steps);
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
   w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }
