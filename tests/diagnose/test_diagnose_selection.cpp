@@ -68,8 +68,10 @@ TEST_CASE("spikes under an oscillatory AR base are found as outliers", "[diagnos
 // On a lattice coarser than the noise (sd q/5 about a cell's centre: 1 % of the samples leave
 // it) the one-step residuals are mostly 0 and their MAD is 0: the outlier test had no scale and
 // proposed nothing (here a line or nothing was reported first; challenge record r0145: five
-// spikes of 40 LSB beside quantization, reported as quantization alone). The residual scale is at least the rounding's q/sqrt(12): a spike of 40 q is ~100 of
-// it, a one-level flip stays below the test's 4 LSB.
+// spikes of 40 LSB beside quantization, reported as quantization alone). The residual scale is
+// at least the rounding's q/sqrt(12): a spike of 40 q is ~100 of it, a one-level flip stays below
+// the test's 4 LSB. Each spike's estimate is off by about the noise's q/5 and the rounding's,
+// under 1 % of 40 q: their RMS amplitude within 5 %.
 TEST_CASE("spikes on a lattice coarser than the noise are found as outliers", "[diagnose][selection]") {
   const double q = 0.05 * M_PI / 180;  // 0.05 deg/s; the white sd is 0.01 deg/s per sample
   const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.001 deg/s/sqrt(Hz)}\n"
