@@ -86,7 +86,7 @@ TEST_CASE("atomic write: failures leave no file and keep the old one", "[atomic_
   CHECK(d.entries() == 2);  // taken/ and nav.csv: no temporary
 }
 
-TEST_CASE("AtomicFile streams and commits; a moved-from writer does nothing", "[atomic_file]") {
+TEST_CASE("AtomicFile streams and commits, a moved-from writer does nothing", "[atomic_file]") {
   ScratchDir d("stream");
   const fs::path target = d.path / "errors.csv";
   sinsim::AtomicFile a(target.string());

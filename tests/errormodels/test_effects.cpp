@@ -65,7 +65,7 @@ TEST_CASE("a process defined at a rate slower than the IMU is refused at instant
   CHECK(msg.find("slower than the IMU rate 200 Hz") != std::string::npos);
 }
 
-TEST_CASE("triad and axis effects must sit in the right lists; the model file is all-or-nothing") {
+TEST_CASE("triad and axis effects must sit in the right lists, the model file is all-or-nothing") {
   auto msg = messageOf([] {
     ImuErrorModel::fromString(R"(gyro:
   x: [{type: scale_factor, value: 300 ppm}]
@@ -205,7 +205,7 @@ accel:
   CHECK(std::abs(sumXY / R) / (sigma * sigma) < 4.0 / std::sqrt(double(R)));
 }
 
-TEST_CASE("sinusoid, ramp, warmup: increments are the exact integrals; temperature needs T") {
+TEST_CASE("sinusoid, ramp, warmup: increments are the exact integrals, temperature needs T") {
   auto m = ImuErrorModel::fromString(R"(
 gyro:
   x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 12.34 Hz, phase: 30 deg}]

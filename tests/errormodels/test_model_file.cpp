@@ -98,7 +98,7 @@ TEST_CASE("bias_instability: a tau_range that is reversed or too wide is refused
   CHECK(ds.size() == 2);  // 23 decades are accepted
 }
 
-TEST_CASE("same seed gives bit-identical output; the stream of run k is regenerated alone") {
+TEST_CASE("same seed gives bit-identical output, the stream of run k is regenerated alone") {
   const std::string text = R"(
 gyro:
   all: [{type: white, density: 0.2 deg/sqrt(h)}, {type: bias, sigma: 10 deg/h}]

@@ -88,7 +88,7 @@ bool closeSpecs(const ErrorModelSpec& a, const ErrorModelSpec& b);
 
 }  // namespace
 
-TEST_CASE("spec: every effect type reads, writes and reads back equal; comments are kept") {
+TEST_CASE("spec: every effect type reads, writes and reads back equal, comments are kept") {
   const ErrorModelSpec a = errorModelFromString(kEveryEffect, "every.yaml");
   // The text covers the whole registry.
   for (const auto& t : effectTypes()) {

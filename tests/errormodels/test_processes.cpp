@@ -189,7 +189,7 @@ TEST_CASE("ar: the paper's Gx AR(5) at 1 kHz reproduces its theoretical ACF, alo
   }
 }
 
-TEST_CASE("ar: coefficients identified at 100 Hz run in a 100 Hz IMU; output_sigma sets r(0)") {
+TEST_CASE("ar: coefficients identified at 100 Hz run in a 100 Hz IMU, output_sigma sets r(0)") {
   // The paper's Ay polynomial (largest pole 0.833), read as a 100 Hz model, scaled to an output
   // standard deviation of 3 mg.
   const std::vector<double> a{-0.46354, -0.078197, -0.077146, -0.020449, -0.062445};

@@ -97,7 +97,7 @@ TEST_CASE("sinsim mc: a run count beyond memory is a limit error, not bad_alloc"
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("sinsim fit: a constant channel names file and channel; a missing folder is named") {
+TEST_CASE("sinsim fit: a constant channel names file and channel, a missing folder is named") {
   const fs::path d = tempDir("fit");
   std::string csv = "gx\n";
   for (int k = 0; k < 400; ++k) csv += "0.25\n";  // zero variance: nothing to fit

@@ -90,7 +90,7 @@ Identification gmFit(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("ADIS16405: GM model inside the 99 % band of its run; run 1 predicts run 2",
+TEST_CASE("ADIS16405: GM model inside the 99 % band of its run, run 1 predicts run 2",
           "[identify][adis16405][latent]") {
   const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
   if (!std::ifstream(dir + "run1.csv.gz") || !std::ifstream(dir + "run2.csv.gz")) {

@@ -194,7 +194,7 @@ TEST_CASE("kind gm on a white-dominated record: the ACF comparison may fail, the
   CHECK(comparisonsMissing >= 1);
 }
 
-TEST_CASE("paper's AR(5): MDL picks 5 on 1 h at 1 kHz; coefficients and sigma within bounds",
+TEST_CASE("paper's AR(5): MDL picks 5 on 1 h at 1 kHz, coefficients and sigma within bounds",
           "[identify][roundtrip][ar]") {
   // Gx of the paper's table at its own rate (1 kHz), driving sigma 0.020539 deg/s (the preset
   // scenarios/adis16355-ar5.yaml). 1 h = 3.6 M samples.

@@ -103,7 +103,7 @@ void checkPerRunCsv(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("sinsim mc: threads 1 and 2 write identical files; a stopped batch resumes to the same files") {
+TEST_CASE("sinsim mc: threads 1 and 2 write identical files, a stopped batch resumes to the same files") {
   const fs::path tmp = tempDir("threads");
   const fs::path sc = writeScenario(tmp);
   const std::string common = "mc '" + sc.string() + "' --runs 20 --seed 5 --budget --times 10,30" + models();

@@ -8,7 +8,7 @@
 
 using namespace sinsim::sim::mcstats;
 
-TEST_CASE("percentiles: Hyndman-Fan type 7 by hand; mid-rank percentile of a value") {
+TEST_CASE("percentiles: Hyndman-Fan type 7 by hand, mid-rank percentile of a value") {
   const std::vector<double> x{1, 2, 3, 4};
   // h = (n − 1) p/100: p50 → h = 1.5 → 2.5; p68 → h = 2.04 → 3.04 (numpy.percentile's default).
   CHECK(percentileSorted(x, 0) == 1.0);

@@ -140,7 +140,7 @@ TEST_CASE("sinsim run --html: a report with the track, the errors and the attitu
   fs::remove_all(tmp);
 }
 
-TEST_CASE("sinsim diagnose --nav: the verdict on the terminal, in the JSON and the page; refused "
+TEST_CASE("sinsim diagnose --nav: the verdict on the terminal, in the JSON and the page, refused "
           "for an aided scenario with no output written") {
   const fs::path tmp = tempDir("diagnose_nav");
   {

@@ -139,7 +139,7 @@ segments: [{type: static, duration: 90 min}]
   CHECK(worst < 0.01 * peak);
 }
 
-TEST_CASE("outputs: files, headers, rows, summary; reruns are bit-identical") {
+TEST_CASE("outputs: files, headers, rows, summary, reruns are bit-identical") {
   const fs::path dir = tempDir("outputs");
   sim::Scenario sc = sim::parseScenario(kShort, "short.yaml");
   sim::RunOptions opt;

@@ -45,7 +45,7 @@ TEST_CASE("normal quantile equals mpmath from 1e-300 to 0.999", "[special][norma
   CHECK_THROWS_AS(normalTwoSidedCritical(1.5), sinsim::InputError);
 }
 
-TEST_CASE("two-sided normal quantile equals mpmath; cdf inverts it", "[special][normal]") {
+TEST_CASE("two-sided normal quantile equals mpmath, cdf inverts it", "[special][normal]") {
   const std::pair<double, double> table[] = {
       {0.5, 0.6744897501960817432},  {0.682689492137085897, 0.99999999999999990574},
       {0.683, 1.0006418287624494613}, {0.9, 1.6448536269514728225},

@@ -63,7 +63,7 @@ TEST_CASE("record: columns, header units, options and conversion to SI", "[recor
   CHECK(r.irregular_count == 0);
 }
 
-TEST_CASE("record: no time column needs a rate; defaults are SI", "[record]") {
+TEST_CASE("record: no time column needs a rate, defaults are SI", "[record]") {
   const std::string text = "gx,gy,gz\n0.1,0.2,0.3\n0.1,0.2,0.3\n";
   CHECK_THAT(errorOf(text), Catch::Contains("no time column") && Catch::Contains("rec.csv"));
   RecordOptions opt;
@@ -129,7 +129,7 @@ TEST_CASE("record: irregular and gapped time stamps are reported, not resampled"
   CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.02,0\n", wrong_rate), Catch::Contains("disagrees"));
 }
 
-TEST_CASE("record: gzip files are read directly; missing or truncated files are errors", "[record]") {
+TEST_CASE("record: gzip files are read directly, missing or truncated files are errors", "[record]") {
   const std::string text = "gx,gy,gz,ax,ay,az\n0.05,-0.1,0,0.003,0,-1.016\n0.1,0,0,0,0,-1\n";
   const fs::path gz = tempPath("rec.csv.gz");
   {

@@ -117,7 +117,7 @@ TEST_CASE("record layout: mapping text errors name the entry", "[record]") {
   CHECK_THROWS_WITH(parseColumnMapping("gx=A[deg/s"), Catch::Contains("brackets"));
 }
 
-TEST_CASE("record window: --skip and --duration keep [skip, skip + duration)", "[record]") {
+TEST_CASE("record window: --skip and --duration keep the samples from skip to skip + duration", "[record]") {
   RecordOptions opt;
   opt.gyro_unit = "deg/s";
   opt.accel_unit = "g";
