@@ -169,7 +169,8 @@ void bindIdentify(py::module_& mod) {
           "sinsim fit: identifies an error model from a static record; returns a Model");
   mod.def("diagnose", &diagnose, py::arg("record"), py::arg("model"),
           py::arg("channels") = std::vector<std::string>{}, py::arg("realisations") = 32,
-          py::arg("seed") = 20240505, py::arg("threads") = 0, py::arg("threshold") = 8.0,
+          py::arg("seed") = em::diagnose::DiagnoseOptions{}.seed, py::arg("threads") = 0,
+          py::arg("threshold") = em::diagnose::DiagnoseOptions{}.threshold,
           py::arg("gyro_unit") = py::none(), py::arg("accel_unit") = py::none(),
           py::arg("rate") = py::none(),
           "sinsim diagnose: compares a model with a record; findings per channel");
