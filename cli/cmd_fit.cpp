@@ -32,6 +32,7 @@ struct FitArgs {
   long long max_order = 20;
   std::string nav_step = "10 ms";
   bool quiet = false;
+  unsigned threads = 0;
 };
 
 std::vector<std::string> splitAxes(const std::vector<std::string>& in) {
@@ -117,6 +118,9 @@ int runFit(const FitArgs& a) {
   opt.navigationStep = parseOptionQuantity(a.nav_step, Dimension::time(), "--nav-step");
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
+  if (opt.arOnDenoised && opt.kind != errormodels::IdentifyKind::Ar)
+    throw InputError("--ar-on-denoised (the paper's literal pipeline) needs --kind ar");
+  opt.threads = a.threads;
 
   const errormodels::RecordOptions ro = recordOptions(a.record);
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
@@ -144,6 +148,7 @@ void addFitCommand(CLI::App& app, Action& action) {
       ->required();
   c->add_option("-o,--output", a->output, "model file to write (YAML)")->required();
   c->add_option("--axes", a->axes, "channels to fit, e.g. gx,gy,gz (default: all in the record)");
+  c->add_option("--threads", a->threads, "worker threads over the channels (default: all cores)");
   c->add_option("--kind", a->kind, "ar | gm | allan | latent | ar+slow | auto (default auto: see README; gm, latent and ar+slow: docs/fitting.md)");
   c->add_option("--order", a->order, "AR order P or auto (default auto: by --criterion)");
   c->add_option("--criterion", a->criterion, "order criterion: mdl (default) | bic | aic | fpe | paper");

@@ -2,6 +2,7 @@
 
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "common/number_text.hpp"
+#include "common/parallel.hpp"
 #include "common/progress.hpp"
 #include "errormodels/channels.hpp"
 #include "errormodels/fit/ar_fit.hpp"
@@ -233,6 +235,9 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
     throw InputError("max order: expected 1 to " + std::to_string(maxAr) + " (docs/limits.md)");
   if (opt.arOnDenoised && opt.denoise != DenoiseChoice::Db5)
     throw InputError("fitting the AR on denoised data needs denoising (db5)");
+  if (opt.arOnDenoised && opt.kind != IdentifyKind::Ar)
+    throw InputError("writing the AR fitted on denoised data (the paper's literal pipeline) is a --kind ar "
+                     "option, got --kind " + toString(opt.kind));
   if (!(opt.navigationStep > 0.0 && std::isfinite(opt.navigationStep)))
     throw InputError("navigation step: expected a positive time");
   if (!(opt.confidence > 0.0 && opt.confidence < 1.0))
@@ -278,89 +283,111 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   out.skipped = skip;
   out.options = opt;
 
-  for (const int ci : chans) withContext(record.source + ": channel " + kRecordChannels[ci].name, [&] {
-    const Channel& c = kRecordChannels[ci];
-    progress::checkpoint(std::string("channel ") + c.name, out.axes.size(), chans.size());
-    const fit::SensorSignal sensor = signalOf(c.sensor);
-    const std::vector<double>& src = channelData(record, ci);
-    std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip), src.end());
-    AxisIdentification ax;
-    ax.channel = c.name;
-    ax.sensor = sensor;
-    ax.axis = std::string(1, "xyz"[c.axis]);
-    ax.samples = n;
-    ax.rate_hz = record.rate_hz;
-    double mean = 0.0;
-    for (double v : x) mean += v;
-    mean /= static_cast<double>(n);
-    double var = 0.0;
-    for (double& v : x) {
-      v -= mean;
-      var += v * v;
-    }
-    ax.mean = mean;
-    ax.stddev = std::sqrt(var / static_cast<double>(n));
-    if (!(ax.stddev > 0.0))
-      throw InputError(record.source + ": channel " + c.name + " is constant: nothing to fit");
+  // Channels are independent: on worker threads, each result in its channel's
+  // slot, so the identification is the same for any thread count.
+  std::vector<AxisIdentification> axes(chans.size());
+  std::vector<std::vector<std::string>> warnings(chans.size());
+  std::atomic<std::size_t> done{0};
+  parallelFor<int>(chans.size(), opt.threads, [&](std::size_t slot, int &) {
+    const int ci = chans[slot];
+    withContext(record.source + ": channel " + kRecordChannels[ci].name, [&] {
+      const Channel &c = kRecordChannels[ci];
+      progress::checkpoint(std::string("channel ") + c.name, done,
+                           chans.size());
+      const fit::SensorSignal sensor = signalOf(c.sensor);
+      const std::vector<double> &src = channelData(record, ci);
+      std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip),
+                            src.end());
+      AxisIdentification ax;
+      ax.channel = c.name;
+      ax.sensor = sensor;
+      ax.axis = std::string(1, "xyz"[c.axis]);
+      ax.samples = n;
+      ax.rate_hz = record.rate_hz;
+      double mean = 0.0;
+      for (double v : x)
+        mean += v;
+      mean /= static_cast<double>(n);
+      double var = 0.0;
+      for (double &v : x) {
+        v -= mean;
+        var += v * v;
+      }
+      ax.mean = mean;
+      ax.stddev = std::sqrt(var / static_cast<double>(n));
+      if (!(ax.stddev > 0.0))
+        throw InputError(record.source + ": channel " + c.name +
+                         " is constant: nothing to fit");
 
-    AllanOptions ao;
-    ao.grid = TauGrid::Octave;
-    ao.confidence = opt.confidence;
-    ax.allan = allanDeviation(x, record.rate_hz, AllanVariant::Overlapping, ao);
-    const CurvePoints pts = detail::usablePoints(ax.allan);
+      AllanOptions ao;
+      ao.grid = TauGrid::Octave;
+      ao.confidence = opt.confidence;
+      ax.allan =
+          allanDeviation(x, record.rate_hz, AllanVariant::Overlapping, ao);
+      const CurvePoints pts = detail::usablePoints(ax.allan);
 
-    std::vector<double> den;
-    if (opt.denoise == DenoiseChoice::Db5) {
-      DenoiseResult d = waveletDenoise(x, opt.denoiseOptions);
-      den = std::move(d.signal);
-      d.signal.clear();
-      ax.denoise = std::move(d);
-    }
-    const std::vector<double>& forAcf = den.empty() ? x : den;
-    const double duration = n * dt;
-    const double maxLagS = opt.maxLag > 0.0 ? opt.maxLag : std::min(duration / 10.0, 100.0);
-    const std::size_t maxLag = std::clamp<std::size_t>(
-        static_cast<std::size_t>(std::llround(std::min(maxLagS, duration) * record.rate_hz)), 4,
-        n - 1);
-    const Autocorrelation acf =
-        autocorrelation(forAcf, record.rate_hz, maxLag, AcfScaling::Biased);
-    try {
-      ax.correlationTime = fit::correlationTime(acf.r, dt);
-    } catch (const InputError&) {
-      // the ACF never falls to 1/e within maxLag (drift-dominated record): left unset
-    }
+      std::vector<double> den;
+      if (opt.denoise == DenoiseChoice::Db5) {
+        DenoiseResult d = waveletDenoise(x, opt.denoiseOptions);
+        den = std::move(d.signal);
+        d.signal.clear();
+        ax.denoise = std::move(d);
+      }
+      const std::vector<double> &forAcf = den.empty() ? x : den;
+      const double duration = n * dt;
+      const double maxLagS =
+          opt.maxLag > 0.0 ? opt.maxLag : std::min(duration / 10.0, 100.0);
+      const std::size_t maxLag = std::clamp<std::size_t>(
+          static_cast<std::size_t>(
+              std::llround(std::min(maxLagS, duration) * record.rate_hz)),
+          4, n - 1);
+      const Autocorrelation acf =
+          autocorrelation(forAcf, record.rate_hz, maxLag, AcfScaling::Biased);
+      try {
+        ax.correlationTime = fit::correlationTime(acf.r, dt);
+      } catch (const InputError &) {
+        // the ACF never falls to 1/e within maxLag (drift-dominated record):
+        // left unset
+      }
 
-    fit::OrderSelectionOptions os;
-    os.maxOrder = opt.maxOrder;
-    os.criterion = opt.criterion;
-    os.forcedOrder = opt.order;
-    os.sampleInterval = dt;
-    os.navigationStep = opt.navigationStep;
-    if (ax.correlationTime) os.correlationTime = *ax.correlationTime;
+      fit::OrderSelectionOptions os;
+      os.maxOrder = opt.maxOrder;
+      os.criterion = opt.criterion;
+      os.forcedOrder = opt.order;
+      os.sampleInterval = dt;
+      os.navigationStep = opt.navigationStep;
+      if (ax.correlationTime)
+        os.correlationTime = *ax.correlationTime;
 
-    if (opt.kind == IdentifyKind::Ar || opt.kind == IdentifyKind::Auto) {
-      ax.ar = fit::selectArOrder(x, os);
-      if (!den.empty()) ax.arDenoised = fit::selectArOrder(den, os);
-    }
+      if (opt.kind == IdentifyKind::Ar || opt.kind == IdentifyKind::Auto) {
+        ax.ar = fit::selectArOrder(x, os);
+        if (!den.empty())
+          ax.arDenoised = fit::selectArOrder(den, os);
+      }
 
-    ax.written.sensor = sensor;
-    ax.written.axis = ax.axis;
-    ax.written.notes.push_back("mean removed (not written): " + friendly(mean, sensor) + " = " +
-                               significant(mean, 8) + " (SI); sd " + friendly(ax.stddev, sensor));
-    if (ax.correlationTime)
-      ax.written.notes.push_back(std::string("1/e correlation time of the ") +
-                                 (den.empty() ? "raw" : "denoised") + " ACF: " +
-                                 significant(*ax.correlationTime * 1e3, 4) + " ms");
-    if (ax.denoise)
-      ax.written.notes.push_back("db5 denoise: level " + std::to_string(ax.denoise->level) +
-                                 ", noise sigma " + friendly(ax.denoise->sigma, sensor) +
-                                 ", finest threshold " +
-                                 friendly(ax.denoise->thresholds.empty() ? 0.0 : ax.denoise->thresholds[0],
-                                          sensor));
+      ax.written.sensor = sensor;
+      ax.written.axis = ax.axis;
+      ax.written.notes.push_back(
+          "mean removed (not written): " + friendly(mean, sensor) + " = " +
+          significant(mean, 8) + " (SI); sd " + friendly(ax.stddev, sensor));
+      if (ax.correlationTime)
+        ax.written.notes.push_back(
+            std::string("1/e correlation time of the ") +
+            (den.empty() ? "raw" : "denoised") +
+            " ACF: " + significant(*ax.correlationTime * 1e3, 4) + " ms");
+      if (ax.denoise)
+        ax.written.notes.push_back(
+            "db5 denoise: level " + std::to_string(ax.denoise->level) +
+            ", noise sigma " + friendly(ax.denoise->sigma, sensor) +
+            ", finest threshold " +
+            friendly(ax.denoise->thresholds.empty() ? 0.0
+                                                    : ax.denoise->thresholds[0],
+                     sensor));
 
-    switch (opt.kind) {
+      switch (opt.kind) {
       case IdentifyKind::Ar: {
-        const fit::OrderSelection& use = opt.arOnDenoised ? *ax.arDenoised : *ax.ar;
+        const fit::OrderSelection &use =
+            opt.arOnDenoised ? *ax.arDenoised : *ax.ar;
         ax.kind = IdentifyKind::Ar;
         ax.written.ar = use.fit;
         ax.written.arOrders = use;
@@ -372,29 +399,35 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         fit::GaussMarkovFitOptions go;
         go.recordLength = n;
         if (opt.kind == IdentifyKind::Gm) {
-          // Only a comparison: a white-dominated record's ACF past lag 0 is estimation noise and
-          // may not decay at all; that must not fail the composite fit, which is what is written.
+          // Only a comparison: a white-dominated record's ACF past lag 0 is
+          // estimation noise and may not decay at all; that must not fail the
+          // composite fit, which is what is written.
           try {
             ax.gaussMarkov = fit::fitGaussMarkov(acf.r, dt, go);
-            ax.written.notes.push_back("for comparison, GM from the ACF (not written): sigma " +
-                                       friendly(ax.gaussMarkov->sigma, sensor) + ", tau " +
-                                       significant(ax.gaussMarkov->tau, 4) + " s");
-          } catch (const InputError& e) {
-            ax.written.notes.push_back(std::string("for comparison, no GM from the ACF: ") +
-                                       e.what());
+            ax.written.notes.push_back(
+                "for comparison, GM from the ACF (not written): sigma " +
+                friendly(ax.gaussMarkov->sigma, sensor) + ", tau " +
+                significant(ax.gaussMarkov->tau, 4) + " s");
+          } catch (const InputError &e) {
+            ax.written.notes.push_back(
+                std::string("for comparison, no GM from the ACF: ") + e.what());
           }
         }
         fit::LatentFitOptions lo;
         lo.sampleInterval = dt;
         lo.scanStart = true;
-        if (opt.kind == IdentifyKind::Gm) lo.minGmTauSamples = 2.0;
         if (opt.kind == IdentifyKind::Gm)
-          lo.candidates = {{false, false, 1, false, false, false}, {false, true, 1, false, false, false},
-                           {false, false, 1, false, true, false}, {false, true, 1, false, true, false}};
+          lo.minGmTauSamples = 2.0;
+        if (opt.kind == IdentifyKind::Gm)
+          lo.candidates = {{false, false, 1, false, false, false},
+                           {false, true, 1, false, false, false},
+                           {false, false, 1, false, true, false},
+                           {false, true, 1, false, true, false}};
         ax.latent = fit::fitLatentModel(x, lo);
         ax.kind = opt.kind;
         ax.written.latent = ax.latent;
-        for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
+        for (const auto &w : ax.latent->warnings)
+          warnings[slot].push_back(std::string(c.name) + ": " + w);
         break;
       }
       case IdentifyKind::ArSlow: {
@@ -407,37 +440,55 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.kind = IdentifyKind::ArSlow;
         ax.written.latent = ax.latent;
         ax.written.notes.push_back(describeArSlow(*ax.arSlow, sensor));
-        for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
+        for (const auto &w : ax.latent->warnings)
+          warnings[slot].push_back(std::string(c.name) + ": " + w);
         break;
       }
       case IdentifyKind::Allan: {
-        const RangedFit r = detail::fitTermsFrom(pts, dt, n, {true, true, true, true, true}, 0.0, 7);
+        const RangedFit r = detail::fitTermsFrom(
+            pts, dt, n, {true, true, true, true, true}, 0.0, 7);
         ax.allanFit = r.fit;
-        ax.written.notes.push_back("Allan-term fit range: " + detail::describeRange(r));
+        ax.written.notes.push_back("Allan-term fit range: " +
+                                   detail::describeRange(r));
         ax.kind = IdentifyKind::Allan;
         ax.written.allan = ax.allanFit;
         break;
       }
       case IdentifyKind::Auto:
-        detail::chooseAuto(ax, x, pts, dt, os, opt, ax.arDenoised);
-        for (const auto& d : ax.decision) ax.written.notes.push_back("auto: " + d);
+        detail::chooseAuto(ax, x, pts, dt, os, opt);
+        for (const auto &d : ax.decision)
+          ax.written.notes.push_back("auto: " + d);
+        if (ax.arSlow)
+          ax.written.notes.push_back(describeArSlow(*ax.arSlow, sensor));
         if (ax.latent)
-          for (const auto& w : ax.latent->warnings) out.warnings.push_back(std::string(c.name) + ": " + w);
+          for (const auto &w : ax.latent->warnings)
+            warnings[slot].push_back(std::string(c.name) + ": " + w);
         break;
-    }
+      }
 
-    if (ax.arDenoised && ax.ar && ax.written.ar) {
-      const auto& other = opt.arOnDenoised ? *ax.ar : *ax.arDenoised;
-      std::string s = std::string("for comparison, AR(") + std::to_string(other.fit.order) +
-                      ") on the " + (opt.arOnDenoised ? "raw" : "denoised") + " record: a = [";
-      for (std::size_t i = 1; i < other.fit.a.size(); ++i)
-        s += (i > 1 ? ", " : "") + significant(other.fit.a[i], 6);
-      s += "], driving sigma " + friendly(std::sqrt(other.fit.drivingVariance), sensor) +
-           " (written: " + friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
-      ax.written.notes.push_back(s);
-    }
-    out.axes.push_back(std::move(ax));
+      if (ax.arDenoised && ax.ar && ax.written.ar) {
+        const auto &other = opt.arOnDenoised ? *ax.ar : *ax.arDenoised;
+        std::string s = std::string("for comparison, AR(") +
+                        std::to_string(other.fit.order) + ") on the " +
+                        (opt.arOnDenoised ? "raw" : "denoised") +
+                        " record: a = [";
+        for (std::size_t i = 1; i < other.fit.a.size(); ++i)
+          s += (i > 1 ? ", " : "") + significant(other.fit.a[i], 6);
+        s += "], driving sigma " +
+             friendly(std::sqrt(other.fit.drivingVariance), sensor) +
+             " (written: " +
+             friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
+        ax.written.notes.push_back(s);
+      }
+      axes[slot] = std::move(ax);
+      ++done;
+    });
   });
+  for (std::size_t k = 0; k < chans.size(); ++k) {
+    out.axes.push_back(std::move(axes[k]));
+    out.warnings.insert(out.warnings.end(), warnings[k].begin(),
+                        warnings[k].end());
+  }
   warnAccelUnit(out);
   return out;
 }

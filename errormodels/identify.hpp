@@ -18,10 +18,9 @@
 //   Allan  IEEE 952 five-term fit (Q, N, B, K, R) of the Allan variance, correlated-point GLS;
 //          only detected terms are written.
 //   Auto   what the data ask for (the rule is stated in identify_auto.cpp, above chooseAuto, and
-//          in docs/identify.md): an AR model when the record has short correlation that white
-//          noise + Allan terms cannot carry, else the Allan terms alone; an AR + random walk
-//          composite when the long-tau Allan slope needs a random walk; bias instability / ramp
-//          from the long-tau Allan curve on top of an AR.
+//          in docs/identify.md): the Latent fit, unless the record has short correlation its
+//          terms do not carry (an AR predicts the next sample >= 2 % better, or the terms fail
+//          the Allan curve where the past predicts); then ArSlow, the AR with the slow terms.
 //
 // Bias. A static record's mean is the turn-on bias plus the projection of Earth rate (gyro) or
 // gravity (accelerometer); one record holds ONE draw of the turn-on bias, not its spread. The
@@ -86,9 +85,12 @@ struct IdentifyOptions {
   double confidence = 0.683;
   /// Largest ACF lag [s] for T_c and the GM fit; 0: min(duration / 10, 100 s).
   double maxLag = 0.0;
-  /// Auto: an AR is written when the AR's prediction gain r0 / E_p >= this (and MDL-type order
-  /// >= 1): the predictable share of the short-term variance is >= 1 - 1/gain.
+  /// Auto: the AR (with slow terms) is written when the terms' one-step prediction variance is
+  /// >= this x the AR's E_p, or the terms fail the Allan curve and r0 / E_p >= this
+  /// (identify_auto.cpp).
   double autoMinPredictionGain = 1.02;
+  /// Worker threads over the channels (0: every core); the result does not depend on it.
+  unsigned threads = 0;
 };
 
 /// Results for one channel. Units: SI of the channel (rad/s for gyro, m/s^2 for accelerometer).

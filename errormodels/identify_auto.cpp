@@ -2,12 +2,14 @@
 #include "errormodels/identify_auto.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "common/error.hpp"
 #include "common/number_text.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/fit/latent_fit.hpp"
+#include "errormodels/fit/latent_model.hpp"
 
 namespace sinsim::errormodels::detail {
 namespace {
@@ -19,26 +21,66 @@ double predictionGain(const fit::ArFit& f) {
              : f.drivingVariancePath.front() / f.drivingVariance;
 }
 
+/// Step 3 of the rule: does the record hold correlation the latent terms do not carry?
+struct ArVerdict {
+  bool ar = false;
+  std::string why;  ///< the decision line
+};
+
+/// Below this p-value of the terms' Allan chi-square the terms fail the record (the diagnosis's
+/// "fits" level, 0.999).
+constexpr double kTermsRejected = 0.001;
+
+ArVerdict shortCorrelation(const fit::OrderSelection& screen, const fit::LatentFit& latent, double dt,
+                           double minGain) {
+  const double gain = predictionGain(screen.fit);
+  const double eTerms = fit::latentInnovationVariance(latent.model, dt);
+  const double excess = screen.fit.drivingVariance > 0.0 ? eTerms / screen.fit.drivingVariance : 1.0;
+  const bool rejected = latent.pValue < kTermsRejected;
+  ArVerdict v;
+  v.why = "AR screen: order " + std::to_string(screen.selectedOrder) + " by " + fit::toString(screen.selectedBy) +
+          ", prediction gain " + significant(gain, 5) + "; latent terms " + latent.terms.name() + " (chi2 " +
+          significant(latent.chi2, 3) + " / " + std::to_string(latent.dof) + " dof, p " +
+          significant(latent.pValue, 2) + "), their one-step prediction variance / the AR's " +
+          significant(excess, 5) + " -> ";
+  if (screen.selectedOrder >= 1 && excess >= minGain) {
+    v.ar = true;
+    v.why += "the AR predicts the next sample >= " + significant(100.0 * (minGain - 1.0), 2) +
+             " % better than the terms: AR";
+  } else if (screen.selectedOrder >= 1 && rejected && gain >= minGain) {
+    v.ar = true;
+    v.why += "the terms fail the Allan curve (p < " + significant(kTermsRejected, 2) +
+             ") and the past predicts >= " + significant(100.0 * (minGain - 1.0), 2) +
+             " % of the variance: AR";
+  } else {
+    v.why += "no correlation the terms do not carry: latent terms";
+  }
+  return v;
+}
+
 }  // namespace
 
 /// Auto (the rule, stated once here and in docs/identify.md, "The auto rule"):
-///  1. Fit all five Allan terms to the raw curve (GLS) — the white-noise-family description.
+///  1. Fit all five Allan terms to the raw curve (GLS) -- the white-noise-family description.
 ///  2. Screen for short correlation: Burg AR by the order criterion on the record; if step 1
 ///     detected a random walk, on the record minus its smoothed random-walk level (the composite
-///     AR + RW fit; an AR alone would put a pole near 1 and distort its short-lag coefficients).
-///  3. Short correlation present <=> selected order >= 1 AND prediction gain r0 / E_p >=
-///     autoMinPredictionGain (default 1.02: the past predicts >= 2 % of the variance). White,
-///     quantization-dominated and white + RW records give MDL order 0 or a gain ~1.
-///  4. Present: write the AR (from step 2); N and Q are the AR's business (its long-tau level is
-///     white), so the long-tau terms B, K, R are refitted on tau >= 60 T_c (T_c of the AR model;
-///     there the AR's Allan variance is within ~3 % of its white asymptote, IEEE 952 C GM form)
-///     with N free and Q off, and only detected B, K, R are written.
-///     Absent: write the composite latent fit (fit/latent_fit.hpp: white, quantization, GM, random
-///     walk, flicker chosen by the penalised GLS criterion) over the whole tau range, so that no
-///     term that dominates a tau range of the record is dropped.
+///     AR + RW fit; an AR alone would put a pole near 1).
+///  3. The composite latent fit (fit/latent_fit.hpp: white, quantization, GM, random walk,
+///     flicker, drift) over the whole tau range. The record holds correlation these terms do not
+///     carry <=> the AR's order >= 1 and either
+///     (a) the terms' one-step prediction variance (latentInnovationVariance) is >=
+///         autoMinPredictionGain (1.02) x the AR's E_p: the AR predicts the next sample >= 2 %
+///         better than the terms can (a slow GM or walk gives the AR no such edge: the terms
+///         predict what it does); or
+///     (b) the terms fail the Allan curve (chi-square p < 0.001) and the past predicts >= 2 % of
+///         the variance (r0 / E_p >= 1.02): a short-tau shape no term carries (an internal
+///         filter's hump), where a misfitting term model's prediction variance means nothing.
+///  4. No such correlation: write the latent fit of step 3, so that no term that dominates a tau
+///     range of the record is dropped. Such correlation: write the AR with the slow terms (GM,
+///     random walk, flicker) fitted jointly beside it (fit/ar_slow_fit.hpp, as --kind ar+slow),
+///     so that the AR does not hide the drift-relevant long tau.
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
-                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt,
-                const std::optional<fit::OrderSelection>& arDen) {
+                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt) {
   const std::size_t n = x.size();
   const RangedFit whole = fitTermsFrom(pts, dt, n, {true, true, true, true, true}, 0.0, 7);
   out.allanFit = whole.fit;
@@ -75,20 +117,17 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   } else {
     screen = *out.ar;
   }
-  const fit::OrderSelection& use = opt.arOnDenoised && arDen ? *arDen : screen;
-  const double gain = predictionGain(screen.fit);
-  const bool shortCorr = screen.selectedOrder >= 1 && gain >= opt.autoMinPredictionGain;
-  out.decision.push_back("AR screen: order " + std::to_string(screen.selectedOrder) + " by " +
-                         fit::toString(screen.selectedBy) + ", prediction gain " + significant(gain, 5) +
-                         (shortCorr ? " >= " : " < ") + significant(opt.autoMinPredictionGain, 3) + " -> " +
-                         (shortCorr ? "short correlation: AR" : "no short correlation: Allan terms"));
+  // The composite latent fit over the whole tau range (no start scan): every term that
+  // dominates some tau range of the record stays in the model (issue 11: the Allan-term
+  // description alone could keep a flicker floor and drop the white noise above it).
+  fit::LatentFitOptions lo;
+  lo.sampleInterval = dt;
+  fit::LatentFit latent = fit::fitLatentModel(x, lo);
+  const ArVerdict verdict = shortCorrelation(screen, latent, dt, opt.autoMinPredictionGain);
+  const bool shortCorr = verdict.ar;
+  out.decision.push_back(verdict.why);
   if (!shortCorr) {
-    // The composite latent fit over the whole tau range (no start scan): every term that
-    // dominates some tau range of the record stays in the model (issue 11: the Allan-term
-    // description alone could keep a flicker floor and drop the white noise above it).
-    fit::LatentFitOptions lo;
-    lo.sampleInterval = dt;
-    out.latent = fit::fitLatentModel(x, lo);
+    out.latent = std::move(latent);
     out.kind = IdentifyKind::Latent;
     out.written.latent = out.latent;
     out.decision.push_back("no short correlation: composite latent fit over the whole tau range: " +
@@ -97,29 +136,30 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
                            significant(out.latent->pValue, 2) + ")");
     return;
   }
-  out.kind = IdentifyKind::Ar;
-  out.written.ar = use.fit;
-  out.written.arOrders = use;
-  out.written.arRate = 1.0 / dt;
-  double tc = dt;
+  // Short correlation: the paper's AR with the slow terms beside it, fitted jointly
+  // (fit/ar_slow_fit.hpp, as --kind ar+slow), so the AR does not hide the drift-relevant tau.
+  fit::ArSlowFitOptions so;
+  so.sampleInterval = dt;
+  so.order = os;
+  so.scanStart = true;
   try {
-    tc = fit::arCorrelationTime(use.fit.a, dt);
-  } catch (const InputError&) {
-  }
-  const double tauMin = 60.0 * tc;
-  const std::size_t avail = pointsAtOrAbove(pts, tauMin);
-  if (avail < 6) {
-    out.decision.push_back("only " + std::to_string(avail) + " Allan points at tau >= " +
-                           significant(tauMin, 3) + " s (60 T_c): no long-tau terms beside the AR");
+    out.arSlow = fit::fitArPlusSlow(x, so);
+  } catch (const InputError& e) {
+    out.kind = IdentifyKind::Ar;
+    out.written.ar = screen.fit;
+    out.written.arOrders = screen;
+    out.written.arRate = 1.0 / dt;
+    out.decision.push_back(std::string("short correlation, no slow terms beside the AR (") + e.what() +
+                           "): the AR alone");
     return;
   }
-  const RangedFit longTau = fitTermsFrom(pts, dt, n, {false, true, true, true, true}, tauMin, 6);
-  out.allanLongTau = longTau.fit;
-  out.written.allan = out.allanLongTau;
-  out.written.allanWrite = {false, false, true, true, true};
-  out.decision.push_back("long-tau terms (start >= 60 T_c = " + significant(tauMin, 3) + " s) on " +
-                         describeRange(longTau) + ": " + describeAllan(*out.allanLongTau) +
-                         "; B, K, R written when detected");
+  out.latent = out.arSlow->joint;
+  out.kind = IdentifyKind::ArSlow;
+  out.written.latent = out.latent;
+  out.decision.push_back("short correlation: AR + slow terms fitted jointly (as --kind ar+slow): " +
+                         out.latent->terms.name() + " (chi2 " + significant(out.latent->chi2, 3) + " / " +
+                         std::to_string(out.latent->dof) + " dof, p " + significant(out.latent->pValue, 2) +
+                         ")");
 }
 
 }  // namespace sinsim::errormodels::detail

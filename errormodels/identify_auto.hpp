@@ -13,9 +13,7 @@ namespace sinsim::errormodels::detail {
 
 /// Fills out.kind, out.written, out.allanFit / allanLongTau / composite and out.decision for the
 /// demeaned record x (sample interval dt [s]) from its usable Allan points, by the auto rule.
-/// arDen: the AR fitted on the denoised record, written instead when opt.arOnDenoised.
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
-                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt,
-                const std::optional<fit::OrderSelection>& arDen);
+                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt);
 
 }  // namespace sinsim::errormodels::detail

@@ -9,8 +9,8 @@
 #include <numeric>
 
 #include "common/error.hpp"
+#include "common/parallel.hpp"
 #include "common/progress.hpp"
-#include "errormodels/diagnose/parallel.hpp"
 #include "errormodels/imu_model.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/mc_stats.hpp"
@@ -43,7 +43,7 @@ void runJobs(std::vector<Job>& jobs, const NavigateOptions& nav, std::uint64_t s
     for (std::size_t k = 0; k < jobs[j].runs; ++k) items.emplace_back(j, k);
   }
   std::atomic<std::size_t> done{0};
-  dg::detail::parallelFor<int>(items.size(), threads, [&](std::size_t i, int&) {
+  parallelFor<int>(items.size(), threads, [&](std::size_t i, int&) {
     Job& job = jobs[items[i].first];
     const std::size_t k = items[i].second;
     const errormodels::StreamKey key{seed, k};
@@ -215,7 +215,7 @@ BandVerdict bandVerdict(const std::vector<std::vector<std::array<double, 2>>>& r
 BandVerdict restBands(const ImuErrorModel& m, const Setting& s, const NavVerdictOptions& o) {
   const DriftKernel kernel = restKernel(s.rest, s.nav.biasWindow);
   std::vector<std::vector<std::array<double, 2>>> runs(o.runs);
-  dg::detail::parallelFor<int>(o.runs, o.threads, [&](std::size_t r, int&) {
+  parallelFor<int>(o.runs, o.threads, [&](std::size_t r, int&) {
     runs[r] = driftByBand(modelSignal(m, s.rest, {o.seed, r}), kernel);
     progress::checkpoint("navigation verdict: drift bands", r + 1, o.runs);
   });

@@ -14,7 +14,7 @@
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
-#include "errormodels/diagnose/parallel.hpp"
+#include "common/parallel.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"

@@ -1,7 +1,7 @@
 // Realisations of a model and their statistics on worker threads (montecarlo.hpp), and
 // simulateRecord (diagnose.hpp).
 #include "errormodels/diagnose/montecarlo.hpp"
-#include "errormodels/diagnose/parallel.hpp"
+#include "common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>

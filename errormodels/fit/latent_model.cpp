@@ -2,8 +2,10 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 
 #include "common/error.hpp"
+#include "common/constants.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 
@@ -56,6 +58,24 @@ double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m) {
   return s2 * bracket / (md * md * omp * omp);
 }
 
+namespace {
+
+/// The AR term's Allan variance per unit driving variance at the factors m (linear in E). A fit
+/// evaluates it for one fixed polynomial many times, each an autocovariance recursion to 2 max(m)
+/// lags, so the last one is kept per thread.
+const std::vector<double>& arUnitAllanVariance(const std::vector<double>& a, const std::vector<std::size_t>& m) {
+  thread_local std::vector<double> lastA, unit;
+  thread_local std::vector<std::size_t> lastM;
+  if (unit.empty() || a != lastA || m != lastM) {
+    unit = arAllanVariance(a, 1.0, m);
+    lastA = a;
+    lastM = m;
+  }
+  return unit;
+}
+
+}  // namespace
+
 std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
                                         const std::vector<std::size_t>& m) {
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent model: dt must be > 0");
@@ -70,8 +90,8 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
     for (const GmTerm& g : model.gm) avar[i] += gmDiscreteAllanVariance(g.sigma * g.sigma, g.tau, dt, m[i]);
   }
   if (model.arVariance > 0.0) {
-    const std::vector<double> ar = arAllanVariance(model.arPolynomial, model.arVariance, m);
-    for (std::size_t i = 0; i < m.size(); ++i) avar[i] += ar[i];
+    const std::vector<double>& ar = arUnitAllanVariance(model.arPolynomial, m);
+    for (std::size_t i = 0; i < m.size(); ++i) avar[i] += model.arVariance * ar[i];
   }
   return avar;
 }
@@ -86,15 +106,26 @@ double latentPsd(const LatentModel& model, double dt, double w) {
     S += g.sigma * g.sigma * (1.0 - phi * phi) / (1.0 - 2.0 * phi * std::cos(w) + phi * phi);
   }
   if (model.arVariance > 0.0) {
-    // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k
-    double re = 0.0, im = 0.0;
-    for (std::size_t k = 0; k < model.arPolynomial.size(); ++k) {
-      re += model.arPolynomial[k] * std::cos(double(k) * w);
-      im -= model.arPolynomial[k] * std::sin(double(k) * w);
-    }
-    S += model.arVariance / (re * re + im * im);
+    // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k: Horner in u = e^{-iw} (one sincos per call)
+    const std::complex<double> u = std::polar(1.0, -w);
+    std::complex<double> A = 0.0;
+    for (std::size_t k = model.arPolynomial.size(); k-- > 0;) A = A * u + model.arPolynomial[k];
+    S += model.arVariance / std::norm(A);
   }
   return S;
+}
+
+double latentInnovationVariance(const LatentModel& model, double dt) {
+  constexpr int kNodes = 1 << 15;
+  const double h = kPi / kNodes;
+  double sumLog = 0.0;
+  for (int i = 0; i < kNodes; ++i) {
+    const double S = latentPsd(model, dt, (i + 0.5) * h);
+    if (!(S > 0.0) || !std::isfinite(S))
+      throw InputError("latentInnovationVariance: the model " + model.termNames() + " has no random term");
+    sumLog += std::log(S);
+  }
+  return std::exp(sumLog / kNodes);
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -72,4 +72,12 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
 /// adds nothing. For the covariance of Allan-variance estimates (fit::allanEstimateCovariance).
 double latentPsd(const LatentModel& model, double dt, double w);
 
+/// One-step prediction error variance [U^2] of the model's random terms sampled at dt: the
+/// variance left when the whole past predicts the next sample (Kolmogorov-Szego:
+/// exp((1/pi) int_0^pi ln latentPsd dw); midpoint rule on 2^15 frequencies, whose error at the
+/// log singularities of a walk, flicker or quantization at w = 0 is < 1e-4 relative). What a
+/// Burg AR of the record should reach if these terms are all its correlation. Throws InputError
+/// when the model has no random term.
+double latentInnovationVariance(const LatentModel& model, double dt);
+
 }  // namespace sinsim::errormodels::fit

@@ -135,3 +135,35 @@ TEST_CASE("AR term of the composite model: AR(1) equals the discrete GM, in Alla
   for (double w : {1e-4, 0.1, 1.0, 3.0}) CHECK(latentPsd(ar, dt, w) == Approx(latentPsd(gm, dt, w)).epsilon(1e-12));
   CHECK(ar.termNames() == "ar");
 }
+
+TEST_CASE("one-step prediction variance of the terms: white, GM, white + GM (ARMA(1,1)), AR(5)",
+          "[fit][latent][innovation]") {
+  // Closed forms from outside the quadrature: white noise predicts nothing (N^2 / dt); an AR(1)
+  // (the discrete GM) leaves sigma^2 (1 - phi^2); an AR polynomial driven by E leaves E
+  // (minimum phase); white + GM is an ARMA(1,1) whose innovation variance v solves
+  // a (1 + phi^2) + b = v (1 + theta^2), a phi = v theta (a = N^2 / dt, b = sigma^2 (1 - phi^2):
+  // the spectral factorisation of a |1 - phi z|^2 + b), theta the root inside the unit circle.
+  const double dt = 0.01, N = 1e-3, s = 2e-3, T = 0.05, phi = std::exp(-dt / T);
+  const double a = N * N / dt, b = s * s * (1.0 - phi * phi);
+  LatentModel white;
+  white.white = N;
+  CHECK(latentInnovationVariance(white, dt) == Approx(a).epsilon(1e-9));
+  LatentModel gm;
+  gm.gm = {{s, T}};
+  CHECK(latentInnovationVariance(gm, dt) == Approx(b).epsilon(1e-6));
+  LatentModel both = white;
+  both.gm = gm.gm;
+  const double c = a * phi / (a * (1.0 + phi * phi) + b);  // theta / (1 + theta^2)
+  const double theta = (1.0 - std::sqrt(1.0 - 4.0 * c * c)) / (2.0 * c);
+  CHECK(latentInnovationVariance(both, dt) == Approx(a * phi / theta).epsilon(1e-6));
+  LatentModel ar;  // the paper's Gx AR(5) (poles up to 0.982)
+  ar.arPolynomial = {1.0, -1.0327, -0.34341, 0.037895, 0.19732, 0.14724};
+  ar.arVariance = 4e-6;
+  CHECK(latentInnovationVariance(ar, dt) == Approx(4e-6).epsilon(1e-6));
+  // A walk beside white noise: above the white part's innovation (an independent process added
+  // never makes the next sample more predictable).
+  LatentModel walk = white;
+  walk.randomWalk = 1e-3;
+  CHECK(latentInnovationVariance(walk, dt) > a);
+  CHECK_THROWS_AS(latentInnovationVariance(LatentModel{}, dt), sinsim::InputError);
+}

@@ -30,7 +30,7 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
   REQUIRE(fs::exists(model));
   const std::string text = slurp(model);
   CHECK(text.find("# data: ") != std::string::npos);        // provenance
-  CHECK(text.find("order criteria: AIC") != std::string::npos);
+  CHECK(text.find("order by mdl (AIC") != std::string::npos);  // how the AR order was chosen
   CHECK(text.find("type: ar") != std::string::npos);
   const auto m = sinsim::errormodels::ImuErrorModel::load(model.string());
   CHECK_FALSE(m.empty());

@@ -1,4 +1,4 @@
-// Independent work items of the diagnosis (Monte Carlo realisations, channels) on worker threads.
+// Independent work items (Monte Carlo realisations, channels, runs) on worker threads.
 #pragma once
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace sinsim::errormodels::diagnose::detail {
+namespace sinsim {
 
 /// The worker threads of `threads` (0: every core), never more than the items.
 inline unsigned workerCount(unsigned threads, std::size_t items) {
@@ -47,4 +47,4 @@ void parallelFor(std::size_t n, unsigned threads, Fn fn) {
   if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace sinsim::errormodels::diagnose::detail
+}  // namespace sinsim
