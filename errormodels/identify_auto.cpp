@@ -34,9 +34,13 @@ constexpr double kTermsRejected = 0.001;
 ArVerdict shortCorrelation(const fit::OrderSelection& screen, const fit::LatentFit& latent, double dt,
                            double minGain) {
   const double gain = predictionGain(screen.fit);
-  const double eTerms = fit::latentInnovationVariance(latent.model, dt);
+  double eTerms = NAN;  // a fit whose random terms all came out zero predicts nothing
+  try {
+    eTerms = fit::latentInnovationVariance(latent.model, dt);
+  } catch (const InputError&) {
+  }
   const double excess = screen.fit.drivingVariance > 0.0 ? eTerms / screen.fit.drivingVariance : 1.0;
-  const bool rejected = latent.pValue < kTermsRejected;
+  const bool rejected = !(latent.pValue >= kTermsRejected) || !std::isfinite(eTerms);
   ArVerdict v;
   v.why = "AR screen: order " + std::to_string(screen.selectedOrder) + " by " + fit::toString(screen.selectedBy) +
           ", prediction gain " + significant(gain, 5) + "; latent terms " + latent.terms.name() + " (chi2 " +
