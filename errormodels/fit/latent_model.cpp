@@ -4,8 +4,8 @@
 #include <cmath>
 #include <complex>
 
-#include "common/error.hpp"
 #include "common/constants.hpp"
+#include "common/error.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 
