@@ -184,8 +184,12 @@ fit::ModelProvenance Identification::provenance() const {
       "record) is removed before fitting and only reported below; add a `bias` effect by hand if "
       "wanted.");
   if (options.denoise == DenoiseChoice::Db5 && !options.arOnDenoised)
-    p.notes.push_back("denoising: the written AR is fitted on the RAW record (denoised data lack "
-                      "most of the white noise); the denoised fit is shown for comparison.");
+    p.notes.push_back(options.kind == IdentifyKind::Ar
+                          ? "denoising: the written AR is fitted on the RAW record (denoised data lack "
+                            "most of the white noise); the denoised fit is shown for comparison."
+                          : "denoising: only the ACF and its correlation time are the denoised "
+                            "record's; every fit is on the RAW record (denoised data lack most of the "
+                            "white noise).");
   if (options.arOnDenoised)
     p.notes.push_back("denoising: the written AR is fitted on the DENOISED record (the paper's "
                       "pipeline): its driving noise underestimates the sensor's white noise.");
@@ -361,7 +365,9 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
 
       if (opt.kind == IdentifyKind::Ar || opt.kind == IdentifyKind::Auto) {
         ax.ar = fit::selectArOrder(x, os);
-        if (!den.empty())
+        // The denoised AR is the paper's variant beside the written one: --kind ar only (auto
+        // writes the AR with slow terms, not a bare AR to compare it with).
+        if (!den.empty() && opt.kind == IdentifyKind::Ar)
           ax.arDenoised = fit::selectArOrder(den, os);
       }
 

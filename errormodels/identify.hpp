@@ -77,7 +77,7 @@ struct IdentifyOptions {
   /// db5 settings when denoise = Db5 (wavelet name, boundary, level, threshold rule, mode).
   DenoiseOptions denoiseOptions;
   /// Write the AR fitted on the denoised signal (the paper's literal pipeline) instead of the
-  /// one fitted on the raw record. Needs denoise = Db5.
+  /// one fitted on the raw record. Needs denoise = Db5 and kind = Ar.
   bool arOnDenoised = false;
   /// [s] discard this much from the start of the record (e.g. a warm-up transient).
   double skipStart = 0.0;

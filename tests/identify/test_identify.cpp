@@ -72,7 +72,7 @@ TEST_CASE("white noise: Allan fit returns N, auto chooses Allan terms", "[identi
     const auto& w = term(id.axis("gx"), fit::AllanTermKind::White);
     REQUIRE(w.detected);
     requireWithin3Sigma(w.value, N, w.stdError, "N");
-    // Auto: no short correlation in white noise (MDL order 0 or gain < 1.02) -> the composite
+    // Auto: white noise holds no correlation the latent terms do not carry -> the composite
     // latent fit, which keeps the white noise.
     o.kind = IdentifyKind::Auto;
     const auto ida = identify(r, o);
@@ -361,6 +361,9 @@ TEST_CASE("identify: bad options and records are InputErrors", "[identify][error
   o.skipStart = 0.0;
   o.arOnDenoised = true;
   CHECK_THROWS_AS(identify(r, o), InputError);
+  o.denoise = DenoiseChoice::Db5;  // denoised, but the paper's literal AR is a --kind ar option
+  CHECK_THROWS_WITH(identify(r, o), Catch::Contains("--kind ar option, got --kind auto"));
+  o.denoise = DenoiseChoice::None;
   o.arOnDenoised = false;
   o.order = 0;
   CHECK_THROWS_AS(identify(r, o), InputError);
