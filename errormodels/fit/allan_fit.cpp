@@ -68,26 +68,89 @@ double simpsonLog(const F& f, double a, double b, int n) {
 // sin^4(m w / 2) are integrated exactly over their first 20 periods and replaced by their mean
 // beyond: 3/8 each, 35/128 for the product when ma == mb, 7/64 when mb == 2 ma (the only ratios
 // with resonant harmonics; sin^4 has harmonics 0, 2, 4 only).
-double pairIntegral(const std::function<double(double)>& psd, std::size_t ma, std::size_t mb) {
+//
+// The PSD is the costly part (a fitted AR(20) model: a complex Horner per node), and the nodes of
+// a pair's first segment [0, 40 pi / mb] and of its log tails [40 pi / m, pi] depend on one factor
+// only: they are evaluated once per factor (FactorNodes) and shared by every pair, with the same
+// nodes and the same arithmetic as a pair on its own (the covariance is unchanged to the bit).
+constexpr int kExactIntervals = 1600, kTailIntervals = 800;
+
+double sin4(double x) { const double s = std::sin(x); return s * s * s * s; }
+
+// 4 S^2 / (ma^2 mb^2 sin^4(w/2)), from S = psd(w) and s = sin(w/2)
+double envelopeOf(double S, double s, double a, double b) {
+  return 4.0 * S * S / (a * a * b * b * s * s * s * s);
+}
+
+struct FactorNodes {
+  double c = 0.0;                          // min(pi, 40 pi / m): the end of the exact segment
+  std::vector<double> w, S, s, sin4m;      // Simpson nodes on [0, c] (w = i h, the last one c)
+  std::vector<double> tw, tS, ts;          // Simpson nodes in ln w on [c, pi] (empty when c = pi)
+};
+
+FactorNodes factorNodes(const std::function<double(double)>& psd, std::size_t mf) {
+  FactorNodes f;
+  const double m = static_cast<double>(mf);
+  f.c = std::min(kPi, 40.0 * kPi / m);
+  const double h = f.c / kExactIntervals;
+  for (int i = 0; i <= kExactIntervals; ++i) {
+    const double w = i == kExactIntervals ? f.c : 0.0 + i * h;
+    f.w.push_back(w);
+    f.S.push_back(w <= 0.0 ? 0.0 : psd(w));
+    f.s.push_back(std::sin(0.5 * w));
+    f.sin4m.push_back(sin4(0.5 * m * w));
+  }
+  if (f.c < kPi) {
+    const double la = std::log(f.c), lb = std::log(kPi), hl = (lb - la) / kTailIntervals;
+    for (int i = 0; i <= kTailIntervals; ++i) {
+      const double w = std::exp(i == 0 ? la : i == kTailIntervals ? lb : la + i * hl);
+      f.tw.push_back(w);
+      f.tS.push_back(psd(w));
+      f.ts.push_back(std::sin(0.5 * w));
+    }
+  }
+  return f;
+}
+
+// Simpson's weights over n + 1 node values g(i), times h / 3.
+template <class G>
+double simpsonNodes(const G& g, int n, double h) {
+  double sum = g(0) + g(n);
+  for (int i = 1; i < n; ++i) sum += g(i) * (i % 2 ? 4.0 : 2.0);
+  return sum * h / 3.0;
+}
+
+// int over [c, pi] in ln w of the envelope (the tail of `t`'s nodes), for the pair (a, b)
+double tailIntegral(const FactorNodes& t, double a, double b) {
+  if (t.tw.empty()) return 0.0;
+  const double hl = (std::log(kPi) - std::log(t.c)) / kTailIntervals;
+  return simpsonNodes([&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    return envelopeOf(t.tS[k], t.ts[k], a, b) * t.tw[k];
+  }, kTailIntervals, hl);
+}
+
+double pairIntegral(const std::function<double(double)>& psd, const FactorNodes& lo, const FactorNodes& hi,
+                    std::size_t ma, std::size_t mb) {
   const double a = static_cast<double>(ma), b = static_cast<double>(mb);
-  auto envelope = [&](double w) {  // 4 S^2 / (ma^2 mb^2 sin^4(w/2))
-    const double s = std::sin(0.5 * w), S = psd(w);
-    return 4.0 * S * S / (a * a * b * b * s * s * s * s);
-  };
-  auto sin4 = [](double x) { const double s = std::sin(x); return s * s * s * s; };
-  const double cb = std::min(kPi, 40.0 * kPi / b), ca = std::min(kPi, 40.0 * kPi / a);
+  const double cb = hi.c, ca = lo.c;
   // Segment A: both exact.
-  double I = simpson([&](double w) {
-    return w <= 0.0 ? 0.0 : envelope(w) * sin4(0.5 * a * w) * sin4(0.5 * b * w);
-  }, 0.0, cb, 1600);
+  double I = simpsonNodes([&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    return hi.w[k] <= 0.0 ? 0.0 : envelopeOf(hi.S[k], hi.s[k], a, b) * sin4(0.5 * a * hi.w[k]) * hi.sin4m[k];
+  }, kExactIntervals, cb / kExactIntervals);
   if (cb < kPi) {
     if (mb == ma || mb == 2 * ma) {
       const double avg = mb == ma ? 35.0 / 128.0 : 7.0 / 64.0;
-      I += avg * simpsonLog(envelope, cb, kPi, 800);
+      I += avg * tailIntegral(hi, a, b);
     } else {
       // sin^4(b w/2) -> 3/8; sin^4(a w/2) exact up to ca, then 3/8 as well.
-      I += 0.375 * simpson([&](double w) { return envelope(w) * sin4(0.5 * a * w); }, cb, ca, 1600);
-      I += 0.375 * 0.375 * simpsonLog(envelope, ca, kPi, 800);
+      const double h = (ca - cb) / kExactIntervals;
+      I += 0.375 * simpsonNodes([&](int i) {
+        const double w = i == 0 ? cb : i == kExactIntervals ? ca : cb + i * h;
+        return envelopeOf(psd(w), std::sin(0.5 * w), a, b) * sin4(0.5 * a * w);
+      }, kExactIntervals, h);
+      I += 0.375 * 0.375 * tailIntegral(lo, a, b);
     }
   }
   return I / kPi;
@@ -110,14 +173,19 @@ Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount
 Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double)>& psd,
                                         const std::vector<std::size_t>& m, std::size_t M) {
   const auto n = static_cast<Eigen::Index>(m.size());
+  for (std::size_t f : m)
+    if (f == 0 || 2 * f >= M) throw InputError("Allan covariance: need 1 <= m < M / 2");
+  std::vector<FactorNodes> nodes;
+  nodes.reserve(m.size());
+  for (std::size_t f : m) nodes.push_back(factorNodes(psd, f));
   Eigen::MatrixXd C(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j <= i; ++j) {
-      const std::size_t mi = m[static_cast<std::size_t>(i)], mj = m[static_cast<std::size_t>(j)];
-      const std::size_t lo = std::min(mi, mj), hi = std::max(mi, mj);
-      if (lo == 0 || 2 * hi >= M) throw InputError("Allan covariance: need 1 <= m < M / 2");
-      const double L = static_cast<double>(M - 2 * hi);
-      C(i, j) = C(j, i) = 2.0 / L * pairIntegral(psd, lo, hi);
+      const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+      const bool iHi = m[ui] >= m[uj];
+      const std::size_t lo = iHi ? uj : ui, hi = iHi ? ui : uj;
+      const double L = static_cast<double>(M - 2 * m[hi]);
+      C(i, j) = C(j, i) = 2.0 / L * pairIntegral(psd, nodes[lo], nodes[hi], m[lo], m[hi]);
     }
   return C;
 }
