@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <optional>
 
 #include "common/constants.hpp"
@@ -646,9 +647,21 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
 
 namespace {
 
-LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& avar,
-                   std::size_t samples, const LatentFitOptions& options, const WhittleBins* bins,
-                   const std::vector<double>* record) {
+/// A fit at one start of the tau range, and the work of its selection-aware parameters
+/// (LatentFit::averaged), left for the start a scan keeps: with an AR term it is a third of a start's
+/// cost, and a scan tries up to a dozen starts.
+struct RangeFit {
+  LatentFit fit;
+  std::function<std::vector<LatentAveragedParameter>()> averaging;
+  LatentFit withAveraged() && {
+    fit.averaged = averaging();
+    return std::move(fit);
+  }
+};
+
+RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& avar,
+                  std::size_t samples, const LatentFitOptions& options, const WhittleBins* bins,
+                  const std::vector<double>* record) {
   const double dt = options.sampleInterval;
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("latent fit: sample interval must be > 0");
   if (m.size() != avar.size()) throw InputError("latent fit: m and avar differ in length");
@@ -721,9 +734,11 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
     if (c.valid) bestScore = std::min(bestScore, c.score);
   for (const auto& c : cands)
     if (c.valid && c.score - bestScore <= kAveragedScoreRange) near.push_back(c.terms);
-  std::vector<SetFit> finalFits;
-  const std::vector<LatentCandidate> finalCands = scoreAll(p, near, penalty, &finalFits);
-  const std::vector<LatentAveragedParameter> averaged = averageOverSets(p, finalCands, finalFits, omegaModel);
+  auto averaging = [p, near, penalty, omegaModel] {
+    std::vector<SetFit> finalFits;
+    const std::vector<LatentCandidate> finalCands = scoreAll(p, near, penalty, &finalFits);
+    return averageOverSets(p, finalCands, finalFits, omegaModel);
+  };
 
   LatentFit out;
   out.terms = best.set;
@@ -740,11 +755,10 @@ LatentFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>&
   out.candidates = cands;
   out.whittleSelected = whittle && std::isfinite(cands.front().whittleScore);
   out.blockSelected = whittle && std::isfinite(cands.front().blockScore);
-  out.averaged = averaged;
   out.consistent = out.pValue >= 1e-3;
   if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
   describe(p, best, out);
-  return out;
+  return {std::move(out), averaging};
 }
 
 }  // namespace
@@ -754,26 +768,29 @@ namespace {
 LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double>& avar, std::size_t samples,
                      const LatentFitOptions& options, const WhittleBins* bins,
                      const std::vector<double>* record = nullptr) {
-  LatentFit fit = fitRange(m, avar, samples, options, bins, record);
-  if (!options.scanStart || fit.consistent) return fit;
-  LatentFit best = fit;
+  RangeFit first = fitRange(m, avar, samples, options, bins, record);
+  const LatentFit& fit = first.fit;
+  if (!options.scanStart || fit.consistent) return std::move(first).withAveraged();
+  RangeFit best = first;
   for (std::size_t start = 1; start < fit.tau.size() && fit.tau.size() - start >= 6; ++start) {
     LatentFitOptions o = options;
     o.tauMin = std::max(options.tauMin, fit.tau[start] * (1.0 - 1e-9));
-    LatentFit f;
+    RangeFit f;
     progress::checkpoint("scanning the start of the tau range", start, fit.tau.size());
     try {
       f = fitRange(m, avar, samples, o, bins, record);
     } catch (const Error&) {
       break;
     }
-    if (f.consistent) return f;
-    if (f.chi2 / double(std::max<std::size_t>(f.dof, 1)) < best.chi2 / double(std::max<std::size_t>(best.dof, 1)))
-      best = f;
+    if (f.fit.consistent) return std::move(f).withAveraged();
+    if (f.fit.chi2 / double(std::max<std::size_t>(f.fit.dof, 1)) <
+        best.fit.chi2 / double(std::max<std::size_t>(best.fit.dof, 1)))
+      best = std::move(f);
   }
-  best.warnings.push_back("no start of the tau range gives a consistent fit (p >= 0.001): least-bad start " +
-                          fmt(best.tau.front()) + " s kept");
-  return best;
+  LatentFit kept = std::move(best).withAveraged();
+  kept.warnings.push_back("no start of the tau range gives a consistent fit (p >= 0.001): least-bad start " +
+                          fmt(kept.tau.front()) + " s kept");
+  return kept;
 }
 
 }  // namespace
