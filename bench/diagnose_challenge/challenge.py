@@ -28,6 +28,7 @@ import generate as g  # noqa: E402
 BASES = ["white+gm", "white+rw+flicker", "ar"]
 RATES = [50.0, 100.0, 200.0, 500.0, 1000.0, 2000.0]
 SIZES = [1.5, 3.0, 6.0, 10.0]
+VISIBLE = 1.5  # an effect hidden by its partner: below this many times the ADEV of the rest at every tau
 GYRO_SCALE = math.radians(0.005)  # rad/s/sqrt(Hz): a MEMS gyro's white density
 ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
 
@@ -93,6 +94,7 @@ def make(rng, idx, work, max_samples, bases=BASES, null=False, effects=None, poo
             q = float(np.std(np.diff(base)) * 10 ** rng.uniform(-1.5, -0.7))
             effects.append(("quantization", {"lsb": q}))
         x = base.copy()
+        added = []  # (index in truth, scaled effect) of the hidden channel's additive effects
         if ch == hidden_ch:
             for name in names:
                 if name == "quantization" and q is None:
@@ -101,12 +103,22 @@ def make(rng, idx, work, max_samples, bases=BASES, null=False, effects=None, poo
                     q = k * float(np.std(np.diff(base))) / math.sqrt(2.0)
                     truth.append({"effect": name, "size": k, "lsb": q})
                     continue
-                if name == "quantization":  # already quantized: draw another
-                    name = "ramp"
+                if name == "quantization":  # already quantized: another effect, not one drawn
+                    name = "ramp" if "ramp" not in names else "warmup"
                 e, info = g.unit_effect(rng, name, n, fs, t, temp)
                 k = float(rng.choice(SIZES))
-                x = x + e * g.scale_to(e, base, fs, k)
+                scaled = e * g.scale_to(e, base, fs, k)
+                x = x + scaled
+                added.append((len(truth), scaled))
                 truth.append({"effect": name, "size": k, **info})
+            if len(added) == 2:
+                # Each effect against the base AND the other effect (its size is against the base
+                # alone): max over tau of ADEV_effect / ADEV_rest. Below ~1 the partner hides it.
+                grid = g.octave_grid(n)
+                for i, e in added:
+                    rest = base + sum(o for j, o in added if j != i)
+                    ratio = g.adev(e, 1.0 / fs, grid) / g.adev(rest, 1.0 / fs, grid)
+                    truth[i]["visibility"] = float(np.max(ratio))
         x = x + mean[ch]
         cols[ch] = g.quantize(x, q) if q is not None else x
         model[sensor][ax] = [yaml_effect(nm, p, sensor) for nm, p in effects]
@@ -163,7 +175,7 @@ def score(rows):
     """Counts [hits, total] of every score of the issue (docs/diagnose.md, "Challenge benchmark")."""
     sc = {"top1": defaultdict(lambda: [0, 0]), "by_effect": defaultdict(lambda: [0, 0]),
           "both": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0],
-          "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": []}
+          "both_visible": [0, 0], "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": []}
     for r in rows:
         res = r.get("result", {})
         if "error" in res:
@@ -203,6 +215,9 @@ def score(rows):
                 if len(cat) == 2:
                     sc["both"][1] += 1
                     sc["both"][0] += set(cat) <= set(c["findings"])
+                    if all(h.get("visibility", VISIBLE) >= VISIBLE for h in r["hidden"]):
+                        sc["both_visible"][1] += 1
+                        sc["both_visible"][0] += set(cat) <= set(c["findings"])
     return sc
 
 
@@ -221,6 +236,7 @@ def report(rows):
     print(f"top-1 correct, one effect at >= 3x:             {pct(*ge3)}")
     print(f"top-1 correct, quantization (LSB 0.75-5 sd):    {pct(*top1['lsb'])}")
     print(f"both effects found on two-effect channels:      {pct(*sc['both'])}")
+    print(f"  ... where each is >= {VISIBLE}x the base + the other's ADEV at some tau: {pct(*sc['both_visible'])}")
     print(f"false alarms on clean channels:                 {pct(*sc['clean'])}")
     print(f"clean channels 'unexplained' (no finding):      {pct(*sc['clean_unexplained'])}")
     print(f"out-of-catalogue named as equivalent/unexplained: {pct(*sc['ooc'])}")
