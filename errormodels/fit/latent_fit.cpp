@@ -782,7 +782,13 @@ LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double
     } catch (const Error&) {
       break;
     }
-    if (f.fit.consistent) return std::move(f).withAveraged();
+    if (f.fit.consistent) {
+      try {  // as when the averaging was part of the start's fit: a failure ends the scan
+        return std::move(f).withAveraged();
+      } catch (const Error&) {
+        break;
+      }
+    }
     if (f.fit.chi2 / double(std::max<std::size_t>(f.fit.dof, 1)) <
         best.fit.chi2 / double(std::max<std::size_t>(best.fit.dof, 1)))
       best = std::move(f);
