@@ -68,6 +68,10 @@ struct Candidate {
   /// The white variance the rounding adds per sample [SI^2] (rate LSB, each sample rounded; may
   /// be negative on a coarse lattice: roundingAddedVariance).
   double roundingVar = 0.0;
+  /// Its Allan term `g` is only a proxy of what the Monte Carlo does exactly (a rounding that
+  /// hides noise on a lattice coarser than it): `--add` keeps the base noise level beside it, as
+  /// a base lowered to help the proxy is rounded away again (improve.cpp).
+  bool keepsBaseLevel = false;
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
   std::function<std::vector<double>(std::size_t maxLag)> acov;

@@ -89,13 +89,9 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
     set.push_back(bestC);
     sol = bestS;
   }
-  // On a lattice coarser than the noise (the rounding hides variance: roundingVar < 0) the
-  // quantization's Allan term is only a proxy of the rounding, which the simulator does exactly at
-  // the record's level; a base level lowered to help the proxy would be rounded away again.
-  const bool coarseLattice = std::any_of(set.begin(), set.end(), [](const Candidate* c) {
-    return c->effect == "quantization" && c->roundingVar < 0.0;
-  });
-  if (coarseLattice) return sol;
+  // Beside a term whose Allan shape is only a proxy of what the Monte Carlo does exactly (a
+  // rounding that hides noise), a base level lowered to help the proxy is undone by the simulation.
+  if (std::any_of(set.begin(), set.end(), [](const Candidate* c) { return c->keepsBaseLevel; })) return sol;
   const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
   if (sol.chi2 - freeLevel.chi2 > 9.0) {
     // A level that reaches 0 would write the base noise with size 0, which no model accepts

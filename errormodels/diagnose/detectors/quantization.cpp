@@ -30,6 +30,7 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   rateLsb.freeSize = false;
   rateLsb.g = ctx.shape([&](double t) { return added * dt / t; });  // white
   rateLsb.roundingVar = added;
+  rateLsb.keepsBaseLevel = added < 0.0;  // the rounding hides noise: the white term is a proxy
   rateLsb.zSpecial = kMaxScore;
   rateLsb.lsbRate = q;
   rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
