@@ -680,3 +680,32 @@ TEST_CASE("a step under a nearly integrated base is no outlier, a spike still is
     CHECK(std::find(at.begin(), at.end(), std::size_t(9000)) != at.end());
   }
 }
+
+// A warm-up beside a drift through the record (challenge records r0205, r0277 of seed 2: a
+// warm-up and a ramp, each 6-10x the base, named `random_walk` or `gauss_markov`). Fitted alone
+// to block means, exp(-t / tau_w) takes part of the line and its time constant moves (4.9 s for
+// a 0.34 s settling on a 15 s record); on a large settling the transient the wrong time constant
+// leaves loses the trial to a Gauss-Markov hump. The variant fitted beside a straight trend keeps
+// the settling's own time constant. White sd 0.1 deg/s, 300 s at 100 Hz; a settling of 3 deg/s
+// with tau 5 s and a ramp of 0.6 deg/s over the record. Before: a spurious `gauss_markov` beside
+// them in 7 of these 10 seeds (on two records of `sinsim synth` it came alone, with `unexplained`).
+// Now warm-up and ramp in >= 9 of 10 (10 measured), a Gauss-Markov in <= 1 (0), tau within 10 %
+// in >= 9 (10).
+TEST_CASE("a warm-up beside a ramp keeps its own time constant", "[diagnose][selection]") {
+  int both = 0, gm = 0, tauOk = 0;
+  for (std::uint64_t seed = 1700; seed < 1710; ++seed) {
+    const auto r = simulate(kWhite + "    - {type: warmup, amplitude: 3 deg/s, tau: 5 s}\n"
+                                     "    - {type: ramp, slope: 0.002 deg/s/s}\n",
+                            kLineN, seed);
+    const auto d = dg::diagnose(r, errorModelFromString(kWhite, "base.yaml"), gxOnly(seed)).axis("gx");
+    const std::string rep = reportedList(d);
+    INFO("seed " << seed << ": reported " << rep);
+    both += rep.find("warmup") != std::string::npos && rep.find("ramp") != std::string::npos;
+    gm += rep.find("gauss_markov") != std::string::npos;
+    for (const auto& f : d.findings)
+      if (f.reported && f.effect == "warmup") tauOk += std::fabs(f.params.at("tau") / 5.0 - 1.0) < 0.1;
+  }
+  CHECK(both >= 9);
+  CHECK(gm <= 1);
+  CHECK(tauOk >= 9);
+}

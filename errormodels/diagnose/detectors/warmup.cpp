@@ -16,21 +16,29 @@ struct Settling {
   double octaves = 1; // of the time constants searched
 };
 
-Settling fitSettling(const DetectorContext& ctx) {
+/// With `trend`, a straight line t is fitted beside it as a nuisance: a drift that runs through
+/// the record (a ramp, a thermal trend) otherwise pulls the time constant to the record's length,
+/// where exp(-t / tau_w) imitates the line, and the settling itself is missed. The amplitude is
+/// then the joint fit's (the line's share of the settling's shape left out).
+Settling fitSettling(const DetectorContext& ctx, bool trend) {
   const auto& bt = ctx.blocks.t;
   const std::size_t nb = ctx.blocks.m.size();
   Eigen::VectorXd yb = Eigen::Map<const Eigen::VectorXd>(ctx.blocks.m.data(), Eigen::Index(nb));
+  const std::size_t extra = trend ? 1 : 0;
   // Beside the signals already taken out, their regressors are fitted with it (joint amplitude).
   auto rss = [&](double tw, Eigen::VectorXd& beta) {
-    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), Eigen::Index(2 + ctx.takenBlocks.size()));
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), Eigen::Index(2 + extra + ctx.takenBlocks.size()));
     for (std::size_t j = 0; j < nb; ++j) {
       X(Eigen::Index(j), 0) = 1, X(Eigen::Index(j), 1) = std::exp(-bt[j] / tw);
+      if (trend) X(Eigen::Index(j), 2) = bt[j] / ctx.T;
       for (std::size_t i = 0; i < ctx.takenBlocks.size(); ++i)
-        X(Eigen::Index(j), Eigen::Index(2 + i)) = ctx.takenBlocks[i][j];
+        X(Eigen::Index(j), Eigen::Index(2 + extra + i)) = ctx.takenBlocks[i][j];
     }
     return leastSquares(X, yb, beta);
   };
-  const double lo = std::log(3.0 * double(ctx.blocks.size) * ctx.dt), hi = std::log(ctx.T / 2);
+  // Beside a line only time constants up to T/8 are told from it: a slower settling and a line
+  // make one curvature, which the plain fit covers.
+  const double lo = std::log(3.0 * double(ctx.blocks.size) * ctx.dt), hi = std::log(ctx.T / (trend ? 8 : 2));
   double bestL = lo, best = INFINITY;
   Eigen::VectorXd beta;
   for (int i = 0; i <= 40; ++i) {
@@ -80,24 +88,23 @@ double startTest(const DetectorContext& ctx, double& tStart) {
   return tested ? zFromTwoSidedP(double(tested) * std::erfc(zStart / std::sqrt(2.0))) : 0.0;
 }
 
-}  // namespace
-
-std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
+/// The candidate of one settling fit.
+Candidate settlingCandidate(const DetectorContext& ctx, const Settling& s, bool besideTrend) {
   const std::size_t nb = ctx.blocks.m.size();
-  if (nb < 20) return {};
   const Units& u = ctx.units;
-  const Settling s = fitSettling(ctx);
   const double A = s.A, tw = s.tau;
   std::vector<double> shapeX(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) shapeX[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
-  if (ctx.spanned(shapeX)) return {};
   std::vector<double> w(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * shapeX[k];
   Candidate c;
   c.effect = "warmup";
   c.freeSize = false;
   c.parameters = 2;  // amplitude and time constant
-  c.basis = {shapeX};
+  // Beside a trend the amplitude is already the joint fit's, so a drift found later is fitted on
+  // the record without the settling as it stands, not apart from its shape (no basis): apart
+  // from it, the later line's share of the shape would be taken out twice.
+  if (!besideTrend) c.basis = {shapeX};
   if (!ctx.taken.empty()) {  // the part apart from the signals taken out is what is left to remove
     c.stated = w;
     w = ctx.apart(shapeX);
@@ -114,7 +121,9 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   // with what the model (and the effects it has accepted) predicts.
   c.zConditional = regressorTestGivenModel(ctx, shapeX, s.octaves);
   c.evidence = "exponential settling at the start: " + quantity(A, u.level) + " decaying with tau " +
-               num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means); first window-mean step t = " + num(tStart, 3);
+               num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means" +
+               (besideTrend ? ", a straight trend fitted beside it" : "") + "); first window-mean step t = " +
+               num(tStart, 3);
   const Dimension signalDim = ctx.signal;
   c.describe = [A, tw, u, signalDim](double, Finding& f) {
     f.size = "A = " + quantity(A, u.level) + ", tau = " + num(tw, 4) + " s";
@@ -123,7 +132,34 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
     f.params["amplitude"] = A;
     f.params["tau"] = tw;
   };
-  return {c};
+  return c;
+}
+
+bool spannedShape(const DetectorContext& ctx, double tw) {
+  std::vector<double> x(ctx.N);
+  for (std::size_t k = 0; k < ctx.N; ++k) x[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  return ctx.spanned(x);
+}
+
+}  // namespace
+
+/// Two variants in the first round: the settling fitted alone, and fitted beside a straight trend
+/// (kept when its time constant differs by more than 5 %). A drift through the record pulls the
+/// plain fit's time constant, and on a large settling even a 30 % error leaves a residual
+/// transient whose trial loses to a Gauss-Markov hump. The trial chooses between them.
+std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
+  if (ctx.blocks.m.size() < 20) return {};
+  std::vector<Candidate> out;
+  const Settling plain = fitSettling(ctx, false);
+  if (!spannedShape(ctx, plain.tau)) out.push_back(settlingCandidate(ctx, plain, false));
+  if (!ctx.taken.empty()) return out;  // a drift taken out already is fitted beside the settling
+  const Settling besideTrend = fitSettling(ctx, true);
+  // At the top of its range the settling beside the line is no settling of its own (it would be
+  // slower still): no variant.
+  if (std::fabs(std::log(besideTrend.tau / plain.tau)) > 0.05 && besideTrend.tau < 0.9 * ctx.T / 8 &&
+      !spannedShape(ctx, besideTrend.tau))
+    out.push_back(settlingCandidate(ctx, besideTrend, true));
+  return out;
 }
 
 }  // namespace sinsim::errormodels::diagnose::detail
