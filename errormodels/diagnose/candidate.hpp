@@ -68,9 +68,9 @@ struct Candidate {
   /// The white variance the rounding adds per sample [SI^2] (rate LSB, each sample rounded; may
   /// be negative on a coarse lattice: roundingAddedVariance).
   double roundingVar = 0.0;
-  /// Its Allan term `g` is only a proxy of what the Monte Carlo does exactly (a rounding that
-  /// hides noise on a lattice coarser than it): `--add` keeps the base noise level beside it, as
-  /// a base lowered to help the proxy is rounded away again (improve.cpp).
+  /// A rounding that hides noise (a lattice coarser than it): its Allan term `g` holds only for
+  /// the base at its own level (the model's realisations rounded), so `--add` keeps the base noise
+  /// level beside it, as a base lowered to help the fit is rounded away again (improve.cpp).
   bool keepsBaseLevel = false;
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.

@@ -48,6 +48,9 @@ struct DetectorContext {
   /// An orthonormal basis (N x rank) of the constant and `taken`, made once (buildCandidates) so
   /// that apart() is two products, not a least-squares solve per shape. Empty without `taken`.
   Eigen::MatrixXd takenBasis;
+  /// What rounding onto `lattice` adds to the model's AVAR per factor, from the model's own
+  /// realisations rounded (SeriesStats::roundedAvar); empty when not measured.
+  std::vector<double> roundingAvar;
 
   /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
   /// shape the record without the taken signals can still show. A coefficient on it is the joint
@@ -102,7 +105,8 @@ const std::vector<DetectorType>& detectorTypes();
 std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
                                        double lattice, const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects,
-                                       const std::vector<std::vector<double>>& taken = {});
+                                       const std::vector<std::vector<double>>& taken = {},
+                                       const std::vector<double>& roundingAvar = {});
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"

@@ -15,6 +15,7 @@
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
 #include "common/parallel.hpp"
+#include "errormodels/diagnose/rounding.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
@@ -94,7 +95,7 @@ std::vector<int> channelsToDiagnose(const Record& record, const DiagnoseOptions&
 /// and their forward selection.
 ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, int c,
                             const std::vector<SeriesStats>& real, const Setup& setup,
-                            const DiagnoseOptions& o) {
+                            const DiagnoseOptions& o, double lattice) {
   const auto& y = channelData(record, c);
   ChannelWork w;
   w.channel = c;
@@ -118,7 +119,6 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
     w.arOrder = a->size() - 1;
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
-  const double lattice = latticeStep(y);
   // Single-LSB steps are what rounding makes of a slow drift only where the noise does not dither
   // the rounding: the mean of a rounded signal follows its input once the noise sd is >= q/2
   // (Widrow & Kollar 2008, ch. 4: the bias falls as exp(-2 pi^2 sd^2 / q^2)); there a window mean
@@ -128,9 +128,17 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   for (std::size_t k = 1; k < y.size(); ++k) dd += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
   const double noiseSd = std::sqrt(dd / double(std::max<std::size_t>(y.size() - 1, 1)) / 2.0);
   w.lattice = lattice > 2.0 * noiseSd ? lattice : 0.0;
-  w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3)](
+  // What rounding onto the record's lattice adds to this model's AVAR: the realisations rounded
+  // less the same realisations as they are (paired, so the difference has little scatter).
+  std::vector<double> rounding;
+  for (const auto& r : real)
+    if (r.roundedAvar.size() == r.avar.size()) {
+      rounding.resize(r.avar.size(), 0.0);
+      for (std::size_t k = 0; k < r.avar.size(); ++k) rounding[k] += (r.roundedAvar[k] - r.avar[k]) / double(real.size());
+    }
+  w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3), rounding](
                   const std::vector<double>& series, const std::vector<std::vector<double>>& taken) {
-    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken);
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding);
   };
   w.cands = w.propose(y, {});
   selectFindings(w, o.threshold);
@@ -157,7 +165,18 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
                      " has no temp column");
   Setup setup = makeSetup(record.rate_hz, record.rows, o);
   setup.lowFreq = lowFrequencyBasis(record.rows, record.temperature);
-  const auto mc = monteCarlo(m, record, channels, setup, o);
+  // Each channel's value lattice (latticeStep of it as recorded); the realisations are rounded
+  // onto it only where its rounding could be seen at all (detectors/quantization.cpp).
+  std::vector<Lattice> lattices, seenLattices;
+  for (int c : channels) {
+    const auto& y = channelData(record, c);
+    const double q = latticeStep(y);
+    const double offset = q > 0 ? y.front() - q * std::nearbyint(y.front() / q) : 0.0;
+    lattices.push_back({q, offset});
+    const bool seen = q * q / 12.0 > oneSampleAvarScatter(y) && std::isfinite(offset);
+    seenLattices.push_back(seen ? lattices.back() : Lattice{});
+  }
+  const auto mc = monteCarlo(m, record, channels, setup, o, seenLattices);
   Run run;
   run.d.data = record.source;
   run.d.model = model.source;
@@ -174,7 +193,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const auto name = kChannels[std::size_t(channels[ci])];
     progress::checkpoint(std::string("diagnosing channel ") + name, done, channels.size());
     try {
-      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o);
+      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o, lattices[ci].q);
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
       throw InputError(record.source + ": channel " + name + ": " + e.what());
     }

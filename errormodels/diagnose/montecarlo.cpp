@@ -10,6 +10,7 @@
 #include "common/progress.hpp"
 #include "common/types.hpp"
 #include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/rounding.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -50,11 +51,25 @@ std::vector<double> channelMeans(const Record& record) {
   return ideal;
 }
 
+/// The realisation x moved to the input level at which its rounding onto l averages the record's
+/// mean `recordMean` (levelOfRoundedMean at x's own sd), then rounded: on a lattice coarser than
+/// the noise, how often the rounded value flips depends on where the level sits in its cell, and
+/// the record's mean says where (its own rounded mean, not the input's).
+std::vector<double>& roundedAtRecordLevel(std::vector<double>& x, const Lattice& l, double recordMean) {
+  double m = 0, ss = 0;
+  for (double v : x) m += v / double(x.size());
+  for (double v : x) ss += (v - m) * (v - m) / double(x.size());
+  const double sd = std::sqrt(ss);
+  const double mu = sd > 0 ? l.offset + levelOfRoundedMean(recordMean - l.offset, sd, l.q) : recordMean;
+  for (double& v : x) v = l.offset + l.q * std::nearbyint((v - m + mu - l.offset) / l.q);
+  return x;
+}
+
 }  // namespace
 
 McResult monteCarlo(const ImuErrorModel& model, const Record& record,
                     const std::vector<int>& channels, const Setup& setup,
-                    const DiagnoseOptions& o) {
+                    const DiagnoseOptions& o, const std::vector<Lattice>& lattices) {
   const std::vector<double> ideal = channelMeans(record);
   const std::size_t R = o.realisations;
   McResult res;
@@ -62,8 +77,13 @@ McResult monteCarlo(const ImuErrorModel& model, const Record& record,
   parallelFor<std::array<std::vector<double>, 6>>(R, o.threads, [&](std::size_t r, auto& buf) {
     progress::checkpoint("simulating the model", r, R);
     simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r, channels, buf);
-    for (std::size_t i = 0; i < channels.size(); ++i)
-      res.perChannel[i][r] = seriesStats(buf[channels[i]], setup);
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      auto& x = buf[channels[i]];
+      res.perChannel[i][r] = seriesStats(x, setup);
+      if (i < lattices.size() && lattices[i].q > 0) {
+        res.perChannel[i][r].roundedAvar = allanVariance(roundedAtRecordLevel(x, lattices[i], ideal[channels[i]]), setup);
+      }
+    }
   });
   return res;
 }

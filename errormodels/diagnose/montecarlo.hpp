@@ -15,10 +15,17 @@ namespace sinsim::errormodels::diagnose::detail {
 struct McResult {
   std::vector<std::vector<SeriesStats>> perChannel;  // [channel slot][realisation]
 };
-/// R = o.realisations realisations on o.threads worker threads; ideal = the record's means.
+/// A channel's value lattice: step q and offset (the values are offset + integers x q); q = 0 off
+/// a lattice.
+struct Lattice {
+  double q = 0, offset = 0;
+};
+/// R = o.realisations realisations on o.threads worker threads; ideal = the record's means. Where
+/// a channel slot's lattice has q > 0, each realisation is also rounded onto it
+/// (SeriesStats::roundedAvar).
 McResult monteCarlo(const ImuErrorModel& model, const Record& record,
                     const std::vector<int>& channels, const Setup& setup,
-                    const DiagnoseOptions& o);
+                    const DiagnoseOptions& o, const std::vector<Lattice>& lattices = {});
 
 /// Realisation of the model at rate [Hz] and length n, ideal [rad/s x3, m/s^2 x3] held constant,
 /// temperature [K] per sample (or empty). out[c] filled for c in channels.

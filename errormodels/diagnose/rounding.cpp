@@ -33,6 +33,23 @@ double levelOfMean(double m, double s) {
   return 0.5 * (a + b);
 }
 
+}  // namespace
+
+double levelOfRoundedMean(double mean, double sigma, double q) {
+  // At sigma >= q the rounded mean is the input's to exp(-2 pi^2) ~ 3e-9 of q (Widrow & Kollar).
+  if (!(sigma < q)) return mean;
+  return q * levelOfMean(mean / q, sigma / q);
+}
+
+double oneSampleAvarScatter(const std::vector<double>& y) {
+  if (y.size() < 2) return 0.0;
+  double s = 0;
+  for (std::size_t k = 1; k < y.size(); ++k) s += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
+  return std::sqrt(3.0 / double(y.size())) * 0.5 * s / double(y.size() - 1);
+}
+
+namespace {
+
 /// Mean over the blocks' phases (weights) of the rounded variance at sd s (LSB).
 double meanRoundedVariance(const std::map<long, double>& phases, double block, double s) {
   double v = 0;

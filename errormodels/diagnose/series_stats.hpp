@@ -28,6 +28,9 @@ struct SeriesStats {
   std::vector<double> acf;   // normalised, lags 0..acfLags
   double trend = 0;          // least-squares slope [SI/s] (trendSlope)
   std::vector<double> lowFreq;  // coefficients on the slow directions [SI] (lowFrequencyCoefficients)
+  /// AVAR per factor of the same series rounded onto the record's value lattice (Lattice), empty
+  /// off a lattice: what rounding makes of this model's noise, for the quantization candidate.
+  std::vector<double> roundedAvar;
 };
 /// Half-octave grid m = round(2^(j/2)) up to maxM: twice the points of the octave grid, so that
 /// "the fraction of tau outside a 95 % band" is not decided by one or two points.

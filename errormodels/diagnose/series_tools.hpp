@@ -10,7 +10,7 @@
 namespace sinsim::errormodels::diagnose::detail {
 
 /// Lattice of values: step q [SI] when the record's increments are integer multiples of one
-/// step (>= 99 % of non-zero differences within 1 % of a multiple); 0 otherwise.
+/// step (>= 99 % of >= 10 non-zero differences within 1 % of a multiple); 0 otherwise.
 double latticeStep(const std::vector<double>& y);
 /// Least-squares slope of y against t = (k + 0.5) dt [SI/s]: a ramp's size, and the trend whose
 /// scatter under the model the ramp's conditional test compares it with.

@@ -8,6 +8,9 @@
 // coarser lattice the rounded record's short-scale variance depends on where its level sits in
 // the cell and may lie below the input's, so the added variance is taken from the record
 // (roundingAddedVariance; a fixed q^2/12 above the record's short-tau AVAR cost the trial ~2e4).
+// The rounding variant's Allan term is the model's own realisations rounded onto the lattice at
+// the record's level less the same unrounded (montecarlo.cpp), when measured: a correlated input
+// rounded coarsely has a correlated rounding error, which no white term describes.
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/rounding.hpp"
 #include "errormodels/diagnose/significance.hpp"
@@ -29,8 +32,12 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   rateLsb.effect = "quantization";
   rateLsb.freeSize = false;
   rateLsb.g = ctx.shape([&](double t) { return added * dt / t; });  // white
+  // The model's own realisations rounded onto the lattice say exactly what the rounding adds at
+  // every tau: on a lattice coarser than the noise the rounding error of a correlated input is
+  // itself correlated (and may remove variance), which no white term describes.
+  if (ctx.roundingAvar.size() == rateLsb.g.size()) rateLsb.g = ctx.roundingAvar;
   rateLsb.roundingVar = added;
-  rateLsb.keepsBaseLevel = added < 0.0;  // the rounding hides noise: the white term is a proxy
+  rateLsb.keepsBaseLevel = added < 0.0;  // the rounding hides noise: g holds at the base's level
   rateLsb.zSpecial = kMaxScore;
   rateLsb.lsbRate = q;
   rateLsb.evidence = ev + "; each sample rounded alone (white rounding noise)";
@@ -60,10 +67,7 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   // with 7 digits sits on a 1e-6 lattice whose rounding is 1e-10 of a MEMS accelerometer's
   // variance), not a sensor's LSB. Nominal, not the variance the rounding added to this record: on
   // a lattice coarser than the noise that can be ~0 while the rounding shapes every sample.
-  Setup one = ctx.setup;
-  one.factors = {1};
-  const auto avar1 = allanVariance(ctx.y, one);
-  const double seen = avar1.empty() ? 0.0 : std::sqrt(3.0 / double(ctx.N)) * avar1.front();
+  const double seen = oneSampleAvarScatter(ctx.y);
   std::vector<Candidate> out;
   if (q * q / 12.0 > seen) out.push_back(std::move(rateLsb));
   if (q * q / 4.0 > seen) out.push_back(std::move(carry));
