@@ -15,7 +15,6 @@
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
 #include "common/parallel.hpp"
-#include "errormodels/diagnose/rounding.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
@@ -167,16 +166,17 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   setup.lowFreq = lowFrequencyBasis(record.rows, record.temperature);
   // Each channel's value lattice (latticeStep of it as recorded); the realisations are rounded
   // onto it only where its rounding could be seen at all (detectors/quantization.cpp).
-  std::vector<Lattice> lattices, seenLattices;
+  std::vector<double> steps;
+  std::vector<Lattice> seen;
   for (int c : channels) {
     const auto& y = channelData(record, c);
     const double q = latticeStep(y);
     const double offset = q > 0 ? y.front() - q * std::nearbyint(y.front() / q) : 0.0;
-    lattices.push_back({q, offset});
-    const bool seen = q * q / 12.0 > oneSampleAvarScatter(y) && std::isfinite(offset);
-    seenLattices.push_back(seen ? lattices.back() : Lattice{});
+    steps.push_back(q);
+    const bool visible = q * q / 12.0 > oneSampleAvarScatter(y, setup) && std::isfinite(offset);
+    seen.push_back(visible ? Lattice{q, offset} : Lattice{});
   }
-  const auto mc = monteCarlo(m, record, channels, setup, o, seenLattices);
+  const auto mc = monteCarlo(m, record, channels, setup, o, seen);
   Run run;
   run.d.data = record.source;
   run.d.model = model.source;
@@ -193,7 +193,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const auto name = kChannels[std::size_t(channels[ci])];
     progress::checkpoint(std::string("diagnosing channel ") + name, done, channels.size());
     try {
-      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o, lattices[ci].q);
+      run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o, steps[ci]);
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
       throw InputError(record.source + ": channel " + name + ": " + e.what());
     }

@@ -41,12 +41,6 @@ double levelOfRoundedMean(double mean, double sigma, double q) {
   return q * levelOfMean(mean / q, sigma / q);
 }
 
-double oneSampleAvarScatter(const std::vector<double>& y) {
-  if (y.size() < 2) return 0.0;
-  double s = 0;
-  for (std::size_t k = 1; k < y.size(); ++k) s += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
-  return std::sqrt(3.0 / double(y.size())) * 0.5 * s / double(y.size() - 1);
-}
 
 namespace {
 

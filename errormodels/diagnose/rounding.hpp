@@ -16,11 +16,6 @@ struct RoundedMoments {
 };
 RoundedMoments roundedMoments(double mu, double sigma, double q);
 
-/// The scatter of a record's Allan variance at one sample, sqrt(3 / N) AVAR(1) as for white noise
-/// [SI^2]: a rounding whose nominal variance there (q^2/12 rounded per sample) is below it is no
-/// effect any statistic of the record can see (a CSV's printing precision, not a sensor's LSB).
-double oneSampleAvarScatter(const std::vector<double>& y);
-
 /// The level mu [SI] within a cell of `mean` whose rounded mean (roundedMoments, lattice points at
 /// integers x q) is `mean`, for input sd sigma: where a Gaussian input must sit for its rounding to
 /// average what a record rounded on that lattice averages.

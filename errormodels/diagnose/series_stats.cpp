@@ -102,6 +102,13 @@ std::vector<double> allanVariance(const std::vector<double>& y, const Setup& s) 
   return v;
 }
 
+double oneSampleAvarScatter(const std::vector<double>& y, const Setup& s) {
+  Setup one = s;
+  one.factors = {1};
+  const auto avar1 = allanVariance(y, one);
+  return avar1.empty() ? 0.0 : std::sqrt(3.0 / double(y.size())) * avar1.front();
+}
+
 SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
   SeriesStats out;
   out.avar = allanVariance(y, s);

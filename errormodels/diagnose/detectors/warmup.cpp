@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -88,13 +89,14 @@ double startTest(const DetectorContext& ctx, double& tStart) {
   return tested ? zFromTwoSidedP(double(tested) * std::erfc(zStart / std::sqrt(2.0))) : 0.0;
 }
 
-/// The candidate of one settling fit.
-Candidate settlingCandidate(const DetectorContext& ctx, const Settling& s, bool besideTrend) {
+/// The candidate of one settling fit; none when its shape is taken out already.
+std::optional<Candidate> settlingCandidate(const DetectorContext& ctx, const Settling& s, bool besideTrend) {
   const std::size_t nb = ctx.blocks.m.size();
   const Units& u = ctx.units;
   const double A = s.A, tw = s.tau;
   std::vector<double> shapeX(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) shapeX[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
+  if (ctx.spanned(shapeX)) return std::nullopt;
   std::vector<double> w(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * shapeX[k];
   Candidate c;
@@ -135,12 +137,6 @@ Candidate settlingCandidate(const DetectorContext& ctx, const Settling& s, bool 
   return c;
 }
 
-bool spannedShape(const DetectorContext& ctx, double tw) {
-  std::vector<double> x(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) x[k] = std::exp(-(double(k) + 0.5) * ctx.dt / tw);
-  return ctx.spanned(x);
-}
-
 }  // namespace
 
 /// Two variants in the first round: the settling fitted alone, and fitted beside a straight trend
@@ -151,14 +147,13 @@ std::vector<Candidate> detect_warmup(const DetectorContext& ctx) {
   if (ctx.blocks.m.size() < 20) return {};
   std::vector<Candidate> out;
   const Settling plain = fitSettling(ctx, false);
-  if (!spannedShape(ctx, plain.tau)) out.push_back(settlingCandidate(ctx, plain, false));
+  if (auto c = settlingCandidate(ctx, plain, false)) out.push_back(std::move(*c));
   if (!ctx.taken.empty()) return out;  // a drift taken out already is fitted beside the settling
   const Settling besideTrend = fitSettling(ctx, true);
   // At the top of its range the settling beside the line is no settling of its own (it would be
   // slower still): no variant.
-  if (std::fabs(std::log(besideTrend.tau / plain.tau)) > 0.05 && besideTrend.tau < 0.9 * ctx.T / 8 &&
-      !spannedShape(ctx, besideTrend.tau))
-    out.push_back(settlingCandidate(ctx, besideTrend, true));
+  if (std::fabs(std::log(besideTrend.tau / plain.tau)) > 0.05 && besideTrend.tau < 0.9 * ctx.T / 8)
+    if (auto c = settlingCandidate(ctx, besideTrend, true)) out.push_back(std::move(*c));
   return out;
 }
 
