@@ -72,6 +72,10 @@ struct Candidate {
   /// the base at its own level (the model's realisations rounded), so `--add` keeps the base noise
   /// level beside it, as a base lowered to help the fit is rounded away again (improve.cpp).
   bool keepsBaseLevel = false;
+  /// Its Allan term is the model's own realisations rounded onto the record's lattice
+  /// (DetectorContext::roundingAvar): once it is accepted, the Allan problem's scatter is theirs
+  /// too (ChannelWork::rounded).
+  bool roundedRealisations = false;
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
   std::function<std::vector<double>(std::size_t maxLag)> acov;

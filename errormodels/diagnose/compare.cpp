@@ -170,6 +170,28 @@ void compareAcf(const SeriesStats& meas, const std::vector<SeriesStats>& real, c
 
 }  // namespace
 
+RoundedScatter roundedScatter(const std::vector<SeriesStats>& real) {
+  RoundedScatter out;
+  const std::size_t R = real.size();
+  if (R < 2) return out;
+  const std::size_t K = real.front().roundedAvar.size();
+  if (K == 0) return out;
+  Eigen::MatrixXd logs(static_cast<Eigen::Index>(R), static_cast<Eigen::Index>(K));
+  out.bias.resize(K);
+  for (std::size_t k = 0; k < K; ++k) {
+    double mean = 0, lm = 0;
+    for (std::size_t r = 0; r < R; ++r) {
+      if (real[r].roundedAvar.size() != K || !(real[r].roundedAvar[k] > 0)) return {};
+      mean += real[r].roundedAvar[k] / double(R);
+      logs(Eigen::Index(r), Eigen::Index(k)) = std::log(real[r].roundedAvar[k]);
+      lm += logs(Eigen::Index(r), Eigen::Index(k)) / double(R);
+    }
+    out.bias[k] = lm - std::log(mean);
+  }
+  out.W = lnAvarWeight(logs);
+  return out;
+}
+
 std::vector<FailRange> failRanges(const Comparison& c, const std::string& stat) {
   std::vector<FailRange> out;
   for (std::size_t i = 0; i < c.x.size();) {

@@ -135,6 +135,7 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
       rounding.resize(r.avar.size(), 0.0);
       for (std::size_t k = 0; k < r.avar.size(); ++k) rounding[k] += (r.roundedAvar[k] - r.avar[k]) / double(real.size());
     }
+  w.rounded = roundedScatter(real);
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3), rounding](
                   const std::vector<double>& series, const std::vector<std::vector<double>>& taken) {
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding);

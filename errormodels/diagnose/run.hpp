@@ -7,6 +7,7 @@
 
 #include "errormodels/diagnose/allan_chi2.hpp"
 #include "errormodels/diagnose/candidate.hpp"
+#include "errormodels/diagnose/compare.hpp"
 #include "errormodels/diagnose/low_frequency.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -55,6 +56,9 @@ struct ChannelWork {
   /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
   double lattice = 0;
   std::vector<char> explainsJumps;
+  /// The Allan problem's weight and bias under the realisations rounded onto the record's lattice
+  /// (empty when they were not rounded): the problem's once a rounding of them is accepted.
+  RoundedScatter rounded;
 };
 
 struct Run {

@@ -472,6 +472,13 @@ void selectFindings(ChannelWork& w, double threshold) {
       start.pop_back();
       w.sol = solveAllan(w.prob, allanSet(w), start);
     }
+    if (c.roundedRealisations && w.rounded.W.size() > 0) {
+      // The rounded model's Allan estimates scatter as its rounded realisations' do (more where
+      // few samples leave their cell): later trials are weighed with that scatter.
+      w.prob.W = w.rounded.W;
+      w.prob.bias = w.rounded.bias;
+      w.sol = solveAllan(w.prob, allanSet(w), w.sol.theta);
+    }
     d.findings.push_back(f);
   }
   restateSignals(w);

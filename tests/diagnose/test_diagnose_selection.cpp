@@ -99,9 +99,11 @@ TEST_CASE("spikes on a lattice coarser than the noise are found as outliers", "[
 // Gauss-Markov of 0.1 deg/s, tau 1 s, beside white of 0.02 deg/s per sample, 300 s at 100 Hz, the
 // truth given as the model; rounded at 0.5 deg/s with the level at 0, 0.3 or 0.5 of a cell from a
 // lattice point. Before: `white` first in 4 of these 10 (the cell's centre), and a Gauss-Markov
-// reported on all 10. Now quantization first in >= 9 of 10 (10 measured), another finding beside
-// it in <= 4 (3, all at the cell's centre, where the rounded record flips on ~1 % of samples and
-// its Allan variance scatters more than the unrounded realisations' bands say).
+// reported on all 10. Now quantization first in >= 9 of 10 (10 measured). Another finding beside
+// it: 3 of 10 while the later trials were weighed with the unrounded realisations' Allan scatter
+// (all at the cell's centre, where the rounded record flips on ~1 % of samples and its Allan
+// variance scatters more than theirs); none since the rounded realisations' scatter is the
+// problem's once the quantization is accepted (ChannelWork::rounded).
 TEST_CASE("a correlated noise on a coarse lattice is named quantization and not white", "[diagnose][selection]") {
   const double q = 0.5 * M_PI / 180;
   const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.002 deg/s/sqrt(Hz)}\n"
@@ -119,7 +121,7 @@ TEST_CASE("a correlated noise on a coarse lattice is named quantization and not 
     others += reportedList(d) != "quantization ";
   }
   CHECK(first >= 9);
-  CHECK(others <= 4);
+  CHECK(others <= 1);
 }
 
 // A single bias step has the Allan variance of a random walk (one large increment), and the

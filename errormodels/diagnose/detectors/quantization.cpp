@@ -35,7 +35,10 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   // The model's own realisations rounded onto the lattice say exactly what the rounding adds at
   // every tau: on a lattice coarser than the noise the rounding error of a correlated input is
   // itself correlated (and may remove variance), which no white term describes.
-  if (ctx.roundingAvar.size() == rateLsb.g.size()) rateLsb.g = ctx.roundingAvar;
+  if (ctx.roundingAvar.size() == rateLsb.g.size()) {
+    rateLsb.g = ctx.roundingAvar;
+    rateLsb.roundedRealisations = true;
+  }
   rateLsb.roundingVar = added;
   rateLsb.keepsBaseLevel = added < 0.0;  // the rounding hides noise: g holds at the base's level
   rateLsb.zSpecial = kMaxScore;
@@ -50,6 +53,7 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   };
   Candidate carry = rateLsb;
   carry.carry = true;
+  carry.roundedRealisations = false;
   // Increment output with carry: AVAR = 3 Q^2 / tau^2, Q = q dt / sqrt(12) (IEEE 952 C).
   carry.g = ctx.shape([&](double t) { return q * q * dt * dt / (4.0 * t * t); });
   carry.evidence = ev + "; remainder carried (Allan slope -1)";
