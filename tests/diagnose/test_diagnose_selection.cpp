@@ -744,3 +744,23 @@ TEST_CASE("a warm-up beside a ramp keeps its own time constant", "[diagnose][sel
   CHECK(gm <= 1);
   CHECK(tauOk >= 9);
 }
+
+// A line far above the noise (1 deg/s at 1.0178 Hz beside white of 0.07 deg/s per sample; the
+// ADIS16405 run-2 injection of a 10x line on gy): on its Welch main lobe several bins test with
+// p = 0 (underflow), and they were taken lowest frequency first: the refinement window (+-1.5
+// bins) around the lobe's flank missed the peak, the line was fitted 0.018 Hz off with 6 % of
+// its amplitude, and a Gauss-Markov hump took the rest (3 of 3 seeds: `gauss_markov` first).
+// Equal p are now ordered by the bin's ratio to its neighbourhood: the lobe's peak first.
+// Frequency resolution 1/T = 0.0033 Hz; the amplitude's sd is ~0.07 sqrt(2/N) = 0.06 % of it.
+TEST_CASE("a line far above the noise is fitted at its own frequency", "[diagnose][selection]") {
+  for (std::uint64_t seed : {1900, 1901, 1902}) {
+    const auto r = simulate(kWhite + "    - {type: sinusoid, amplitude: 1 deg/s, frequency: 1.0178 Hz, phase: 0 deg}\n",
+                            kLineN, seed);
+    const auto d = dg::diagnose(r, errorModelFromString(kWhite, "base.yaml"), gxOnly(seed)).axis("gx");
+    INFO("seed " << seed << ": reported " << reportedList(d));
+    REQUIRE_FALSE(d.findings.empty());
+    CHECK(reportedList(d) == "sinusoid ");
+    CHECK(d.findings[0].params.at("frequency") == Approx(1.0178).margin(1e-3));
+    CHECK(d.findings[0].params.at("amplitude") == Approx(M_PI / 180).epsilon(0.01));
+  }
+}

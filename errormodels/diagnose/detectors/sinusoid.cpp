@@ -24,13 +24,19 @@ struct WelchLine {
 /// (bins k-12..k-3 and k+3..k+12; the Hann main lobe is +-2 bins), chi-square with the Welch EDF
 /// nu = 2 K / 1.056 (K segments, 50 % overlap Hann: Welch 1967, Percival & Walden 1993 eq. 292b),
 /// Bonferroni over the bins tested. Returns up to `count` bins beyond the limit, most significant
-/// first, each more than 3 bins from the ones before (a line's main lobe, or one red stretch).
+/// first (equal p, as where they underflow to 0 on a strong line's main lobe: the larger ratio
+/// first, the lobe's peak before its flanks), each more than 3 bins from the ones before (a line's
+/// main lobe, or one red stretch).
 std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
   const std::size_t nbins = p.psd.size();
   if (nbins < 40) return {};
   const double nu = 2.0 * double(p.segments) / 1.056;
   const double medFactor = std::pow(1 - 2 / (9 * nu), 3);  // median of chi2_nu / nu (Wilson-Hilferty)
-  std::vector<std::pair<double, std::size_t>> hits;  // (p of the bin, bin)
+  struct Hit {
+    double p, ratio;
+    std::size_t k;
+  };
+  std::vector<Hit> hits;  // (p of the bin, its ratio to the neighbourhood, bin)
   std::size_t tested = 0;
   for (std::size_t k = 3; k + 3 < nbins; ++k) {
     std::vector<double> nb;
@@ -45,12 +51,13 @@ std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
     ++tested;
     const double ratio = p.psd[k] / ref;
     if (ratio < 4) continue;
-    hits.push_back({regularizedGammaQ(nu / 2, ratio * nu / 2), k});  // P(chi2_nu / nu > ratio)
+    hits.push_back({regularizedGammaQ(nu / 2, ratio * nu / 2), ratio, k});  // P(chi2_nu / nu > ratio)
   }
-  std::sort(hits.begin(), hits.end());
+  std::sort(hits.begin(), hits.end(),
+            [](const Hit& a, const Hit& b) { return a.p != b.p ? a.p < b.p : a.ratio > b.ratio; });
   std::vector<WelchLine> out;
   std::vector<std::size_t> taken;
-  for (const auto& [pk, k] : hits) {
+  for (const auto& [pk, ratio, k] : hits) {
     const double pAll = std::min(1.0, double(tested) * pk);
     if (pAll >= 1 || out.size() >= count) break;
     bool near = false;
