@@ -117,10 +117,13 @@ def main():
 
 
 def first_new(found, plain, unexplained):
-    """The first finding that the plain window does not explain: an effect it lacks, or one it has
-    that now leads and did not (a stronger line than the stand's 0.564 Hz one, a GM that leads)."""
+    """The first finding that the plain window does not explain: an effect it lacks, one more of
+    an effect than it has (a second line beside the stand's 0.564 Hz one), or one it has that now
+    leads and did not (a stronger line, a GM that leads)."""
+    seen = Counter()
     for i, f in enumerate(found):
-        if f not in plain or (i == 0 and plain and plain[0] != f):
+        seen[f] += 1
+        if seen[f] > plain.count(f) or (i == 0 and plain and plain[0] != f):
             return f
     return "unexplained" if unexplained else "none"
 

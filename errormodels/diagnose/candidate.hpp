@@ -84,6 +84,13 @@ struct Candidate {
   /// (selection.cpp, revertingSteps) the steps are its realisation, and it is credited on the
   /// record with them.
   bool switching = false;
+  /// How many candidates of this effect a channel may accept: 1, or more for an effect whose
+  /// instances are distinct (a sinusoid's lines: each accepted one is taken out of the record and
+  /// the next proposed on what is left).
+  std::size_t maxAccepted = 1;
+  /// A sinusoid's frequency [Hz] (0 for every other effect): once accepted, no later line is
+  /// proposed within the Welch resolution of it (DetectorContext::linesTaken).
+  double lineFrequency = 0;
   /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
   std::function<void(double theta, Finding&)> describe;
 };

@@ -51,6 +51,9 @@ struct DetectorContext {
   /// What rounding onto `lattice` adds to the model's AVAR per factor, from the model's own
   /// realisations rounded (SeriesStats::roundedAvar); empty when not measured.
   std::vector<double> roundingAvar;
+  /// The frequencies of the sinusoid lines already taken out of y [Hz] (Candidate::lineFrequency
+  /// of the accepted ones): what is left near one is that line's own width, not another line.
+  std::vector<double> linesTaken;
 
   /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
   /// shape the record without the taken signals can still show. A coefficient on it is the joint
@@ -106,7 +109,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
                                        double lattice, const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects,
                                        const std::vector<std::vector<double>>& taken = {},
-                                       const std::vector<double>& roundingAvar = {});
+                                       const std::vector<double>& roundingAvar = {},
+                                       const std::vector<double>& linesTaken = {});
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"

@@ -137,10 +137,11 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
     }
   w.rounded = roundedScatter(real);
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3), rounding](
-                  const std::vector<double>& series, const std::vector<std::vector<double>>& taken) {
-    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding);
+                  const std::vector<double>& series, const std::vector<std::vector<double>>& taken,
+                  const std::vector<double>& linesTaken) {
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken);
   };
-  w.cands = w.propose(y, {});
+  w.cands = w.propose(y, {}, {});
   selectFindings(w, o.threshold);
   w.propose = nullptr;  // it refers to this call's record and setup
   return w;

@@ -65,6 +65,15 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
                         std::vector<std::string>& notes) {
   AllanSolution sol = solveAllan(w.prob, {}, {}, true);
   for (const auto& e : wanted) {
+    std::vector<const Candidate*> several;  // distinct instances accepted (a sinusoid's lines): each
+    for (auto i : w.accepted)
+      if (w.cands[i].effect == e) several.push_back(&w.cands[i]);
+    if (several.size() > 1) {
+      auto start = sol.theta;
+      for (const Candidate* c : several) set.push_back(c), start.push_back(-1.0);
+      sol = solveAllan(w.prob, set, start, true);
+      continue;
+    }
     const Candidate* bestC = nullptr;
     AllanSolution bestS;
     for (const auto& c : w.cands) {

@@ -29,7 +29,8 @@ struct ChannelWork {
   /// tested on what the first leaves (a temperature fit is not bent by spikes), beside the
   /// regressors of the signals taken out (`taken`, DetectorContext::taken).
   std::function<std::vector<Candidate>(const std::vector<double>& series,
-                                       const std::vector<std::vector<double>>& taken)>
+                                       const std::vector<std::vector<double>>& taken,
+                                       const std::vector<double>& linesTaken)>
       propose;
   std::vector<std::vector<double>> taken;
   /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal

@@ -245,7 +245,10 @@ void remeasure(ChannelWork& w, Trials& t) {
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
   for (std::size_t j = 0; j < cands.size(); ++j) w.accepted[j] = j;
-  for (auto& c : w.propose(x, w.taken)) cands.push_back(std::move(c));
+  std::vector<double> lines;
+  for (const auto& c : cands)
+    if (c.lineFrequency > 0) lines.push_back(c.lineFrequency);
+  for (auto& c : w.propose(x, w.taken, lines)) cands.push_back(std::move(c));
   w.cands = std::move(cands);
   t.resize(w.cands.size());
   markJumps(w, x);
@@ -274,9 +277,20 @@ TrendScatter trendVarWithNoise(const ChannelWork& w, const std::vector<const Can
   return bestVar;
 }
 
-/// Trial of every candidate whose effect is not accepted yet: added to the current set, the
-/// level and every free size refitted; drop = chi2 before - chi2 after + own evidence - penalty x
-/// parameters. On a record with jumps, the smaller of that drop and the same on the record without
+/// Whether candidate i may still be tried: not accepted, and its effect accepted fewer times than
+/// it may be (Candidate::maxAccepted).
+bool stillOpen(const ChannelWork& w, std::size_t i) {
+  std::size_t same = 0;
+  for (auto a : w.accepted) {
+    if (a == i) return false;
+    same += w.cands[a].effect == w.cands[i].effect;
+  }
+  return same < w.cands[i].maxAccepted;
+}
+
+/// Trial of every candidate still open (stillOpen: its effect not accepted yet, or one more line):
+/// added to the current set, the level and every free size refitted; drop = chi2 before - chi2
+/// after + own evidence - penalty x parameters. On a record with jumps, the smaller of that drop and the same on the record without
 /// its jumps (markJumps), unless the candidate's signal takes the jumps out. Returns the best, or
 /// -1 when none is left.
 std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const std::string& only = "") {
@@ -299,7 +313,7 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   }
   const auto v0 = lowFreqVarOf(w, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
-    if (taken.count(w.cands[i].effect) || !(only.empty() || w.cands[i].effect == only)) continue;
+    if (!stillOpen(w, i) || !(only.empty() || w.cands[i].effect == only)) continue;
     auto trial = set;
     trial.push_back(&w.cands[i]);
     auto start = w.sol.theta;
@@ -331,14 +345,11 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   return best;
 }
 
-/// One finding per effect not accepted (its best variant), by score.
+/// One finding per effect still open (its best variant; a further line of a sinusoid), by score.
 std::vector<Finding> otherFindings(const ChannelWork& w, const Trials& t) {
   std::vector<Finding> rest;
-  std::vector<double> drops;
-  std::set<std::string> taken;
-  for (auto i : w.accepted) taken.insert(w.cands[i].effect);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
-    if (taken.count(w.cands[i].effect)) continue;
+    if (!stillOpen(w, i)) continue;
     Finding f;
     f.effect = w.cands[i].effect;
     f.evidence = w.cands[i].evidence;
@@ -409,7 +420,7 @@ void restateSignals(ChannelWork& w) {
       const auto& s = w.cands[i].statedSignal();
       for (std::size_t k = 0; k < x.size() && k < s.size(); ++k) x[k] -= s[k];
     }
-    for (auto& n : w.propose(x, {}))
+    for (auto& n : w.propose(x, {}, {}))
       if (n.effect == c.effect && n.parameters == c.parameters) {
         c.describe = std::move(n.describe);
         c.stated = std::move(n.signal);

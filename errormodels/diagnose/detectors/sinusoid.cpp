@@ -256,6 +256,10 @@ WelchLine lowLineTest(const DetectorContext& ctx) {
   return {pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, double(bestJ) * ctx.record.rate_hz / double(n)};
 }
 
+/// Lines a channel may be found to have: each accepted one is taken out of the record and the next
+/// proposed on what is left (a test stand's line and a vibration's, harmonics).
+constexpr std::size_t kMaxLines = 8;
+
 }  // namespace
 
 std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
@@ -265,22 +269,32 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   // is the one whose smaller z is largest. A red continuum's lowest bins can be the most
   // significant by the Welch test and then fail the confirmation: the real line behind them (a
   // test stand's 0.564 Hz beside a 10x Gauss-Markov in the ADIS16405 injections) must not be lost.
+  // Near a line taken out already (within the Welch test's separation of 3 bins) what is left is
+  // that line's own width (a test stand's line wanders by a few 1/T over hours), not another line.
+  const double separation = 3.0 * ctx.record.rate_hz / double(ctx.setup.psdSegment);
+  auto nearTaken = [&](double f) {
+    return std::any_of(ctx.linesTaken.begin(), ctx.linesTaken.end(),
+                       [&](double t) { return std::fabs(f - t) <= separation; });
+  };
   double lineZ = 0, f0 = 0;
-  for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4)) {
+  for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4 + ctx.linesTaken.size())) {
     if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
+    if (nearTaken(line.freq)) continue;
     const LineWindow win = lineWindow(ctx, line.freq);
     const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
     const double f = refineFrequency(ctx, pg, win);
+    if (nearTaken(f)) continue;
     const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
     if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
   }
   // Below the Welch bins: the whole record's periodogram (lowLineTest), refined within one
   // Fourier spacing either side.
-  if (const WelchLine low = lowLineTest(ctx); low.z > lineZ) {
+  if (const WelchLine low = lowLineTest(ctx); low.z > lineZ && !nearTaken(low.freq)) {
     const double T = double(ctx.N) * ctx.dt;
     const LineWindow win{low.freq - 1.0 / T, low.freq + 1.0 / T};
     const LinePeriodogram pg(ctx, low.freq, 1.0 / T);
-    lineZ = low.z, f0 = refineFrequency(ctx, pg, win);
+    const double f = refineFrequency(ctx, pg, win);
+    if (!nearTaken(f)) lineZ = low.z, f0 = f;
   }
   if (!(f0 > 0)) return {};
   const Units& u = ctx.units;
@@ -296,6 +310,8 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   c.effect = "sinusoid";
   c.freeSize = false;
   c.parameters = 3;  // amplitude, frequency, phase
+  c.maxAccepted = kMaxLines;
+  c.lineFrequency = f0;
   c.g = allanVariance(sig, ctx.setup);
   c.signal = sig;
   c.zSpecial = lineZ;
