@@ -34,6 +34,11 @@ struct ModelNow {
   std::function<TrendScatter(const std::vector<double>& avar)> trendVarWith;
 };
 
+/// A sinusoid line: frequency [Hz] and amplitude [SI].
+struct Line {
+  double frequency = 0, amplitude = 0;
+};
+
 struct Candidate {
   std::string effect;          // catalogue type
   bool freeSize = true;        // theta fitted >= 0 (g per unit theta) or fixed (g absolute AVAR)
@@ -88,9 +93,9 @@ struct Candidate {
   /// instances are distinct (a sinusoid's lines: each accepted one is taken out of the record and
   /// the next proposed on what is left).
   std::size_t maxAccepted = 1;
-  /// A sinusoid's frequency [Hz] (0 for every other effect): once accepted, no later line is
-  /// proposed within the Welch resolution of it (DetectorContext::linesTaken).
-  double lineFrequency = 0;
+  /// A sinusoid's line (frequency 0 for every other effect): once accepted, no later line is
+  /// proposed where it is this one's own (DetectorContext::linesTaken).
+  Line line;
   /// Fills size/yaml/params of a finding given the fitted theta (ignored when fixed).
   std::function<void(double theta, Finding&)> describe;
 };

@@ -114,7 +114,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
                                        const std::vector<std::string>& modelEffects,
                                        const std::vector<std::vector<double>>& taken,
                                        const std::vector<double>& roundingAvar,
-                                       const std::vector<double>& linesTaken) {
+                                       const std::vector<Line>& linesTaken) {
   const std::size_t N = y.size();
   const double dt = 1.0 / record.rate_hz;
   double mean = 0;

@@ -51,9 +51,9 @@ struct DetectorContext {
   /// What rounding onto `lattice` adds to the model's AVAR per factor, from the model's own
   /// realisations rounded (SeriesStats::roundedAvar); empty when not measured.
   std::vector<double> roundingAvar;
-  /// The frequencies of the sinusoid lines already taken out of y [Hz] (Candidate::lineFrequency
-  /// of the accepted ones): what is left near one is that line's own width, not another line.
-  std::vector<double> linesTaken;
+  /// The sinusoid lines already taken out of y (Candidate::line of the accepted ones): what is
+  /// left near one is that line's own width or distortion, not another line.
+  std::vector<Line> linesTaken;
 
   /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
   /// shape the record without the taken signals can still show. A coefficient on it is the joint
@@ -110,7 +110,7 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
                                        const std::vector<std::string>& modelEffects,
                                        const std::vector<std::vector<double>>& taken = {},
                                        const std::vector<double>& roundingAvar = {},
-                                       const std::vector<double>& linesTaken = {});
+                                       const std::vector<Line>& linesTaken = {});
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"

@@ -138,7 +138,7 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   w.rounded = roundedScatter(real);
   w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3), rounding](
                   const std::vector<double>& series, const std::vector<std::vector<double>>& taken,
-                  const std::vector<double>& linesTaken) {
+                  const std::vector<Line>& linesTaken) {
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken);
   };
   w.cands = w.propose(y, {}, {});

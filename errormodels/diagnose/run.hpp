@@ -30,7 +30,7 @@ struct ChannelWork {
   /// regressors of the signals taken out (`taken`, DetectorContext::taken).
   std::function<std::vector<Candidate>(const std::vector<double>& series,
                                        const std::vector<std::vector<double>>& taken,
-                                       const std::vector<double>& linesTaken)>
+                                       const std::vector<Line>& linesTaken)>
       propose;
   std::vector<std::vector<double>> taken;
   /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal

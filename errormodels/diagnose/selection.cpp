@@ -245,9 +245,9 @@ void remeasure(ChannelWork& w, Trials& t) {
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
   for (std::size_t j = 0; j < cands.size(); ++j) w.accepted[j] = j;
-  std::vector<double> lines;
+  std::vector<Line> lines;
   for (const auto& c : cands)
-    if (c.lineFrequency > 0) lines.push_back(c.lineFrequency);
+    if (c.line.frequency > 0) lines.push_back(c.line);
   for (auto& c : w.propose(x, w.taken, lines)) cands.push_back(std::move(c));
   w.cands = std::move(cands);
   t.resize(w.cands.size());

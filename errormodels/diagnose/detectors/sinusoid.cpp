@@ -259,6 +259,10 @@ WelchLine lowLineTest(const DetectorContext& ctx) {
 /// Lines a channel may be found to have: each accepted one is taken out of the record and the next
 /// proposed on what is left (a test stand's line and a vibration's, harmonics).
 constexpr std::size_t kMaxLines = 8;
+/// A later line at a harmonic k = 2..kHarmonics of a line taken, below kHarmonicShare of its
+/// amplitude, is that line's distortion.
+constexpr int kHarmonics = 50;
+constexpr double kHarmonicShare = 0.25;
 
 }  // namespace
 
@@ -270,31 +274,40 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   // significant by the Welch test and then fail the confirmation: the real line behind them (a
   // test stand's 0.564 Hz beside a 10x Gauss-Markov in the ADIS16405 injections) must not be lost.
   // Near a line taken out already (within the Welch test's separation of 3 bins) what is left is
-  // that line's own width (a test stand's line wanders by a few 1/T over hours), not another line.
+  // that line's own width (a test stand's line wanders by a few 1/T over hours), not another line;
+  // so is a much weaker line at one of its harmonics (folded at Nyquist): the distortion of a
+  // strong line rounded onto a lattice (odd harmonics at 3-8 % of it) or of a nonlinear source.
   const double separation = 3.0 * ctx.record.rate_hz / double(ctx.setup.psdSegment);
-  auto nearTaken = [&](double f) {
-    return std::any_of(ctx.linesTaken.begin(), ctx.linesTaken.end(),
-                       [&](double t) { return std::fabs(f - t) <= separation; });
+  auto nearTaken = [&](double f, double amplitude) {
+    const double fs = ctx.record.rate_hz;
+    for (const Line& t : ctx.linesTaken) {
+      if (std::fabs(f - t.frequency) <= separation) return true;
+      if (!(amplitude < kHarmonicShare * t.amplitude)) continue;
+      for (int k = 2; k <= kHarmonics; ++k) {
+        const double h = std::fmod(k * t.frequency, fs), folded = std::min(h, fs - h);
+        if (std::fabs(f - folded) <= separation) return true;
+      }
+    }
+    return false;
   };
   double lineZ = 0, f0 = 0;
   for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4 + ctx.linesTaken.size())) {
     if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
-    if (nearTaken(line.freq)) continue;
     const LineWindow win = lineWindow(ctx, line.freq);
     const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
     const double f = refineFrequency(ctx, pg, win);
-    if (nearTaken(f)) continue;
+    if (!ctx.linesTaken.empty() && nearTaken(f, std::sqrt(pg.power(f, ctx.N)))) continue;
     const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
     if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
   }
   // Below the Welch bins: the whole record's periodogram (lowLineTest), refined within one
   // Fourier spacing either side.
-  if (const WelchLine low = lowLineTest(ctx); low.z > lineZ && !nearTaken(low.freq)) {
+  if (const WelchLine low = lowLineTest(ctx); low.z > lineZ) {
     const double T = double(ctx.N) * ctx.dt;
     const LineWindow win{low.freq - 1.0 / T, low.freq + 1.0 / T};
     const LinePeriodogram pg(ctx, low.freq, 1.0 / T);
     const double f = refineFrequency(ctx, pg, win);
-    if (!nearTaken(f)) lineZ = low.z, f0 = f;
+    if (ctx.linesTaken.empty() || !nearTaken(f, std::sqrt(pg.power(f, ctx.N)))) lineZ = low.z, f0 = f;
   }
   if (!(f0 > 0)) return {};
   const Units& u = ctx.units;
@@ -311,7 +324,7 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   c.freeSize = false;
   c.parameters = 3;  // amplitude, frequency, phase
   c.maxAccepted = kMaxLines;
-  c.lineFrequency = f0;
+  c.line = {f0, At};
   c.g = allanVariance(sig, ctx.setup);
   c.signal = sig;
   c.zSpecial = lineZ;
