@@ -65,10 +65,13 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
                         std::vector<std::string>& notes) {
   AllanSolution sol = solveAllan(w.prob, {}, {}, true);
   for (const auto& e : wanted) {
-    std::vector<const Candidate*> several;  // distinct instances accepted (a sinusoid's lines): each
+    // An effect with distinct instances (a sinusoid's lines): the lines accepted, each. The next
+    // line proposed after them (not accepted: below the threshold, or another line's harmonic) is
+    // no variant of theirs to choose instead.
+    std::vector<const Candidate*> several;
     for (auto i : w.accepted)
       if (w.cands[i].effect == e) several.push_back(&w.cands[i]);
-    if (several.size() > 1) {
+    if (!several.empty() && several.front()->maxAccepted > 1) {
       auto start = sol.theta;
       for (const Candidate* c : several) set.push_back(c), start.push_back(-1.0);
       sol = solveAllan(w.prob, set, start, true);
