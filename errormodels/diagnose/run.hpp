@@ -57,6 +57,9 @@ struct ChannelWork {
   /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
   double lattice = 0;
   std::vector<char> explainsJumps;
+  /// Per candidate with a signal that takes most of the steps out but not all: ln AVAR of the
+  /// record without the steps left once its signal is taken out (empty otherwise).
+  std::vector<std::vector<double>> ownJumpFreeL;
   /// The Allan problem's weight and bias under the realisations rounded onto the record's lattice
   /// (empty when they were not rounded): the problem's once a rounding of them is accepted.
   RoundedScatter rounded;

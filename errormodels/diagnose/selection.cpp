@@ -187,17 +187,32 @@ bool revertingSteps(const std::vector<LevelStep>& jumps) {
   return changes >= 4;
 }
 
-/// w.steps, w.jumpFreeL and w.explainsJumps for the series x (the record without the accepted
-/// signals). A level jump (a bias step, a telegraph switch, a disturbance of the test stand) is no
-/// effect of the catalogue, and every candidate's Allan shape can absorb part of its excess: a
-/// single step has exactly a random walk's Allan variance, a telegraph's switches make a ramp's
-/// slope. So on a record with jumps a candidate is credited only with what it explains on the
-/// record with the jumps taken out as well (trialRound) -- unless its own signal takes them out.
+/// Sum of squared deviations from the mean of a piecewise-constant step series.
+double spread(const std::vector<double>& s) {
+  double m = 0, ss = 0;
+  for (double v : s) m += v / double(s.size());
+  for (double v : s) ss += (v - m) * (v - m);
+  return ss;
+}
+
+/// w.steps, w.jumpFreeL, w.explainsJumps and w.ownJumpFreeL for the series x (the record without
+/// the accepted signals). A level jump (a bias step, a telegraph switch, a disturbance of the test
+/// stand) is no effect of the catalogue, and every candidate's Allan shape can absorb part of its
+/// excess: a single step has exactly a random walk's Allan variance, a telegraph's switches make a
+/// ramp's slope. So on a record with jumps a candidate is credited only with what it explains on
+/// the record with the jumps taken out as well (trialRound) -- unless its own signal takes them
+/// out. A signal that takes most of them out (what its removal leaves of the steps' variance is
+/// less than half: a settling the step test cut into pieces, beside the sensor's own blips) is
+/// credited on the record without the steps that remain once it is taken out: the steps found on
+/// the record are then mostly its own shape. (Every other candidate is judged on one record
+/// without the same steps: on a record of its own, left with more excess, any Allan term could
+/// gain more.)
 void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeL.clear();
   w.lowFreqCoef = lowFrequencyCoefficients(x, w.lowFreq);
   w.jumpFreeCoef.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
+  w.ownJumpFreeL.assign(w.cands.size(), {});
   const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
   w.steps = stepSeries(w, x, modelAvar);
   const auto& steps = w.steps;
@@ -221,7 +236,13 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
     }
     if (sig.size() != x.size()) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - sig[k];
-    w.explainsJumps[i] = stepSeries(w, r, modelAvar, 1).empty();
+    const auto left = stepSeries(w, r, modelAvar);
+    w.explainsJumps[i] = left.empty();
+    if (left.empty() || !(spread(left) < 0.5 * spread(steps))) continue;
+    for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - left[k];
+    const auto own = allanVariance(r, s);
+    w.ownJumpFreeL[i].resize(own.size());
+    for (std::size_t k = 0; k < own.size(); ++k) w.ownJumpFreeL[i][k] = std::log(std::max(own[k], 1e-300));
   }
 }
 
@@ -330,14 +351,21 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
     t.drop[i] = w.sol.chi2 - t.sol[i].chi2 + own + lowFreqGain(w, w.lowFreqCoef, v0, w.cands[i], trial, t.sol[i]);
     if (!w.jumpFreeL.empty() && !w.explainsJumps[i]) {
       AllanProblem p = t.refit[i] ? refitProblem : jumpFree;
-      p.L = w.jumpFreeL;
+      const auto& ownL = w.ownJumpFreeL[i];
+      double before = chi2JumpFree;
+      if (!ownL.empty()) {  // the record without the steps its signal leaves (markJumps)
+        AllanProblem b = jumpFree;
+        b.L = ownL;
+        before = solveAllan(b, set, w.sol.theta).chi2;
+      }
+      p.L = ownL.empty() ? w.jumpFreeL : ownL;
       const auto jf = solveAllan(p, trial, start);
       // A signal's coefficients are not taken out of the record without steps: the steps may
       // already hold part of it (a warm-up's start); there it is credited by the Allan terms alone.
       const double gain = w.cands[i].signal.empty()
                               ? lowFreqGain(w, w.jumpFreeCoef, lowFreqVarOf(w, set, jumpFreeSol), w.cands[i], trial, jf)
                               : 0.0;
-      t.drop[i] = std::min(t.drop[i], chi2JumpFree - jf.chi2 + own + gain);
+      t.drop[i] = std::min(t.drop[i], before - jf.chi2 + own + gain);
     }
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
     if (best < 0 || t.drop[i] > t.drop[std::size_t(best)]) best = std::ptrdiff_t(i);
