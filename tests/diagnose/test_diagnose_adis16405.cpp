@@ -11,6 +11,7 @@
 
 #include "../test_support.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
+#include "../adis16405_records.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
@@ -25,10 +26,7 @@ TEST_CASE("ADIS16405 run 1: --add found on a fitted GM model writes an improved 
     WARN("ADIS16405 data not found at " << data << ": skipped");
     return;
   }
-  RecordOptions ro;
-  ro.rate_hz = 100.0;
-  ro.gyro_unit = "deg/s";
-  ro.accel_unit = "g";
+  const RecordOptions ro = sinsim::test::adisOptions();
   const Record record = loadRecord(data, ro);
   // The channel of the report (ax) and the gyro whose fit is the least consistent (gz).
   IdentifyOptions io;
@@ -68,12 +66,7 @@ TEST_CASE("ADIS16405 run 2: a warm-up cut into level steps is still found", "[di
     WARN("ADIS16405 data not found at " << data << ": skipped");
     return;
   }
-  RecordOptions ro;
-  ro.rate_hz = 100.0;
-  ro.gyro_unit = "deg/s";
-  ro.accel_unit = "g";
-  ro.skip_s = 600.0;
-  ro.duration_s = 1000.0;
+  const RecordOptions ro = sinsim::test::adisOptions(600.0, 1000.0);
   Record record = loadRecord(data, ro);
   IdentifyOptions io;
   io.kind = IdentifyKind::Gm;

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <string>
 
+#include "../adis16405_records.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/stats/special.hpp"
 
@@ -26,10 +27,7 @@ TEST_CASE("ADIS16405: run-1 model predicts run-2 gyro Allan curve, 10-82 s", "[i
     WARN("ADIS16405 data not found in " << dir << ": skipped");
     return;
   }
-  RecordOptions ro;
-  ro.rate_hz = 100.0;
-  ro.gyro_unit = "deg/s";
-  ro.accel_unit = "g";
+  const RecordOptions ro = sinsim::test::adisOptions();
   IdentifyOptions o;
   o.axes = {"gx", "gy", "gz"};
   o.skipStart = 600.0;  // the warm-up drift of the first 5-10 min (data README)
@@ -81,10 +79,7 @@ TEST_CASE("ADIS16405: run-1 model predicts run-2 gyro Allan curve, 10-82 s", "[i
 namespace {
 
 Identification gmFit(const std::string& file) {
-  RecordOptions ro;
-  ro.rate_hz = 100.0;
-  ro.gyro_unit = "deg/s";
-  ro.accel_unit = "g";
+  const RecordOptions ro = sinsim::test::adisOptions();
   IdentifyOptions o;
   o.kind = IdentifyKind::Gm;
   o.skipStart = 600.0;
@@ -159,12 +154,7 @@ TEST_CASE("ADIS16405 windows: the GM model keeps the record's short-tau noise", 
     return;
   }
   for (const char* run : {"run1.csv.gz", "run2.csv.gz"}) {
-    RecordOptions ro;
-    ro.rate_hz = 100.0;
-    ro.gyro_unit = "deg/s";
-    ro.accel_unit = "g";
-    ro.skip_s = 600.0;
-    ro.duration_s = 1000.0;
+    const RecordOptions ro = sinsim::test::adisOptions(600.0, 1000.0);
     IdentifyOptions o;
     o.kind = IdentifyKind::Gm;
     const Identification id = identify(loadRecord(dir + run, ro), o);
