@@ -496,6 +496,14 @@ void selectFindings(ChannelWork& w, double threshold) {
     const Candidate& c = w.cands[std::size_t(best)];
     w.accepted.push_back(std::size_t(best));
     w.sol = t.sol[std::size_t(best)];
+    if (c.roundedRealisations && w.rounded.W.size() > 0) {
+      // The rounded model's Allan estimates scatter as its rounded realisations' do (more where
+      // few samples leave their cell): later trials are weighed with that scatter.
+      w.prob.W = w.rounded.W;
+      w.prob.bias = w.rounded.bias;
+      w.sol = solveAllan(w.prob, allanSet(w), w.sol.theta);
+    }
+    // c refers into w.cands, which remeasure() replaces: not used after it.
     if (!c.signal.empty()) {  // taken out of the record (and the AR base refitted without it)
       if (w.arOrder > 0) {
         std::vector<double> av;
@@ -510,13 +518,6 @@ void selectFindings(ChannelWork& w, double threshold) {
       auto start = w.sol.theta;
       start.pop_back();
       w.sol = solveAllan(w.prob, allanSet(w), start);
-    }
-    if (c.roundedRealisations && w.rounded.W.size() > 0) {
-      // The rounded model's Allan estimates scatter as its rounded realisations' do (more where
-      // few samples leave their cell): later trials are weighed with that scatter.
-      w.prob.W = w.rounded.W;
-      w.prob.bias = w.rounded.bias;
-      w.sol = solveAllan(w.prob, allanSet(w), w.sol.theta);
     }
     d.findings.push_back(f);
   }
