@@ -187,6 +187,17 @@ bool revertingSteps(const std::vector<LevelStep>& jumps) {
   return changes >= 4;
 }
 
+/// ln AVAR of a series of this channel on its tau grid (the Allan problem's L).
+std::vector<double> lnAvarOf(const ChannelWork& w, const std::vector<double>& x) {
+  Setup s;
+  s.rate = w.rate;
+  s.n = x.size();
+  s.factors = w.factors;
+  auto av = allanVariance(x, s);
+  for (auto& v : av) v = std::log(std::max(v, 1e-300));
+  return av;
+}
+
 /// Sum of squared deviations from the mean of a piecewise-constant step series.
 double spread(const std::vector<double>& s) {
   double m = 0, ss = 0;
@@ -219,14 +230,8 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   if (steps.empty()) return;
   std::vector<double> r(x.size());
   for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - steps[k];
-  Setup s;
-  s.rate = w.rate;
-  s.n = x.size();
-  s.factors = w.factors;
-  const auto av = allanVariance(r, s);
   w.jumpFreeCoef = lowFrequencyCoefficients(r, w.lowFreq);
-  w.jumpFreeL.resize(av.size());
-  for (std::size_t k = 0; k < av.size(); ++k) w.jumpFreeL[k] = std::log(std::max(av[k], 1e-300));
+  w.jumpFreeL = lnAvarOf(w, r);
   const bool reverting = revertingSteps(jumpsOf(steps, w.rate));
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     const auto& sig = w.cands[i].signal;
@@ -240,9 +245,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
     w.explainsJumps[i] = left.empty();
     if (left.empty() || !(spread(left) < 0.5 * spread(steps))) continue;
     for (std::size_t k = 0; k < x.size(); ++k) r[k] = x[k] - left[k];
-    const auto own = allanVariance(r, s);
-    w.ownJumpFreeL[i].resize(own.size());
-    for (std::size_t k = 0; k < own.size(); ++k) w.ownJumpFreeL[i][k] = std::log(std::max(own[k], 1e-300));
+    w.ownJumpFreeL[i] = lnAvarOf(w, r);
   }
 }
 
@@ -256,12 +259,7 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
 void remeasure(ChannelWork& w, Trials& t) {
   std::vector<double> x = *w.y;
   for (std::size_t k = 0; k < x.size(); ++k) x[k] -= w.removed[k];
-  Setup s;
-  s.rate = w.rate;
-  s.n = x.size();
-  s.factors = w.factors;
-  const auto av = allanVariance(x, s);
-  for (std::size_t k = 0; k < av.size(); ++k) w.prob.L[k] = std::log(std::max(av[k], 1e-300));
+  w.prob.L = lnAvarOf(w, x);
   if (!w.propose) return markJumps(w, x);
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
