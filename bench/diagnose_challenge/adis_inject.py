@@ -7,7 +7,12 @@ composite fit) and the plain window diagnosed: its reported findings are what th
 already shows. Then, per record, one effect of the catalogue or from outside it is added to one
 channel, sized k x the channel's own ADEV where the effect's is largest (generate.scale_to,
 k in 1.5, 3, 6, 10), the result put back on the sensor's LSB lattice (the ADIS16405 outputs
-0.05 deg/s and 3.33 mg steps), and diagnosed against the same model. An effect counts as found
+0.05 deg/s and 3.33 mg steps), and diagnosed against the same model. Where in its LSB cell the
+sensor's value was before rounding is not in the record: each sample is placed at a uniformly
+drawn point of its cell (one draw for the whole run, so the plain window rounds back to itself),
+the effect added there, and the sum rounded, as the converter rounds an effect that is there
+before it. (Rounding the recorded value plus the effect instead returns the plain window exactly
+for an effect below half an LSB: a 1.5-3x line on an accelerometer was no injection at all.) An effect counts as found
 when it is the first reported finding that the plain window does not have on that channel.
 
     /usr/bin/python3 bench/diagnose_challenge/adis_inject.py --sinsim build/sinsim --work out/adis
@@ -90,6 +95,9 @@ def main():
     print("plain window: " + "; ".join(f"{c} {v['findings']}" for c, v in ref.items()))
     t = np.arange(1, n + 1) / FS
     temp = 25.0 + np.zeros(n)
+    # the values before rounding: a uniform point of each sample's LSB cell (module docstring)
+    cell = np.random.default_rng([a.seed, 1 << 20]).uniform(-0.5, 0.5, size=base.shape)
+    cell *= np.array([LSB[ch[0]] for ch in g.CHANNELS])
     rows, i = [], 0
     for rep in range(a.repeats):
         for name in EFFECTS:
@@ -102,7 +110,7 @@ def main():
                 e, info = g.unit_effect(rng, name, n, FS, t, temp)
                 rec = base.copy()
                 lsb = LSB[ch[0]]
-                rec[:, c] = np.round((base[:, c] + e * g.scale_to(e, x, FS, k)) / lsb) * lsb
+                rec[:, c] = np.round((base[:, c] + cell[:, c] + e * g.scale_to(e, x, FS, k)) / lsb) * lsb
                 path = os.path.join(a.work, f"i{i:03d}.csv")
                 write(path, rec)
                 res = diagnose(a, path, model, path[:-4] + ".json")
