@@ -12,8 +12,9 @@ sensor's value was before rounding is not in the record: each sample is placed a
 drawn point of its cell (one draw for the whole run, so the plain window rounds back to itself),
 the effect added there, and the sum rounded, as the converter rounds an effect that is there
 before it. (Rounding the recorded value plus the effect instead returns the plain window exactly
-for an effect below half an LSB: a 1.5-3x line on an accelerometer was no injection at all.) An effect counts as found
-when it is the first reported finding that the plain window does not have on that channel.
+for an effect below half an LSB: a 1.5-3x line on an accelerometer was no injection at all.) An
+effect counts as found when it is the first reported finding that the plain window does not have
+on that channel.
 
     /usr/bin/python3 bench/diagnose_challenge/adis_inject.py --sinsim build/sinsim --work out/adis
 """
