@@ -470,7 +470,6 @@ void restateSignals(ChannelWork& w) {
 void dropRedundant(ChannelWork& w, double penalty, Trials& t, std::vector<Finding>& findings) {
   for (;;) {
     const auto set = allanSet(w);
-    const double lowFreqNow = w.lowFreqCoef.empty() ? 0.0 : lowFrequencyNll(w.lowFreqCoef, lowFreqVarOf(w, set, w.sol), w.trendDof);
     std::ptrdiff_t worst = -1;  // position in w.accepted
     double worstLoss = 0.0;
     AllanSolution worstSol;
@@ -483,9 +482,9 @@ void dropRedundant(ChannelWork& w, double penalty, Trials& t, std::vector<Findin
         if (b != a) reduced.push_back(set[b]), start.push_back(w.sol.theta[b]);
       ++a;
       auto sol = solveAllan(w.prob, reduced, start);
-      const double lowFreqRise =
-          w.lowFreqCoef.empty() ? 0.0 : lowFrequencyNll(w.lowFreqCoef, lowFreqVarOf(w, reduced, sol), w.trendDof) - lowFreqNow;
-      const double loss = sol.chi2 - w.sol.chi2 + lowFreqRise + c.zSpecial * c.zSpecial - penalty * double(c.parameters);
+      // the trial's drop of c added to the set without it (trialRound), with c in the set as it is
+      const double loss = sol.chi2 - w.sol.chi2 + lowFreqGain(w, w.lowFreqCoef, lowFreqVarOf(w, reduced, sol), c, set, w.sol) +
+                          c.zSpecial * c.zSpecial - penalty * double(c.parameters);
       if (loss < worstLoss) worstLoss = loss, worst = std::ptrdiff_t(j), worstSol = std::move(sol);
     }
     if (worst < 0) return;
