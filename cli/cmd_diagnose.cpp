@@ -37,6 +37,7 @@ struct DiagnoseArgs {
   std::uint64_t seed = 20240505;
   unsigned threads = 0;
   double threshold = errormodels::diagnose::DiagnoseOptions{}.threshold;
+  double nextThreshold = errormodels::diagnose::DiagnoseOptions{}.nextThreshold;
 };
 
 int diagnoseAndWrite(const DiagnoseArgs& a);
@@ -78,6 +79,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   o.seed = a.seed;
   o.threads = a.threads;
   o.threshold = a.threshold;
+  o.nextThreshold = a.nextThreshold;
   std::vector<dg::AddRequest> adds;
   for (const auto& s : a.add) adds.push_back(dg::AddRequest::parse(s));
   if (!adds.empty() && !a.edited.empty()) throw InputError("give either --add or --edited, not both");
@@ -149,6 +151,9 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
                 "initial-bias removal of the verdict's runs and replay, e.g. \"60 s\" (default "
                 "min(60 s, 10 % of the replay); 0: none, as mc SCENARIO by default)");
   c->add_option("--threshold", a->threshold, "reporting threshold on the score (default: calibrated on null channels, docs/diagnose.md)");
+  c->add_option("--next-threshold", a->nextThreshold,
+                "threshold of a further finding on a channel that has one (default: calibrated on one-effect channels; "
+                "at most --threshold)");
   c->callback([a, nav, &action] {
     a->nav = nav->count() > 0;
     action = [a] { return runDiagnose(*a); };

@@ -103,7 +103,7 @@ py::dict findingDict(const em::diagnose::Finding& f, const std::string& channel)
 
 py::dict diagnose(const py::object& record, const py::object& model,
                   const std::vector<std::string>& channels, std::size_t realisations,
-                  std::uint64_t seed, unsigned threads, double threshold,
+                  std::uint64_t seed, unsigned threads, double threshold, double nextThreshold,
                   const std::optional<std::string>& gyroUnit,
                   const std::optional<std::string>& accelUnit, std::optional<double> rate) {
   namespace dg = em::diagnose;
@@ -115,6 +115,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
   o.seed = seed;
   o.threads = threads;
   o.threshold = threshold;
+  o.nextThreshold = nextThreshold;
   std::optional<dg::Diagnosis> d;
   {
     py::gil_scoped_release release;
@@ -129,7 +130,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
                             py::arg("to") = f.to, py::arg("direction") = f.direction,
                             py::arg("worst_ratio") = f.worstRatio));
     py::dict ax;
-    ax["fits"] = a.fits(d->threshold);
+    ax["fits"] = a.fits();
     ax["misfit"] = a.misfit;
     ax["chi2"] = a.chi2;
     ax["fraction_outside"] = a.fractionOutside;
@@ -171,6 +172,7 @@ void bindIdentify(py::module_& mod) {
           py::arg("channels") = std::vector<std::string>{}, py::arg("realisations") = 32,
           py::arg("seed") = em::diagnose::DiagnoseOptions{}.seed, py::arg("threads") = 0,
           py::arg("threshold") = em::diagnose::DiagnoseOptions{}.threshold,
+          py::arg("next_threshold") = em::diagnose::DiagnoseOptions{}.nextThreshold,
           py::arg("gyro_unit") = py::none(), py::arg("accel_unit") = py::none(),
           py::arg("rate") = py::none(),
           "sinsim diagnose: compares a model with a record; findings per channel");

@@ -74,10 +74,11 @@ Plot acfPlot(const dg::AxisDiagnosis& a) {
   return p;
 }
 
-Table findingsTable(const dg::AxisDiagnosis& a, double threshold) {
+Table findingsTable(const dg::AxisDiagnosis& a, double threshold, double next) {
   Table t;
   t.header = {"effect", "score", "fitted size", "evidence", "model-file line"};
-  t.caption = "Candidate effects for " + a.channel + " (reported when score ≥ " + fmt(threshold) + ")";
+  t.caption = "Candidate effects for " + a.channel + " (reported when score ≥ " + fmt(threshold) +
+              ", a further effect ≥ " + fmt(next) + ")";
   for (const auto& f : a.findings) {
     const bool rep = f.reported;
     t.rows.push_back({Cell(f.effect, rep ? "fail" : "muted"), Cell(fmt(f.score, 3), rep ? "num fail" : "num muted"),
@@ -87,8 +88,8 @@ Table findingsTable(const dg::AxisDiagnosis& a, double threshold) {
   return t;
 }
 
-std::string verdict(const dg::AxisDiagnosis& a, double threshold) {
-  if (a.fits(threshold)) return "fits";
+std::string verdict(const dg::AxisDiagnosis& a) {
+  if (a.fits()) return "fits";
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "missing: " : ", ") + f.effect;
@@ -121,8 +122,8 @@ void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* im
   if (imp) {
     std::string still;
     for (const auto& a : imp->after.axes)
-      if (!a.fits(d.threshold))
-        still += (still.empty() ? "" : "; ") + a.channel + " (" + verdict(a, d.threshold) +
+      if (!a.fits())
+        still += (still.empty() ? "" : "; ") + a.channel + " (" + verdict(a) +
                  ", misfit " + fmt(a.misfit) + ", " + fmt(100 * a.fractionOutside, 2) +
                  " % of τ outside the band)";
     page.paragraph(still.empty() ? "After the additions every channel fits."
@@ -138,7 +139,7 @@ void nextSteps(HtmlPage& page, const dg::Diagnosis& d, const dg::Improvement* im
   }
   bool anyFail = false, anyFound = false;
   for (const auto& a : d.axes) {
-    anyFail = anyFail || !a.fits(d.threshold);
+    anyFail = anyFail || !a.fits();
     for (const auto& f : a.findings) anyFound = anyFound || f.reported;
   }
   if (!anyFail)
@@ -186,12 +187,12 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
   Table overview;
   overview.header = {"channel", "misfit", "τ outside band", "χ² / points", "Ljung-Box p", "verdict"};
   for (const auto& a : d.axes) {
-    const bool ok = a.fits(d.threshold);
+    const bool ok = a.fits();
     overview.rows.push_back({Cell(a.channel), Cell(fmt(a.misfit), "num"),
                              Cell(fmt(100 * a.fractionOutside, 3) + " %", ok ? "num pass" : "num fail"),
                              Cell(fmt(a.chi2, 4) + " / " + std::to_string(a.chi2Points), "num"),
                              Cell(a.ljungBox ? fmt(a.ljungBox->pValue, 2) : "–", "num"),
-                             Cell(verdict(a, d.threshold), ok ? "pass" : "fail")});
+                             Cell(verdict(a), ok ? "pass" : "fail")});
   }
   page.table(overview);
   if (imp) {
@@ -214,7 +215,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
   if (nav) navSection(page, *nav);
   if (command) nextSteps(page, d, imp, *command);
   for (const auto& a : d.axes) {
-    page.heading(a.channel + " — " + verdict(a, d.threshold) + " (misfit " + fmt(a.misfit) + ")", 2);
+    page.heading(a.channel + " — " + verdict(a) + " (misfit " + fmt(a.misfit) + ")", 2);
     std::string fails;
     for (const auto& r : a.fails)
       fails += (fails.empty() ? "" : "; ") + r.statistic + " " + fmt(r.from) + "–" + fmt(r.to) +
@@ -224,7 +225,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
                                  : "Where it fails: " + fails + ".");
     page.plotRow({adevPlot(a, "Allan deviation — " + a.channel), psdPlot(a)});
     page.plotRow({acfPlot(a)});
-    page.table(findingsTable(a, d.threshold));
+    page.table(findingsTable(a, d.threshold, d.nextThreshold));
     for (const std::string& u : dg::unexplainedSentences(a)) page.paragraph("Unexplained: " + u + ".");
     if (const std::string s = dg::switchingSentence(a); !s.empty()) page.paragraph("Level steps: " + s + ".");
     if (imp) {

@@ -52,10 +52,10 @@ AddRequest AddRequest::parse(const std::string& text) {
   return r;
 }
 
-bool AxisDiagnosis::fits(double threshold) const {
+bool AxisDiagnosis::fits() const {
   if (!unexplainedSteps.empty()) return false;
   for (const auto& f : findings)
-    if (f.reported && f.score >= threshold) return false;
+    if (f.reported) return false;
   // and the Allan chi-square below its 0.999 quantile
   return chi2Points == 0 || chi2 < chiSquareQuantile(0.999, double(chi2Points));
 }
@@ -142,7 +142,7 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken);
   };
   w.cands = w.propose(y, {}, {});
-  selectFindings(w, o.threshold);
+  selectFindings(w, o.threshold, std::min(o.nextThreshold, o.threshold));
   w.propose = nullptr;  // it refers to this call's record and setup
   return w;
 }
@@ -157,6 +157,8 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
                      std::to_string(o.realisations));
   if (!(std::isfinite(o.threshold) && o.threshold > 0))
     throw InputError("--threshold: expected a positive score");
+  if (!(std::isfinite(o.nextThreshold) && o.nextThreshold > 0))
+    throw InputError("--next-threshold: expected a positive score");
   if (!(o.bandLevel > 0 && o.bandLevel < 1)) throw InputError("band level must be in (0, 1)");
   if (record.rows < 256) throw InputError(record.source + ": at least 256 samples are needed");
   const std::vector<int> channels = channelsToDiagnose(record, o);
@@ -186,6 +188,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.samples = record.rows;
   run.d.realisations = o.realisations;
   run.d.threshold = o.threshold;
+  run.d.nextThreshold = std::min(o.nextThreshold, o.threshold);
   run.d.bandLevel = o.bandLevel;
   // Channels are independent (each its own series, statistics and candidates): on worker
   // threads, each result in its channel's slot, so the diagnosis is the same for any thread count.

@@ -39,7 +39,7 @@ nlohmann::json findingsJson(const AxisDiagnosis& a) {
   return j;
 }
 
-nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
+nlohmann::json axisJson(const AxisDiagnosis& a) {
   nlohmann::json j;
   j["channel"] = a.channel;
   j["misfit"] = a.misfit;
@@ -49,7 +49,7 @@ nlohmann::json axisJson(const AxisDiagnosis& a, double threshold) {
   j["chi2"] = a.chi2;
   j["chi2_points"] = a.chi2Points;
   j["noise_scale"] = a.noiseScale;
-  j["fits"] = a.fits(threshold);
+  j["fits"] = a.fits();
   j["chi2_selected"] = a.chi2Selected;
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained
   for (const auto& st : a.unexplainedSteps)  // absent: no level step left
@@ -77,9 +77,10 @@ nlohmann::json diagnosisJson(const Diagnosis& d) {
   j["samples"] = d.samples;
   j["realisations"] = d.realisations;
   j["threshold"] = d.threshold;
+  j["next_threshold"] = d.nextThreshold;
   j["band_level"] = d.bandLevel;
   j["axes"] = nlohmann::json::array();
-  for (const auto& a : d.axes) j["axes"].push_back(axisJson(a, d.threshold));
+  for (const auto& a : d.axes) j["axes"].push_back(axisJson(a));
   return j;
 }
 
@@ -97,7 +98,7 @@ nlohmann::json toJsonValue(const Improvement& imp) {
   j["notes"] = imp.notes;
   j["axes"] = nlohmann::json::array();
   for (const auto& ch : imp.changes) {
-    nlohmann::json a = axisJson(imp.before.axis(ch.channel), imp.before.threshold);
+    nlohmann::json a = axisJson(imp.before.axis(ch.channel));
     a["misfit_before"] = ch.misfitBefore;
     a["misfit_after"] = ch.misfitAfter;
     a["fraction_outside_before"] = ch.fractionOutsideBefore;
@@ -106,7 +107,7 @@ nlohmann::json toJsonValue(const Improvement& imp) {
     for (const auto& e : ch.added) added.push_back(effectText(e, ch.channel));
     a["added"] = added;
     a["noise_scale_applied"] = ch.noiseScale;
-    a["after"] = axisJson(imp.after.axis(ch.channel), imp.after.threshold);
+    a["after"] = axisJson(imp.after.axis(ch.channel));
     j["axes"].push_back(a);
   }
   j["before"] = {{"model", imp.before.model}, {"data", imp.before.data},

@@ -30,12 +30,12 @@ std::string stepsText(const AxisDiagnosis& a, const std::vector<LevelStep>& step
   return o.str();
 }
 
-std::string findingsText(const AxisDiagnosis& a, double threshold) {
+std::string findingsText(const AxisDiagnosis& a) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "" : ", ") + f.effect + " (" + num(f.score, 3) + ")";
   if (a.unexplained || !a.unexplainedSteps.empty()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
-  if (s.empty()) s = a.fits(threshold) ? "fits" : "no effect above threshold";
+  if (s.empty()) s = a.fits() ? "fits" : "no effect above threshold";
   return s;
 }
 
@@ -92,14 +92,15 @@ std::string summaryTable(const Diagnosis& d) {
   std::ostringstream o;
   o << "diagnosis of " << d.data << " (" << d.samples << " samples at " << num(d.rate, 6)
     << " Hz) against " << d.model << ", " << d.realisations << " realisations, "
-    << num(100 * d.bandLevel, 3) << " % bands, reporting threshold " << num(d.threshold, 3) << "\n";
+    << num(100 * d.bandLevel, 3) << " % bands, reporting threshold " << num(d.threshold, 3)
+    << " (a further effect " << num(d.nextThreshold, 3) << ")\n";
   o << pad("channel", 8) << pad("misfit", 8) << pad("outside", 9) << pad("chi2/K", 13)
     << pad("Ljung-Box p", 13) << "findings (score)\n";
   for (const auto& a : d.axes) {
     o << pad(a.channel, 8) << pad(num(a.misfit, 3), 8)
       << pad(num(100 * a.fractionOutside, 3) + " %", 9)
       << pad(num(a.chi2, 4) + "/" + std::to_string(a.chi2Points), 13)
-      << pad(a.ljungBox ? num(a.ljungBox->pValue, 2) : "-", 13) << findingsText(a, d.threshold) << "\n";
+      << pad(a.ljungBox ? num(a.ljungBox->pValue, 2) : "-", 13) << findingsText(a) << "\n";
   }
   for (const auto& a : d.axes) failsAndFindings(o, a);
   return o.str();

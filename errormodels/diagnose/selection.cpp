@@ -500,7 +500,7 @@ void dropRedundant(ChannelWork& w, double penalty, Trials& t, std::vector<Findin
 
 double criterionPenalty(std::size_t points) { return std::log(double(std::max<std::size_t>(points, 2))); }
 
-void selectFindings(ChannelWork& w, double threshold) {
+void selectFindings(ChannelWork& w, double first, double next) {
   AxisDiagnosis& d = w.d;
   const double penalty = criterionPenalty(w.prob.L.size());
   const std::vector<double> measured = w.prob.L;
@@ -522,6 +522,7 @@ void selectFindings(ChannelWork& w, double threshold) {
     return false;
   };
   for (;;) {
+    const double threshold = w.accepted.empty() ? first : next;
     const bool temperatureRound = temperaturePending();
     std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
     if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold))

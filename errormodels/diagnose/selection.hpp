@@ -15,9 +15,10 @@ double criterionPenalty(std::size_t points);
 /// From w.prob and w.cands, greedily: every candidate not yet accepted is added in trial to the
 /// accepted set, the level and all free sizes refitted (solveAllan), and its drop of the criterion
 ///   chi2 (Allan GLS) + penalty x parameters - sum of z^2 of the members' own tests
-/// computed; the largest drop is accepted while drop >= threshold^2 (w.accepted, w.sol). Then fills
+/// computed; the largest drop is accepted while drop >= threshold^2 (w.accepted, w.sol), the
+/// threshold `first` for the channel's first finding and `next` for every later one. Then fills
 /// w.d.findings (the accepted ones with sizes from the final joint fit, then one per other effect,
 /// its best variant, by drop), w.d.noiseScale, w.d.chi2Selected and w.d.unexplained.
-void selectFindings(ChannelWork& w, double threshold);
+void selectFindings(ChannelWork& w, double first, double next);
 
 }  // namespace sinsim::errormodels::diagnose::detail

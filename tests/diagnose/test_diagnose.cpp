@@ -275,6 +275,9 @@ TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
   auto o = options();
   o.realisations = 4;
   CHECK_THROWS_WITH(dg::diagnose(r, fitBase(r), o), Catch::Contains("at least 8"));
+  o = options();
+  o.nextThreshold = std::nan("");
+  CHECK_THROWS_WITH(dg::diagnose(r, fitBase(r), o), Catch::Contains("--next-threshold"));
   // A temperature model on a record without temperature.
   const auto temp = errorModelFromString(
       "gyro:\n  x:\n    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}\n", "t.yaml");
