@@ -174,7 +174,7 @@ def diagnose(sinsim, row, opts, add=None):
 def score(rows):
     """Counts [hits, total] of every score of the issue (docs/diagnose.md, "Challenge benchmark")."""
     sc = {"top1": defaultdict(lambda: [0, 0]), "by_effect": defaultdict(lambda: [0, 0]),
-          "both": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0],
+          "both": [0, 0], "extra": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0],
           "both_visible": [0, 0], "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": []}
     for r in rows:
         res = r.get("result", {})
@@ -203,6 +203,9 @@ def score(rows):
                     sc["top1"][key][0] += named == h["effect"]
                     sc["by_effect"][h["effect"]][1] += 1
                     sc["by_effect"][h["effect"]][0] += named == h["effect"]
+                    if named == h["effect"]:  # the null of a further finding (--next-threshold)
+                        sc["extra"][1] += 1
+                        sc["extra"][0] += any(f != named for f in c["findings"])
                     add = r.get("add", {}).get(ch)
                     if add and named == h["effect"] and add["misfit_before"] > 0:
                         ratio = add["misfit_after"] / add["misfit_before"]
@@ -238,6 +241,7 @@ def report(rows):
     print(f"both effects found on two-effect channels:      {pct(*sc['both'])}")
     print(f"  ... where each is >= {VISIBLE}x the base + the other's ADEV at some tau: {pct(*sc['both_visible'])}")
     print(f"false alarms on clean channels:                 {pct(*sc['clean'])}")
+    print(f"a further finding beside a right single effect: {pct(*sc['extra'])}")
     print(f"clean channels 'unexplained' (no finding):      {pct(*sc['clean_unexplained'])}")
     print(f"out-of-catalogue named as equivalent/unexplained: {pct(*sc['ooc'])}")
     if sc["halved"][1]:
