@@ -15,6 +15,7 @@ pictures=${3:-$out}
 data=${SINSIM_DATA:-$here/../shared/data/adis16405/run1.csv.gz}
 units="--rate 100 --gyro-unit deg/s --accel-unit g"
 mkdir -p "$out" "$pictures"
+out=$(cd "$out" && pwd)  # Chromium needs an absolute file:// URL
 "$build/sinsim" fit "$data" $units --kind ar --order 5 -o "$out/ar5.yaml" -q
 /usr/bin/time -f "diagnose wall %e s, CPU %U s user" \
   "$build/sinsim" diagnose "$data" $units --model "$out/ar5.yaml" \
@@ -25,7 +26,7 @@ if command -v chromium >/dev/null 2>&1; then
   profile=$(mktemp -d)
   for page in diagnose improve; do
     chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$profile" \
-      --window-size=1150,3300 --screenshot="$out/$page.png" "file://$out/$page.html" >/dev/null 2>&1
+      --window-size=1150,3600 --screenshot="$out/$page.png" "file://$out/$page.html" >/dev/null 2>&1
   done
   rm -rf "$profile"
   # The docs' pictures (Debian python3-pil): the overview with gx, and gx before -> after.
@@ -35,7 +36,7 @@ import sys
 from PIL import Image
 out, docs = sys.argv[1], sys.argv[2]
 for src, box, dst in (("diagnose.png", (0, 0, 1150, 1100), "diagnose-gx.png"),
-                      ("improve.png", (0, 2850, 760, 3290), "before-after-gx.png")):
+                      ("improve.png", (0, 3105, 760, 3545), "before-after-gx.png")):
     Image.open(f"{out}/{src}").crop(box).convert("RGB").quantize(colors=64).save(f"{docs}/{dst}", optimize=True)
 PY
 fi
