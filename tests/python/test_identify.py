@@ -111,3 +111,10 @@ def test_diagnose_finds_nothing_missing_in_the_true_model(record):
     # The record was drawn from this very model: no effect can be missing at the calibrated
     # reporting threshold (5.5, docs/diagnose.md).
     assert [f["effect"] for f in d["gx"]["findings"] if f["reported"]] == []
+
+
+def test_diagnose_refuses_a_nan_next_threshold(record):
+    rec, _ = record
+    with pytest.raises(sinsim.InputError, match="--next-threshold"):
+        sinsim.diagnose(rec, sinsim.Model(TRUE_MODEL), channels=["gx"], realisations=8,
+                        next_threshold=float("nan"))
