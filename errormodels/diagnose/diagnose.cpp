@@ -142,7 +142,7 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
     return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken);
   };
   w.cands = w.propose(y, {}, {});
-  selectFindings(w, o.threshold, std::min(o.nextThreshold, o.threshold));
+  selectFindings(w, o.threshold, o.furtherThreshold());
   w.propose = nullptr;  // it refers to this call's record and setup
   return w;
 }
@@ -188,7 +188,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
   run.d.samples = record.rows;
   run.d.realisations = o.realisations;
   run.d.threshold = o.threshold;
-  run.d.nextThreshold = std::min(o.nextThreshold, o.threshold);
+  run.d.nextThreshold = o.furtherThreshold();
   run.d.bandLevel = o.bandLevel;
   // Channels are independent (each its own series, statistics and candidates): on worker
   // threads, each result in its channel's slot, so the diagnosis is the same for any thread count.

@@ -72,6 +72,8 @@ struct DiagnoseOptions {
   /// 4 had a second-round score >= 4.5 (1.8 %, within the 2 % the issue allows false alarms)
   /// (docs/diagnose.md, "A further effect's threshold").
   double nextThreshold = 4.5;
+  /// The threshold a channel's later findings meet: nextThreshold, at most threshold.
+  double furtherThreshold() const { return nextThreshold < threshold ? nextThreshold : threshold; }
   /// Largest averaging factor m of the ADEV comparison, as a fraction of N (m <= N * this).
   double maxFactorFraction = 0.125;
   std::size_t psdSegment = 0;  ///< 0: min(4096, largest power of two <= N/8)
