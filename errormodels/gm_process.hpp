@@ -38,10 +38,11 @@ inline void addGaussMarkovIntervalAcov(double s2, double T, double dt, std::vect
   const double x = dt / T, c2 = s2 / (x * x);
   const double om = -std::expm1(-x);
   r[0] += 2.0 * c2 * (x - om);
+  const double step = std::exp(-x);
   double decay = 1.0;
   for (std::size_t k = 1; k < r.size(); ++k) {
     r[k] += c2 * om * om * decay;
-    decay *= std::exp(-x);
+    decay *= step;
   }
 }
 

@@ -29,9 +29,14 @@ const std::vector<DetectorType>& detectorTypes() {
 // (coefficientVarianceOf: exact for a walk, 1.22x for white noise); the realisations' share keeps
 // the line's ratio. The line's V_trend includes the Gaussian noise the record without x's fit
 // still shows (ModelNow::trendVarWith), so a walk the model lacks does not pass for x.
-std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
-                                                               const std::vector<double>& shape, double trials,
-                                                               const std::vector<std::vector<double>>& beside) {
+namespace {
+
+/// regressorTestGivenModel; `line`: the shape is the plain least-squares line (the ramp with no
+/// signal taken out), whose scatter under the accepted noises with an autocovariance is exact
+/// (TrendScatter::exactLine) instead of on the high side.
+std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx, const std::vector<double>& shape,
+                                                     double trials, const std::vector<std::vector<double>>& beside,
+                                                     bool line) {
   const bool apart = !ctx.taken.empty() || !beside.empty();
   const std::vector<double> x = apart ? ctx.apart(shape, beside) : shape;
   const std::vector<double> yBeside = beside.empty() ? std::vector<double>{} : ctx.apart(ctx.y, beside);
@@ -45,17 +50,35 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
   const double tt = ctx.dt * ctx.dt * n * (n * n - 1) / 12;
   std::vector<double> rest(ctx.N);
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = y[k] - c * (x[k] - xm);
-  return [c, trials, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
+  line = line && !apart;
+  return [c, trials, line, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
           tau = ctx.tau, T = ctx.T, dt = ctx.dt](const ModelNow& m) {
-    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}};
-    double known = s.known * ratio;
-    if (known > 0 && !s.knownAvar.empty()) known = std::min(known, coefficientVarianceOf(spectrum, s.knownAvar, tau, T, dt));
+    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}, 0.0, 0.0, {}};
+    // The accepted noises' share: the smaller of two high-side bounds, or for the line the exact
+    // share of those with an autocovariance and the bounds for the rest.
+    const double bounded = line ? s.restKnown : s.known * ratio;
+    const std::vector<double>& boundedAvar = line ? s.restAvar : s.knownAvar;
+    double known = bounded;
+    if (known > 0 && !boundedAvar.empty()) known = std::min(known, coefficientVarianceOf(spectrum, boundedAvar, tau, T, dt));
+    if (line) known += s.exactLine;
     const double realised = s.realised * ratio, var = realised + known;
     const double dof = satterthwaiteDof(realised, s.realisedDof, known);
     if (!(var > 0) || !(dof > 1)) return 0.0;
     const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), dof);
     return trials > 1 ? zFromTwoSidedP(std::min(1.0, trials * std::erfc(z / std::sqrt(2.0)))) : z;
   };
+}
+
+}  // namespace
+
+std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorContext& ctx,
+                                                               const std::vector<double>& shape, double trials,
+                                                               const std::vector<std::vector<double>>& beside) {
+  return regressorTest(ctx, shape, trials, beside, false);
+}
+
+std::function<double(const ModelNow&)> trendTestGivenModel(const DetectorContext& ctx, const std::vector<double>& line) {
+  return regressorTest(ctx, line, 1, {}, true);
 }
 
 namespace {

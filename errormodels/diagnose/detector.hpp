@@ -88,6 +88,12 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
                                                                const std::vector<double>& x, double trials = 1,
                                                                const std::vector<std::vector<double>>& beside = {});
 
+/// The same test for the least-squares line itself (`line`: t = (k + 0.5) dt, the ramp's shape):
+/// where no signal is taken out, the accepted noises whose autocovariance dies out within the
+/// Allan grid (Candidate::shortCorrelation) contribute their exact trend variance
+/// (trendVarianceFromAcov) rather than a high-side bound.
+std::function<double(const ModelNow&)> trendTestGivenModel(const DetectorContext& ctx, const std::vector<double>& line);
+
 using DetectFn = std::vector<Candidate> (*)(const DetectorContext& ctx);
 
 struct DetectorType {

@@ -9,6 +9,7 @@
 #include "errormodels/diagnose/level_shift.hpp"
 #include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/series_stats.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/diagnose/significance.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/stats/special.hpp"
@@ -46,19 +47,37 @@ double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& 
   return 8.0 * allanTermAt(g, tau, 0.5 * T) / (T * T);
 }
 
+/// The variance of a record's least-squares trend per unit theta under a noise with an
+/// autocovariance (Candidate::acov) over n samples at dt [s], exact (trendVarianceFromAcov);
+/// computed once per candidate. Used where that autocovariance dies out within the Allan grid
+/// (Candidate::shortCorrelation).
+double trendVariance(const Candidate& c, std::size_t n, double dt) {
+  if (c.trendVarCache < 0) c.trendVarCache = n > 1 ? trendVarianceFromAcov(c.acov(n - 1), dt) : 0.0;
+  return c.trendVarCache;
+}
+
 /// The trend scatter of the current model: the realisations' variance (w.trendVar, w.trendDof
-/// of them) at the fitted level plus each accepted noise's in closed form (trendVarianceOf), with
+/// of them) at the fitted level plus each accepted noise's in closed form (trendVarianceOf; for the
+/// line itself exact where the noise has an autocovariance: TrendScatter::exactLine), with
 /// the dof of that sum (satterthwaiteDof). After a large noise is accepted most of the variance is
 /// known exactly: judging a trend beside it with the realisations' 16 dof would turn a t of 10
 /// into a z of 5.7. Also the accepted noises' AVAR (another shape's variance under them:
 /// regressorTestGivenModel).
 TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
   const double T = double(w.y->size()) / w.rate;
-  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, std::vector<double>(w.d.adev.x.size(), 0.0)};
+  const std::vector<double> zero(w.d.adev.x.size(), 0.0);
+  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, zero, 0.0, 0.0, zero};
   for (std::size_t j = 0; j < set.size(); ++j) {
     const double theta = set[j]->freeSize ? sol.theta[j] : 1.0;
-    s.known += theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
+    const double v = theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
+    s.known += v;
     for (std::size_t k = 0; k < s.knownAvar.size() && k < set[j]->g.size(); ++k) s.knownAvar[k] += theta * set[j]->g[k];
+    if (set[j]->acov && set[j]->shortCorrelation) {
+      s.exactLine += theta * trendVariance(*set[j], w.y->size(), 1.0 / w.rate);
+      continue;
+    }
+    s.restKnown += v;
+    for (std::size_t k = 0; k < s.restAvar.size() && k < set[j]->g.size(); ++k) s.restAvar[k] += theta * set[j]->g[k];
   }
   return s;
 }

@@ -302,9 +302,10 @@ TEST_CASE("channels on worker threads give the same diagnosis as one thread", "[
 // noise (sigma 0.05 deg/s, tau 1 s) is accepted, a ramp of R = 8e-4 deg/s^2 over 300 s at 100 Hz
 // stands against the trend scatter the white base and the GM predict: the GM acts at long tau as
 // white noise of density sqrt(2 sigma^2 tau) = 0.071 deg/s/sqrt(Hz), so the least-squares trend's
-// sd is sqrt(12 (0.01^2 + 0.071^2) / T^3) = 4.8e-5 deg/s^2 (5.5e-5 with the 4/3 margin of
-// trendVarianceOf): t = 14.5, a Gaussian-equivalent z of 6.4 with 16 realisations, beyond the
-// 5.5 threshold in each seed but with probability ~ 0.2 (z scatter +-1). Its Allan excess alone
+// sd is sqrt(12 (0.01^2 + 0.071^2) / T^3) = 4.8e-5 deg/s^2 (the GM's share exact from its
+// autocovariance, TrendScatter::exactLine; 5.3e-5 with the 12/pi^2 margin of the cosine bound it
+// had before): t = 16.7, beyond the 5.5 threshold in each seed but for the scatter of the
+// realised trend (z scatter +-1) and of the white share's 16 realisations. Its Allan excess alone
 // is 1.8x the model's ADEV at the last tau (37.5 s) only, and the one-sign test is weak on a
 // white-like base: without the trend test the ramp was missed in all five seeds. At least 4 of 5
 // required (P(<= 3 of 5) < 0.03 at a per-seed miss rate of 0.2).

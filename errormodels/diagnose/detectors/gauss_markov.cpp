@@ -24,6 +24,7 @@ Candidate gmCandidate(const DetectorContext& ctx, double Tc) {
     const auto m = std::size_t(std::llround(t / dt));
     return fit::gmDiscreteAllanVariance(1.0, Tc, dt, m < 1 ? 1 : m);
   });
+  c.shortCorrelation = Tc <= ctx.tau.back() / 8;
   c.acov = [Tc, dt](std::size_t maxLag) {
     std::vector<double> r(maxLag + 1, 0.0);
     addGaussMarkovIntervalAcov(1.0, Tc, dt, r);

@@ -76,7 +76,7 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   // the warm-up and the temperature with the line as the shape (the same variance rule for all
   // three: a settling of long time constant is nearly a line, and a tie between them must not be
   // decided by which variance bound each uses).
-  c.zConditional = regressorTestGivenModel(ctx, line);
+  c.zConditional = trendTestGivenModel(ctx, line);
   c.evidence = "Allan deviation rising with slope +1 at long tau; least-squares trend " +
                quantity(slope, u.slope) + "; window-mean increments of one sign (t = " + num(tBest, 3) + ")";
   // The size written is the least-squares slope: the realised trend of this record, which the
