@@ -19,7 +19,7 @@ struct TrendScatter {
   double realised = 0, realisedDof = 0, known = 0;
   std::vector<double> knownAvar;
   /// The least-squares line's own scatter from the accepted noises: exact for those whose
-  /// autocovariance dies out within the Allan grid (Candidate::shortCorrelation,
+  /// autocovariance dies out within the Allan grid (Candidate::acovSpan,
   /// trendVarianceFromAcov), and the others' share of `known` and of `knownAvar` (a random walk,
   /// a flicker, a GM near the grid's end).
   double exactLine = 0, restKnown = 0;
@@ -90,13 +90,14 @@ struct Candidate {
   /// Autocovariance per unit theta at lags 0..p of the sampled process [SI^2] (bias instability):
   /// subtracted before the base AR is refitted by Yule-Walker. Empty otherwise.
   std::function<std::vector<double>(std::size_t maxLag)> acov;
-  /// Whether `acov` dies out within the Allan grid (white noise; a GM of correlation time <= tau_max
-  /// / 8, whose 1/tau fall the grid's last octaves show): its variance at the record's longest
-  /// scales is then what the grid measured, and its trend variance is exact (trendVariance). A
-  /// slower correlation (a GM near the grid's end, a flicker) stands for whatever the record holds
-  /// beyond the grid -- fitted to a walk's Allan excess, a GM of T/50 predicts a realised trend
-  /// several times too small -- and keeps the high-side bound from its Allan variance.
-  bool shortCorrelation = false;
+  /// Where `acov` dies out within the Allan grid (white noise; a GM of correlation time <= tau_max
+  /// / 8, whose 1/tau fall the grid's last octaves show), the lags it spans (beyond them it is
+  /// below 1e-17 of lag 0); 0 otherwise. Its variance at the record's longest scales is then what
+  /// the grid measured, and its trend variance is exact (trendVariance). A slower correlation (a
+  /// GM near the grid's end, a flicker) stands for whatever the record holds beyond the grid --
+  /// fitted to a walk's Allan excess, a GM of T/50 predicts a realised trend several times too
+  /// small -- and keeps the high-side bound from its Allan variance.
+  std::size_t acovSpan = 0;
   /// The variance of the record's least-squares trend per unit theta under `acov` [SI^2/s^2]
   /// (trendVariance, selection.cpp), kept once computed (< 0: not yet).
   mutable double trendVarCache = -1.0;

@@ -90,7 +90,7 @@ std::function<double(const ModelNow&)> regressorTestGivenModel(const DetectorCon
 
 /// The same test for the least-squares line itself (`line`: t = (k + 0.5) dt, the ramp's shape):
 /// where no signal is taken out, the accepted noises whose autocovariance dies out within the
-/// Allan grid (Candidate::shortCorrelation) contribute their exact trend variance
+/// Allan grid (Candidate::acovSpan) contribute their exact trend variance
 /// (trendVarianceFromAcov) rather than a high-side bound.
 std::function<double(const ModelNow&)> trendTestGivenModel(const DetectorContext& ctx, const std::vector<double>& line);
 

@@ -50,9 +50,10 @@ double trendVarianceOf(const std::vector<double>& g, const std::vector<double>& 
 /// The variance of a record's least-squares trend per unit theta under a noise with an
 /// autocovariance (Candidate::acov) over n samples at dt [s], exact (trendVarianceFromAcov);
 /// computed once per candidate. Used where that autocovariance dies out within the Allan grid
-/// (Candidate::shortCorrelation).
+/// (Candidate::acovSpan, the lags computed).
 double trendVariance(const Candidate& c, std::size_t n, double dt) {
-  if (c.trendVarCache < 0) c.trendVarCache = n > 1 ? trendVarianceFromAcov(c.acov(n - 1), dt) : 0.0;
+  if (c.trendVarCache < 0)
+    c.trendVarCache = n > 1 ? trendVarianceFromAcov(c.acov(std::min(n, c.acovSpan) - 1), n, dt) : 0.0;
   return c.trendVarCache;
 }
 
@@ -72,7 +73,7 @@ TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candi
     const double v = theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
     s.known += v;
     for (std::size_t k = 0; k < s.knownAvar.size() && k < set[j]->g.size(); ++k) s.knownAvar[k] += theta * set[j]->g[k];
-    if (set[j]->acov && set[j]->shortCorrelation) {
+    if (set[j]->acov && set[j]->acovSpan > 0) {
       s.exactLine += theta * trendVariance(*set[j], w.y->size(), 1.0 / w.rate);
       continue;
     }

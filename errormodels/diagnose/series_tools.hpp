@@ -15,10 +15,11 @@ double latticeStep(const std::vector<double>& y);
 /// Least-squares slope of y against t = (k + 0.5) dt [SI/s]: a ramp's size, and the trend whose
 /// scatter under the model the ramp's conditional test compares it with.
 double trendSlope(const std::vector<double>& y, double dt);
-/// Variance of trendSlope over acov.size() samples of a stationary series whose autocovariance
-/// at lags 0..N-1 is acov [SI^2]: exact, sum over lags of acov(h) times the trend weights'
-/// autocorrelation (a cubic in h) [SI^2/s^2]. White noise of variance s2: 12 s2 / (dt^2 N (N^2 - 1)).
-double trendVarianceFromAcov(const std::vector<double>& acov, double dt);
+/// Variance of trendSlope over n samples of a stationary series whose autocovariance at lags
+/// 0, 1, ... is acov [SI^2] (0 beyond its end, which may be shorter than n): exact, the sum over
+/// lags of acov(h) times the trend weights' autocorrelation (a cubic in h) [SI^2/s^2]. White
+/// noise of variance s2: 12 s2 / (dt^2 n (n^2 - 1)).
+double trendVarianceFromAcov(const std::vector<double>& acov, std::size_t n, double dt);
 /// Mean of y over consecutive windows of m samples.
 std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m);
 

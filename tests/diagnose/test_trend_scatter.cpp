@@ -6,6 +6,7 @@
 // (anti-conservative while the realised share dominates).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -119,7 +120,7 @@ TEST_CASE("the exact trend variance of a stationary noise is its definition", "[
     std::vector<double> white(N, 0.0);
     white[0] = 2.5;
     const double n = double(N);
-    CHECK(d::trendVarianceFromAcov(white, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
+    CHECK(d::trendVarianceFromAcov(white, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
     for (double phi : {0.3, 0.95, 0.999}) {
       std::vector<double> gm(N);
       for (std::size_t h = 0; h < N; ++h) gm[h] = 0.7 * std::pow(phi, double(h));
@@ -131,9 +132,15 @@ TEST_CASE("the exact trend variance of a stationary noise is its definition", "[
       double direct = 0;
       for (std::size_t i = 0; i < N; ++i)
         for (std::size_t j = 0; j < N; ++j) direct += a[i] * a[j] * gm[i > j ? i - j : j - i];
-      CHECK(d::trendVarianceFromAcov(gm, dt) == Approx(direct).epsilon(1e-9));
+      CHECK(d::trendVarianceFromAcov(gm, N, dt) == Approx(direct).epsilon(1e-9));
     }
+    // An autocovariance given only where it is not negligible (the rest 0): the same.
+    CHECK(d::trendVarianceFromAcov({2.5}, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
   }
+  std::vector<double> gm(400), head(40);
+  for (std::size_t h = 0; h < gm.size(); ++h) gm[h] = std::pow(0.3, double(h));
+  std::copy(gm.begin(), gm.begin() + 40, head.begin());  // 0.3^40 = 1.2e-21
+  CHECK(d::trendVarianceFromAcov(head, 400, dt) == Approx(d::trendVarianceFromAcov(gm, 400, dt)).epsilon(1e-14));
 }
 
 // ... and against the scatter of simulated trends: 4000 stationary AR(1) records of 500 samples
@@ -147,7 +154,7 @@ TEST_CASE("the exact trend variance of a Gauss-Markov matches simulated trends",
   const double phi = 0.98, s2 = 1.0, dt = 0.01;
   std::vector<double> acov(N);
   for (std::size_t h = 0; h < N; ++h) acov[h] = s2 * std::pow(phi, double(h));
-  const double exact = d::trendVarianceFromAcov(acov, dt);
+  const double exact = d::trendVarianceFromAcov(acov, N, dt);
   std::mt19937_64 rng(20261201);
   std::normal_distribution<double> n01(0.0, 1.0);
   double ms = 0;

@@ -24,7 +24,8 @@ Candidate gmCandidate(const DetectorContext& ctx, double Tc) {
     const auto m = std::size_t(std::llround(t / dt));
     return fit::gmDiscreteAllanVariance(1.0, Tc, dt, m < 1 ? 1 : m);
   });
-  c.shortCorrelation = Tc <= ctx.tau.back() / 8;
+  // A GM's autocovariance falls as exp(-lag dt / Tc): below 1e-17 of lag 0 beyond 40 Tc.
+  if (Tc <= ctx.tau.back() / 8) c.acovSpan = std::size_t(std::ceil(40.0 * Tc / dt)) + 1;
   c.acov = [Tc, dt](std::size_t maxLag) {
     std::vector<double> r(maxLag + 1, 0.0);
     addGaussMarkovIntervalAcov(1.0, Tc, dt, r);

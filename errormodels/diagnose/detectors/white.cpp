@@ -17,7 +17,7 @@ std::vector<Candidate> detect_white(const DetectorContext& ctx) {
   c.parameters = 1;
   c.g = ctx.shape([](double t) { return 1.0 / t; });  // N^2 / tau
   // Interval averages of continuous white noise: variance N^2 / dt at lag 0, uncorrelated.
-  c.shortCorrelation = true;
+  c.acovSpan = 1;
   c.acov = [dt](std::size_t maxLag) {
     std::vector<double> r(maxLag + 1, 0.0);
     r[0] = 1.0 / dt;
