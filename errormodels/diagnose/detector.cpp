@@ -32,8 +32,8 @@ const std::vector<DetectorType>& detectorTypes() {
 namespace {
 
 /// regressorTestGivenModel; `line`: the shape is the plain least-squares line (the ramp with no
-/// signal taken out), whose scatter under the accepted noises with an autocovariance is exact
-/// (TrendScatter::exactLine) instead of on the high side.
+/// signal taken out), whose scatter under the accepted noises whose autocovariance dies out within
+/// the Allan grid is exact (TrendScatter::exactLine) instead of on the high side.
 std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx, const std::vector<double>& shape,
                                                      double trials, const std::vector<std::vector<double>>& beside,
                                                      bool line) {
@@ -55,7 +55,7 @@ std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx,
           tau = ctx.tau, T = ctx.T, dt = ctx.dt](const ModelNow& m) {
     const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}, 0.0, 0.0, {}};
     // The accepted noises' share: the smaller of two high-side bounds, or for the line the exact
-    // share of those with an autocovariance and the bounds for the rest.
+    // share of the short-correlated ones (Candidate::acovSpan) and the bounds for the rest.
     const double bounded = line ? s.restKnown : s.known * ratio;
     const std::vector<double>& boundedAvar = line ? s.restAvar : s.knownAvar;
     double known = bounded;

@@ -59,7 +59,7 @@ double trendVariance(const Candidate& c, std::size_t n, double dt) {
 
 /// The trend scatter of the current model: the realisations' variance (w.trendVar, w.trendDof
 /// of them) at the fitted level plus each accepted noise's in closed form (trendVarianceOf; for the
-/// line itself exact where the noise has an autocovariance: TrendScatter::exactLine), with
+/// line itself exact where its autocovariance dies out within the grid: TrendScatter::exactLine), with
 /// the dof of that sum (satterthwaiteDof). After a large noise is accepted most of the variance is
 /// known exactly: judging a trend beside it with the realisations' 16 dof would turn a t of 10
 /// into a z of 5.7. Also the accepted noises' AVAR (another shape's variance under them:
