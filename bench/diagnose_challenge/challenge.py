@@ -224,6 +224,11 @@ def score(rows):
     return sc
 
 
+def at_least_3x(top1):
+    """[hits, total] of the one-effect channels at >= 3x (quantization apart: its size is an LSB)."""
+    return [sum(top1[k][i] for k in top1 if k != "lsb" and k >= 3) for i in (0, 1)]
+
+
 def pct(a, b):
     return f"{100.0 * a / b:5.1f} % ({a}/{b})" if b else "   -   (0/0)"
 
@@ -235,7 +240,7 @@ def report(rows):
     top1 = sc["top1"]
     for k in sorted(x for x in top1 if x != "lsb"):
         print(f"top-1 correct, one effect at {k:4.1f}x base ADEV: {pct(*top1[k])}")
-    ge3 = [sum(top1[k][i] for k in top1 if k != "lsb" and k >= 3) for i in (0, 1)]
+    ge3 = at_least_3x(top1)
     print(f"top-1 correct, one effect at >= 3x:             {pct(*ge3)}")
     print(f"top-1 correct, quantization (LSB 0.75-5 sd):    {pct(*top1['lsb'])}")
     print(f"both effects found on two-effect channels:      {pct(*sc['both'])}")

@@ -42,9 +42,8 @@ def wilson(k, n, z=1.96):
 def counts(sc):
     """[hits, total] per FLOORS key."""
     top1 = sc["top1"]
-    ge3 = [sum(top1[k][i] for k in top1 if k != "lsb" and k >= 3) for i in (0, 1)]
     clean = sc["clean"]
-    return {"ge3": ge3, "w15": top1.get(1.5, [0, 0]), "lsb": top1.get("lsb", [0, 0]), "both": sc["both"],
+    return {"ge3": challenge.at_least_3x(top1), "w15": top1.get(1.5, [0, 0]), "lsb": top1.get("lsb", [0, 0]), "both": sc["both"],
             "ooc": sc["ooc"], "quiet": [clean[1] - clean[0], clean[1]], "halved": sc["halved"]}
 
 
@@ -132,7 +131,10 @@ def main():
     for spec in a.run:
         if len(spec) < 2:
             ap.error("--run needs a label and at least one results.json")
-        rows = [row for path in spec[1:] for row in json.load(open(path))]
+        try:
+            rows = [row for path in spec[1:] for row in json.load(open(path))]
+        except (OSError, ValueError) as e:
+            ap.error(f"--run {spec[0]!r}: cannot read results: {e}")
         runs.append((spec[0], challenge.score(rows)))
     import matplotlib
     matplotlib.use("Agg")

@@ -50,7 +50,7 @@ def main():
     sc = challenge.report(rows)
     errors = sum("error" in r.get("result", {}) for r in rows)
     fa, clean = sc["clean"]
-    ge3 = [sum(sc["top1"][k][i] for k in sc["top1"] if k != "lsb" and k >= 3) for i in (0, 1)]
+    ge3 = challenge.at_least_3x(sc["top1"])
     # Floors of issue 12: false alarms <= 2 % per clean channel; top-1 >= 90 % at >= 3x.
     fa_max = max_allowed(clean, 0.02)
     top_min = min_required(ge3[1], 0.90)
