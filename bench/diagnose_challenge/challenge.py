@@ -139,8 +139,8 @@ def make(rng, idx, work, max_samples, bases=BASES, null=False, effects=None, poo
 def diagnose(sinsim, row, opts, add=None):
     """Runs sinsim diagnose on the row's record; per channel the reported findings in acceptance
     order, the best drop score of any candidate (the first trial round when nothing is reported:
-    what a threshold calibration needs), and the unexplained range. With add="EFFECT:CH" the
-    misfit before and after adding it."""
+    what a threshold calibration needs), the second-round score (second_score, below), and the
+    unexplained range. With add="EFFECT:CH" the misfit before and after adding it."""
     out = row["record"][:-4] + (".add.json" if add else ".json")
     cmd = ["nice", opts.sinsim, "diagnose", row["record"], "--model", row["model"], "--json", out,
            "--threads", str(opts.threads), "--realisations", str(opts.realisations),
@@ -163,6 +163,7 @@ def diagnose(sinsim, row, opts, add=None):
             continue
         rep = [f for f in a["findings"] if f.get("reported")]
         res[a["channel"]] = {"findings": [f["effect"] for f in rep], "misfit": a["misfit"],
+                             "second_score": second_score(a["findings"]),
                              "fits": a["fits"],
                              "unexplained": a.get("unexplained") or a.get("unexplained_steps"),
                              "best_score": max([f["score"] for f in a["findings"]] + [0.0]),
@@ -171,11 +172,23 @@ def diagnose(sinsim, row, opts, add=None):
     return res
 
 
+def second_score(findings):
+    """What the search scored after the first finding: the second reported finding's score, else
+    the largest score of the candidates not reported (0 without a first finding). On channels whose
+    one effect came first this is the null of a further finding (--next-threshold's calibration)."""
+    rep = [f["score"] for f in findings if f.get("reported")]
+    if len(rep) >= 2:
+        return rep[1]
+    rest = [f["score"] for f in findings if not f.get("reported")]
+    return max(rest) if rep and rest else 0.0
+
+
 def score(rows):
     """Counts [hits, total] of every score of the issue (docs/diagnose.md, "Challenge benchmark")."""
     sc = {"top1": defaultdict(lambda: [0, 0]), "by_effect": defaultdict(lambda: [0, 0]),
           "both": [0, 0], "extra": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0],
-          "both_visible": [0, 0], "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": []}
+          "both_visible": [0, 0], "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": [],
+          "second_scores": []}
     for r in rows:
         res = r.get("result", {})
         if "error" in res:
@@ -206,6 +219,8 @@ def score(rows):
                     if named == h["effect"]:  # the null of a further finding (--next-threshold)
                         sc["extra"][1] += 1
                         sc["extra"][0] += any(f != named for f in c["findings"])
+                        if "second_score" in c:
+                            sc["second_scores"].append(c["second_score"])
                     add = r.get("add", {}).get(ch)
                     if add and named == h["effect"] and add["misfit_before"] > 0:
                         ratio = add["misfit_after"] / add["misfit_before"]
@@ -247,6 +262,10 @@ def report(rows):
     print(f"  ... where each is >= {VISIBLE}x the base + the other's ADEV at some tau: {pct(*sc['both_visible'])}")
     print(f"false alarms on clean channels:                 {pct(*sc['clean'])}")
     print(f"a further finding beside a right single effect: {pct(*sc['extra'])}")
+    if sc["second_scores"]:  # the next threshold's null: a spurious further finding at each threshold
+        ss = sc["second_scores"]
+        print("  second-round score there, at or above 3.5 / 4.0 / 4.5 / 5.5: "
+              + " / ".join(f"{sum(x >= t for x in ss)}" for t in (3.5, 4.0, 4.5, 5.5)) + f" of {len(ss)}")
     print(f"clean channels 'unexplained' (no finding):      {pct(*sc['clean_unexplained'])}")
     print(f"out-of-catalogue named as equivalent/unexplained: {pct(*sc['ooc'])}")
     if sc["halved"][1]:
