@@ -68,17 +68,20 @@ TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candi
   const double T = double(w.y->size()) / w.rate;
   const std::vector<double> zero(w.d.adev.x.size(), 0.0);
   TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, zero, 0.0, 0.0, zero};
+  auto addAvar = [](std::vector<double>& to, const std::vector<double>& g, double theta) {
+    for (std::size_t k = 0; k < to.size() && k < g.size(); ++k) to[k] += theta * g[k];
+  };
   for (std::size_t j = 0; j < set.size(); ++j) {
     const double theta = set[j]->freeSize ? sol.theta[j] : 1.0;
     const double v = theta * trendVarianceOf(set[j]->g, w.d.adev.x, T);
     s.known += v;
-    for (std::size_t k = 0; k < s.knownAvar.size() && k < set[j]->g.size(); ++k) s.knownAvar[k] += theta * set[j]->g[k];
+    addAvar(s.knownAvar, set[j]->g, theta);
     if (set[j]->acov && set[j]->acovSpan > 0) {
       s.exactLine += theta * trendVariance(*set[j], w.y->size(), 1.0 / w.rate);
       continue;
     }
     s.restKnown += v;
-    for (std::size_t k = 0; k < s.restAvar.size() && k < set[j]->g.size(); ++k) s.restAvar[k] += theta * set[j]->g[k];
+    addAvar(s.restAvar, set[j]->g, theta);
   }
   return s;
 }
