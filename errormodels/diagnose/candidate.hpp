@@ -24,6 +24,12 @@ struct TrendScatter {
   /// a flicker, a GM near the grid's end).
   double exactLine = 0, restKnown = 0;
   std::vector<double> restAvar;
+  /// The base's AVAR at the fitted level on the tau grid [SI^2] (s mu): with knownAvar the whole
+  /// model's, whose variance on each slow cosine weighs a shape's generalised least squares.
+  std::vector<double> baseAvar;
+  /// The part of knownAvar that is the Gaussian noise fitted to the record (ModelNow::trendVarWith):
+  /// its size is estimated, like the base's level, not known.
+  std::vector<double> fittedAvar;
   double var() const { return realised + known; }
 };
 

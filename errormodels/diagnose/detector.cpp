@@ -29,6 +29,17 @@ const std::vector<DetectorType>& detectorTypes() {
 // (coefficientVarianceOf: exact for a walk, 1.22x for white noise); the realisations' share keeps
 // the line's ratio. The line's V_trend includes the Gaussian noise the record without x's fit
 // still shows (ModelNow::trendVarWith), so a walk the model lacks does not pass for x.
+//
+// Least squares weighs every frequency of x alike, so against a red noise it is not the best test
+// of a shape: a settling of T/20 on a walk is seen ~3x better by generalised least squares, which
+// weighs the cosines where the noise is small (glsTestOf). A shape other than the plain line is
+// therefore tested by GLS on the cosines under the whole model: the base at its level
+// (TrendScatter::baseAvar) and the Gaussian noise the record without x still shows
+// (TrendScatter::fittedAvar) as estimated, the accepted noises as known. The fitted noise counts
+// as estimated: counted as known, a warm-up fitted to a ramp made its own misfit into a walk whose
+// variance escaped the realisations' dof, and won over the ramp. The plain line keeps least
+// squares: its information sits in the first cosine, where GLS gains nothing, and its share of
+// the short-correlated noises above is exact rather than converted from their Allan variance.
 namespace {
 
 /// regressorTestGivenModel; `line`: the shape is the plain least-squares line (the ramp with no
@@ -52,8 +63,9 @@ std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx,
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = y[k] - c * (x[k] - xm);
   line = line && !apart;
   return [c, trials, line, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
-          tau = ctx.tau, T = ctx.T, dt = ctx.dt](const ModelNow& m) {
-    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}, 0.0, 0.0, {}};
+          ySpectrum = line ? CosineSpectrum{} : cosineSpectrum(y), tau = ctx.tau, T = ctx.T,
+          dt = ctx.dt](const ModelNow& m) {
+    const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}, 0.0, 0.0, {}, {}, {}};
     // The accepted noises' share: the smaller of two high-side bounds, or for the line the exact
     // share of the short-correlated ones (Candidate::acovSpan) and the bounds for the rest.
     const double bounded = line ? s.restKnown : s.known * ratio;
@@ -64,7 +76,16 @@ std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx,
     const double realised = s.realised * ratio, var = realised + known;
     const double dof = satterthwaiteDof(realised, s.realisedDof, known);
     if (!(var > 0) || !(dof > 1)) return 0.0;
-    const double z = zFromStudentT(std::fabs(c) / std::sqrt(var), dof);
+    double t = std::fabs(c) / std::sqrt(var), nu = dof;
+    if (!line && !s.baseAvar.empty()) {
+      std::vector<double> estimated = s.baseAvar, known = s.knownAvar;
+      for (std::size_t k = 0; k < s.fittedAvar.size() && k < known.size() && k < estimated.size(); ++k)
+        estimated[k] += s.fittedAvar[k], known[k] = std::max(0.0, known[k] - s.fittedAvar[k]);
+      const GlsTest g = glsTestOf(spectrum, ySpectrum, estimated, known, s.realisedDof, tau, T, dt);
+      t = g.t, nu = g.dof;
+      if (!(nu > 1)) return 0.0;
+    }
+    const double z = zFromStudentT(t, nu);
     return trials > 1 ? zFromTwoSidedP(std::min(1.0, trials * std::erfc(z / std::sqrt(2.0)))) : z;
   };
 }

@@ -50,7 +50,7 @@ double lowFrequencyVarianceOf(const std::vector<double>& g, const std::vector<do
 /// computed on block sums (the cosines vary little within one of at least 8 blocks per period),
 /// its squared norm x'x, and the part of x'x beyond the K cosines (tail).
 struct CosineSpectrum {
-  std::vector<double> a2;
+  std::vector<double> a, a2;  // u_k . x and its square
   double norm2 = 0, tail = 0;
 };
 CosineSpectrum cosineSpectrum(const std::vector<double>& x, std::size_t maxCosines = 512);
@@ -63,6 +63,38 @@ CosineSpectrum cosineSpectrum(const std::vector<double>& x, std::size_t maxCosin
 /// terms of a stationary noise's cosine coefficients are neglected.
 double coefficientVarianceOf(const CosineSpectrum& s, const std::vector<double>& g, const std::vector<double>& tau,
                              double T, double dt);
+
+/// (12/pi^2) (tau_k/dt) AVAR(tau_k) over the true cosine variance S(f_k)/(2 dt), f_k = 1/(4 tau_k),
+/// for a power-law noise of AVAR ~ tau^mu: 12/pi^2 for white noise (mu = -1), 12 ln 2 / pi^2 =
+/// 0.84 for flicker (mu = 0), 1 for a walk (mu = 1); mu clamped to [-1, 1] (beyond, the ratio
+/// grows: held at the ends, the variance it gives is on the high side).
+double powerLawCosineRatio(double mu);
+
+/// The variance of the cosine of index k under a noise of AVAR g on the tau grid [SI^2]:
+/// lowFrequencyVarianceOf over powerLawCosineRatio at g's log-log slope around tau_k (exact for a
+/// power law, where lowFrequencyVarianceOf is 0.84-1.22x of it).
+double cosineVarianceOf(const std::vector<double>& g, const std::vector<double>& tau, double T, double dt, double k);
+
+/// The generalised least-squares test of a series y on a shape x under the current model, on
+/// their cosines k = 1..K (cosineSpectrum of both): the cosine coefficients of a noise are nearly
+/// uncorrelated (exactly for a walk) with variance v_k (cosineVarianceOf), so the coefficient
+/// sum_k x_k y_k / v_k over sum_k x_k^2 / v_k has variance 1 / sum_k x_k^2 / v_k, and
+/// t = |sum_k x_k y_k / v_k| / sqrt(sum_k x_k^2 / v_k). Against a red noise it weighs the cosines
+/// where the noise is small: a settling of T/20 on a walk is seen ~3x better than by least
+/// squares. The part of x beyond K cosines is left out (on the safe side). The model's AVAR on the
+/// tau grid [s] [SI^2] is in two parts: one estimated (the base from `realisations` Monte Carlo
+/// realisations, a noise fitted to the record) and one known in closed form. An Allan variance at
+/// tau_k = T/(2k) stands for the cosines of its octave, 2^j <= k < 2^(j+1), with ~2^j degrees of
+/// freedom per series; so t's dof is Satterthwaite's (1946) over the octaves' shares of the
+/// coefficient's variance, the estimated part's with realisations x 2^j dof each, the known
+/// part's exact (a line's information, at k = 1, gets the realisations' dof: the trend test's).
+/// t = 0 when the model's AVAR is not positive.
+struct GlsTest {
+  double t = 0, dof = 0;
+};
+GlsTest glsTestOf(const CosineSpectrum& x, const CosineSpectrum& y, const std::vector<double>& estimated,
+                  const std::vector<double>& known, double realisations, const std::vector<double>& tau, double T,
+                  double dt);
 
 /// -2 ln L of the coefficients c under variances var [SI^2] (up to a constant), each variance the
 /// mean square of `dof` realisations: the scaled Student t's, sum over directions of

@@ -67,7 +67,8 @@ double trendVariance(const Candidate& c, std::size_t n, double dt) {
 TrendScatter currentTrendVar(const ChannelWork& w, const std::vector<const Candidate*>& set, const AllanSolution& sol) {
   const double T = double(w.y->size()) / w.rate;
   const std::vector<double> zero(w.d.adev.x.size(), 0.0);
-  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, zero, 0.0, 0.0, zero};
+  TrendScatter s{sol.s * w.trendVar, w.trendDof, 0.0, zero, 0.0, 0.0, zero, w.prob.mu, {}};
+  for (double& v : s.baseAvar) v *= sol.s;
   auto addAvar = [](std::vector<double>& to, const std::vector<double>& g, double theta) {
     for (std::size_t k = 0; k < to.size() && k < g.size(); ++k) to[k] += theta * g[k];
   };
@@ -314,7 +315,12 @@ TrendScatter trendVarWithNoise(const ChannelWork& w, const std::vector<const Can
     trial.push_back(&c);
     const auto s = solveAllan(p, trial, start);
     const double crit = s.chi2 + penalty * double(c.parameters);
-    if (crit < bestCrit) bestCrit = crit, bestVar = currentTrendVar(w, trial, s);
+    if (crit < bestCrit) {
+      bestCrit = crit, bestVar = currentTrendVar(w, trial, s);
+      const double theta = c.freeSize ? s.theta.back() : 1.0;
+      bestVar.fittedAvar = c.g;
+      for (double& v : bestVar.fittedAvar) v *= theta;
+    }
   }
   return bestVar;
 }

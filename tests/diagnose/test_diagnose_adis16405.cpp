@@ -85,7 +85,7 @@ TEST_CASE("ADIS16405 run 2: a warm-up cut into level steps is still found", "[di
   double found = 0;
   for (const auto& f : d.findings)
     if (f.reported) {
-      reported += f.effect + " ";
+      reported += f.effect + " (" + std::to_string(f.score) + ") ";
       if (f.effect == "warmup") found = f.params.at("tau");
     }
   INFO("reported: " << reported);

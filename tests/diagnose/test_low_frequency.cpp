@@ -101,3 +101,96 @@ TEST_CASE("the slow coefficients' variance from an Allan term matches a walk's a
     CHECK(d::lowFrequencyVarianceOf(white, tau, T, dt, k) == Approx(12.0 / (M_PI * M_PI) * s * s).epsilon(1e-9));
   }
 }
+
+// glsTestOf, the generalised least-squares test of a shape on the cosines, against closed forms. On
+// a random walk of increment variance q^2 with a free level, the best linear test of a shape x
+// uses the increments: its information is sum_t (x_{t+1} - x_t)^2 / q^2, so with y = x the t is
+// the root of that (Parseval on the differenced series: the walk's cosine variance is exact;
+// 2 % covers the cosines beyond 512 and the O(k/N) terms). Under H0 (a walk plus white noise,
+// std::mt19937_64, 400 records) |t| > 1.96 in 5 % within 3.2 binomial sd, and in more than 2 %
+// (a t scaled wrongly by a factor of 1.5 either way fails one of the two; the conversion of the
+// white part without powerLawCosineRatio, 1.22x high, gives 3.2 %). The same settling of T/20 on the walk: its mean
+// t at least twice the least-squares coefficient's (coefficientVarianceOf, exact for the walk),
+// as the closed form says (2.8x at this size). Its dof: infinite for a known noise, R-based for
+// an estimated one, 4x when half of it is known (Satterthwaite's (1 + known/estimated)^2).
+TEST_CASE("the generalised least-squares test of a settling on a walk", "[diagnose][lowfreq]") {
+  constexpr std::size_t N = 8192;
+  const double dt = 0.01, T = double(N) * dt, q = 2e-3, s = 0.01;
+  std::vector<double> tau, walk, both;
+  for (std::size_t m = 1; m <= N / 8; m *= 2) {
+    tau.push_back(double(m) * dt);
+    walk.push_back(q * q * double(m) / 3.0);
+    both.push_back(walk.back() + s * s / double(m));
+  }
+  std::vector<double> x(N);
+  for (std::size_t k = 0; k < N; ++k) x[k] = std::exp(-double(k) * dt / (T / 20));
+  double info = 0;
+  for (std::size_t k = 0; k + 1 < N; ++k) info += (x[k + 1] - x[k]) * (x[k + 1] - x[k]) / (q * q);
+  const auto cx = d::cosineSpectrum(x);
+  CHECK(d::glsTestOf(cx, cx, walk, {}, 16, tau, T, dt).t == Approx(std::sqrt(info)).epsilon(0.02));
+  // The dof: a walk known in closed form leaves t exact; estimated by R realisations, the
+  // settling's information, all in the first octaves, has Satterthwaite's dof between R (all of
+  // it at k = 1) and R times the highest octave's 2^j it reaches; a part known lifts it by
+  // (1 / estimated share)^2.
+  CHECK(std::isinf(d::glsTestOf(cx, cx, {}, walk, 16, tau, T, dt).dof));
+  const double dofAll = d::glsTestOf(cx, cx, walk, {}, 16, tau, T, dt).dof;
+  CHECK(dofAll >= 16);
+  CHECK(dofAll <= 16 * 256);
+  std::vector<double> part = walk, rest = walk;
+  for (auto& v : part) v *= 0.5;
+  for (auto& v : rest) v *= 0.5;
+  const auto split = d::glsTestOf(cx, cx, part, rest, 16, tau, T, dt);
+  CHECK(split.dof == Approx(4 * dofAll).epsilon(1e-9));
+  CHECK(split.t == Approx(std::sqrt(info)).epsilon(0.02));
+
+  std::mt19937_64 rng(20261201);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double A = 3.0 / std::sqrt(info);  // the GLS t's mean for the walk alone is 3
+  const double olsSd = std::sqrt(d::coefficientVarianceOf(cx, both, tau, T, dt));
+  double xm = 0, xx = 0;
+  for (double v : x) xm += v / double(N);
+  for (double v : x) xx += (v - xm) * (v - xm);
+  int over = 0;
+  double tGls = 0, tOls = 0;
+  constexpr int records = 400;
+  std::vector<double> y(N);
+  for (int r = 0; r < records; ++r) {
+    double level = 0;
+    for (double& v : y) level += q * normal(rng), v = level + s * normal(rng);
+    over += std::fabs(d::glsTestOf(cx, d::cosineSpectrum(y), {}, both, 16, tau, T, dt).t) > 1.96;
+    for (std::size_t k = 0; k < N; ++k) y[k] += A * x[k];
+    tGls += d::glsTestOf(cx, d::cosineSpectrum(y), {}, both, 16, tau, T, dt).t / records;
+    double xy = 0;
+    for (std::size_t k = 0; k < N; ++k) xy += (x[k] - xm) * y[k];
+    tOls += std::fabs(xy / xx) / olsSd / records;
+  }
+  const double m = records;
+  CHECK(std::fabs(over - 0.05 * m) <= 3.2 * std::sqrt(m * 0.05 * 0.95));
+  CHECK(over > 0.02 * m);
+  CHECK(tGls > 2.0 * tOls);
+}
+
+// powerLawCosineRatio against its three closed forms (white 12/pi^2, flicker 12 ln 2 / pi^2, walk 1)
+// and, between them, against the integral it stands for computed here by quadrature: for
+// S(f) = f^alpha, (24/pi^2) 4^alpha int_0^inf f^alpha 2 sin^4(pi f) / (pi f)^2 df (Simpson on
+// [0, 400] in steps of 1/2000, the tail by sin^4's mean 3/8; 1e-3 covers both).
+TEST_CASE("the Allan-to-cosine variance ratio of a power-law noise", "[diagnose][lowfreq]") {
+  CHECK(d::powerLawCosineRatio(-1.0) == Approx(12.0 / (M_PI * M_PI)).epsilon(1e-5));
+  CHECK(d::powerLawCosineRatio(0.0) == Approx(12.0 * std::log(2.0) / (M_PI * M_PI)).epsilon(1e-5));
+  CHECK(d::powerLawCosineRatio(1.0) == Approx(1.0).epsilon(1e-5));
+  for (double mu : {-0.7, -0.3, 0.4, 0.8}) {
+    const double alpha = -mu - 1, U = 400, h = 1.0 / 2000;
+    auto f = [alpha](double u) {
+      if (u == 0) return 0.0;
+      const double s = std::sin(M_PI * u);
+      return std::pow(u, alpha) * 2 * s * s * s * s / (M_PI * M_PI * u * u);
+    };
+    double I = f(0) + f(U);
+    const int n = int(U / h);
+    for (int i = 1; i < n; ++i) I += (i % 2 ? 4 : 2) * f(i * h);
+    I *= h / 3;
+    I += 2 * 0.375 / (M_PI * M_PI) * std::pow(U, alpha - 1) / (1 - alpha);
+    INFO("mu = " << mu);
+    CHECK(d::powerLawCosineRatio(mu) == Approx(24 / (M_PI * M_PI) * std::pow(4.0, alpha) * I).epsilon(1e-3));
+  }
+}
