@@ -78,10 +78,10 @@ std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx,
     if (!(var > 0) || !(dof > 1)) return 0.0;
     double t = std::fabs(c) / std::sqrt(var), nu = dof;
     if (!line && !s.baseAvar.empty()) {
-      std::vector<double> estimated = s.baseAvar, known = s.knownAvar;
-      for (std::size_t k = 0; k < s.fittedAvar.size() && k < known.size() && k < estimated.size(); ++k)
-        estimated[k] += s.fittedAvar[k], known[k] = std::max(0.0, known[k] - s.fittedAvar[k]);
-      const GlsTest g = glsTestOf(spectrum, ySpectrum, estimated, known, s.realisedDof, tau, T, dt);
+      std::vector<double> estimated = s.baseAvar, accepted = s.knownAvar;
+      for (std::size_t k = 0; k < s.fittedAvar.size() && k < accepted.size() && k < estimated.size(); ++k)
+        estimated[k] += s.fittedAvar[k], accepted[k] = std::max(0.0, accepted[k] - s.fittedAvar[k]);
+      const GlsTest g = glsTestOf(spectrum, ySpectrum, estimated, accepted, s.realisedDof, tau, T, dt);
       t = g.t, nu = g.dof;
       if (!(nu > 1)) return 0.0;
     }

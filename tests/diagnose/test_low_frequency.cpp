@@ -20,6 +20,21 @@ std::vector<double> perSample(const d::LowFrequencyBasis& b, std::size_t dir, st
   return u;
 }
 
+/// The Allan variances of a walk of increment variance q^2 and of white noise of variance s^2 on
+/// the octave grid m = 1..N/8 at dt (closed forms: q^2 tau / (3 dt) and s^2 dt / tau).
+struct OctaveTerms {
+  std::vector<double> tau, walk, white;
+};
+OctaveTerms octaveTerms(std::size_t N, double dt, double q, double s) {
+  OctaveTerms o;
+  for (std::size_t m = 1; m <= N / 8; m *= 2) {
+    o.tau.push_back(double(m) * dt);
+    o.walk.push_back(q * q * double(m) / 3.0);
+    o.white.push_back(s * s / double(m));
+  }
+  return o;
+}
+
 }  // namespace
 
 // Orthonormal in the samples' inner product (Gram-Schmidt, re-orthogonalised: 1e-12 is rounding of
@@ -83,12 +98,7 @@ TEST_CASE("the slow coefficients' variance from an Allan term matches a walk's a
           "[diagnose][lowfreq]") {
   constexpr std::size_t N = 4096;
   const double dt = 0.01, T = double(N) * dt, q = 2e-3, s = 0.05;
-  std::vector<double> tau, walk, white;
-  for (std::size_t m = 1; m <= N / 8; m *= 2) {
-    tau.push_back(double(m) * dt);
-    walk.push_back(q * q * double(m) / 3.0);
-    white.push_back(s * s / double(m));
-  }
+  const auto [tau, walk, white] = octaveTerms(N, dt, q, s);
   for (int k = 1; k <= 6; ++k) {
     double exact = 0, tail = 0;
     for (std::size_t j = N; j-- > 0;) {
@@ -116,12 +126,9 @@ TEST_CASE("the slow coefficients' variance from an Allan term matches a walk's a
 TEST_CASE("the generalised least-squares test of a settling on a walk", "[diagnose][lowfreq]") {
   constexpr std::size_t N = 8192;
   const double dt = 0.01, T = double(N) * dt, q = 2e-3, s = 0.01;
-  std::vector<double> tau, walk, both;
-  for (std::size_t m = 1; m <= N / 8; m *= 2) {
-    tau.push_back(double(m) * dt);
-    walk.push_back(q * q * double(m) / 3.0);
-    both.push_back(walk.back() + s * s / double(m));
-  }
+  const auto [tau, walk, white] = octaveTerms(N, dt, q, s);
+  std::vector<double> both = walk;
+  for (std::size_t j = 0; j < both.size(); ++j) both[j] += white[j];
   std::vector<double> x(N);
   for (std::size_t k = 0; k < N; ++k) x[k] = std::exp(-double(k) * dt / (T / 20));
   double info = 0;
