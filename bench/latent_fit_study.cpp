@@ -667,7 +667,8 @@ struct Tally {
 /// printed every 10 records of a cell (progress) and at the end.
 /// Exit status 1 when fewer than `expect` records arrive, or when the right-set rate or the 2-sigma
 /// coverage pooled over all cells is below its floor (the ctest slice, bench/CMakeLists.txt).
-/// With perCell, the floors hold in every cell and, for coverage, for every parameter of it;
+/// With perCell, the floors hold in every cell and, for coverage (among right sets, and the
+/// selection-aware one over all seeds), for every parameter of it;
 /// minArMiss: in the AR cells, the share of seeds whose AR alone (Burg) lies outside the 99 % band
 /// at a long tau.
 struct Floors {
@@ -693,6 +694,12 @@ std::string cellShortfall(const Tally& t, const Floors& f) {
     const auto c = t.covered.find(name);
     const int cov = c == t.covered.end() ? 0 : c->second;
     if (cov < f.minCoverage * k) out += " " + name + " " + std::to_string(cov) + "/" + std::to_string(k) + ";";
+  }
+  for (const auto& name : t.names) {  // the selection-aware statement over all seeds, per parameter
+    const auto c = t.coveredAveraged.find(name);
+    const int cov = c == t.coveredAveraged.end() ? 0 : c->second;
+    if (cov < f.minCoverageAveraged * n)
+      out += " " + name + " selection-aware " + std::to_string(cov) + "/" + std::to_string(n) + ";";
   }
   if (t.arOnlyMissed + t.jointMissed > 0 && t.arOnlyMissed < f.minArMiss * t.fitted)
     out += " AR alone outside " + std::to_string(t.arOnlyMissed) + "/" + std::to_string(t.fitted) + ";";

@@ -405,10 +405,13 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
     const double sdp = std::sqrt(std::max(t.logCovariance(c, c), 0.0));
     const double value = q.amplitude ? std::exp(0.5 * q.p) : std::exp(q.p);
     t.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
-    if (!q.amplitude) {
-      LatentParameter& tau = t.parameters.back();
+    LatentParameter& par = t.parameters.back();
+    par.logScale = true;
+    if (q.amplitude) {  // ln amplitude = p / 2: the covariance's own space, symmetric there
+      par.logCenter = 0.5 * q.p, par.logLower = par.logUpper = 0.5 * sdp;
+    } else {
       const auto [lower, upper] = profileLogTauBounds(p, f, g++, t.birgeScale, sdp);
-      tau.logScale = true, tau.logCenter = q.p, tau.logLower = lower, tau.logUpper = upper;
+      par.logCenter = q.p, par.logLower = lower, par.logUpper = upper;
     }
   }
   return t;
@@ -461,7 +464,7 @@ std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std
       for (const auto& q : e.parameters)
         if (q.name == name) sd += e.weight / w * std::hypot(q.stdError, q.value - mean);
     LatentAveragedParameter a{name, w / total, mean, sd};
-    if (logScale) {  // the profile interval of a tau, the same formula on ln T, each side
+    if (logScale) {  // the ln-space interval, the same formula on ln v, each side
       a.logScale = true;
       for (const auto& e : entries)
         for (const auto& q : e.parameters)

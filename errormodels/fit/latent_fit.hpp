@@ -136,13 +136,16 @@ struct LatentParameter {
   std::string name;  ///< "white", "quantization", "gm1.sigma", "gm1.tau", "random_walk", ...
   double value = 0.0;
   double stdError = 0.0;  ///< the delta method's 1-sigma (Gauss-Newton covariance of the log parameters)
-  /// A GM tau also has a profile-likelihood interval in ln T: the Allan chi^2 minimised over every
-  /// other parameter rises by the Birge scale (Delta chi^2 = 1, one parameter) at logCenter -
-  /// logLower and logCenter + logUpper. Its k-sigma interval is the union of value +- k stdError
-  /// and logCenter + [-k logLower, k logUpper]: neither first-order interval is calibrated for a
-  /// tau at these record lengths (a slow GM's T comes out low, the faster of two GMs' high, where
-  /// the two trade along a valley), and each missed on one side where the other did not
-  /// (docs/fitting.md, "Profile-likelihood intervals for the GM taus").
+  /// Every parameter also has an interval in ln(value). A GM tau's is the profile likelihood: the
+  /// Allan chi^2 minimised over every other parameter rises by the Birge scale (Delta chi^2 = 1,
+  /// one parameter) at logCenter - logLower and logCenter + logUpper. An amplitude's is the delta
+  /// method's in the space its covariance is computed in (ln of the variance coefficient, halved:
+  /// logLower = logUpper = sd(ln theta) / 2). The k-sigma interval is the union of value +-
+  /// k stdError and logCenter + [-k logLower, k logUpper]: neither first-order interval is
+  /// calibrated at these record lengths, and each missed on one side where the other did not -- a
+  /// slow GM's T and a weak walk beside a GM come out low (the ln interval's longer upper side),
+  /// the faster of two GMs' T high (docs/fitting.md, "Profile-likelihood intervals for the GM
+  /// taus", "The amplitudes' interval in ln").
   bool logScale = false;
   double logCenter = 0.0;                 ///< ln(value)
   double logLower = 0.0, logUpper = 0.0;  ///< 1-sigma distances below and above logCenter
@@ -162,9 +165,9 @@ struct LatentAveragedParameter {
   double inclusion = 0.0;  ///< sum of the weights of the sets that have the parameter, in (0, 1]
   double value = 0.0;      ///< its value if the term is present
   double stdError = 0.0;   ///< its 1-sigma, including the spread between sets
-  /// A GM tau's profile interval (LatentParameter::logScale) averaged in ln T: logCenter = sum w_i
-  /// ln v_i, logLower and logUpper = sum w_i sqrt(l_i^2 + (ln v_i - logCenter)^2) with l_i the
-  /// set's own (Buckland's eq. 9 on ln T, each side).
+  /// The ln-space interval (LatentParameter::logScale) averaged in ln: logCenter = sum w_i ln v_i,
+  /// logLower and logUpper = sum w_i sqrt(l_i^2 + (ln v_i - logCenter)^2) with l_i the set's own
+  /// (Buckland's eq. 9 on ln v, each side).
   bool logScale = false;
   double logCenter = 0.0, logLower = 0.0, logUpper = 0.0;
   bool covers(double truth, double k) const;  ///< as LatentParameter::covers

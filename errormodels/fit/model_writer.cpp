@@ -167,16 +167,19 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
   b.endComment();
   for (const auto& a : f.averaged) {
     const std::string& n = a.name;
-    std::string value;
-    if (n == "quantization") value = q4(std::sqrt(12.0) * a.value, u.increment) + " +- " +
-                                     q4(std::sqrt(12.0) * a.stdError, u.increment) + " (lsb)";
-    else if (n == "white") value = q4(a.value, u.density) + " +- " + q4(a.stdError, u.density);
-    else if (n == "random_walk") value = q4(a.value, u.walk) + " +- " + q4(a.stdError, u.walk);
-    else if (n == "drift") value = q4(a.value, u.slope) + " +- " + q4(a.stdError, u.slope);
-    else if (a.logScale)  // a GM tau, with its profile-likelihood interval (LatentParameter::logScale)
-      value = num(a.value, 4) + " s +- " + num(a.stdError, 3) + " s (profile 1-sigma " +
-              num(std::exp(a.logCenter - a.logLower), 4) + ".." + num(std::exp(a.logCenter + a.logUpper), 4) + " s)";
-    else value = q4(a.value, u.level) + " +- " + q4(a.stdError, u.level);  // sigma, flicker, ar.sigma
+    const bool tau = n.size() > 4 && n.compare(n.size() - 4, 4, ".tau") == 0;
+    double k = 1.0;  // the stated quantity per fitted amplitude (an LSB is sqrt(12) quantization sd)
+    std::string unit = u.level;  // sigma, flicker, ar.sigma
+    if (n == "quantization") k = std::sqrt(12.0), unit = u.increment;
+    else if (n == "white") unit = u.density;
+    else if (n == "random_walk") unit = u.walk;
+    else if (n == "drift") unit = u.slope;
+    auto at = [&](double si) { return tau ? num(si, 4) + " s" : q4(k * si, unit); };
+    std::string value = at(a.value) + " +- " + (tau ? num(a.stdError, 3) + " s" : q4(k * a.stdError, unit)) +
+                        (n == "quantization" ? " (lsb)" : "");
+    if (a.logScale)  // the ln-space interval (a tau's profile, an amplitude's Wald in ln; LatentParameter)
+      value += std::string(tau ? " (profile" : " (ln-space") + " 1-sigma " + at(std::exp(a.logCenter - a.logLower)) +
+               ".." + at(std::exp(a.logCenter + a.logUpper)) + ")";
     b.line << "  " << n << " " << value << ", weight " << num(a.inclusion, 2);
     b.endComment();
   }
@@ -207,18 +210,25 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   }
   addLatentAveraged(b, f, u);
   auto sd = [&](const std::string& name) { return f.parameter(name).stdError; };
+  // An amplitude's ln-space 1-sigma interval (LatentParameter::logScale), in the comment's unit.
+  auto ln = [&](const std::string& name, double k, const std::string& unit) {
+    const LatentParameter& p = f.parameter(name);
+    return "; ln-space " + q4(k * std::exp(p.logCenter - p.logLower), unit) + ".." +
+           q4(k * std::exp(p.logCenter + p.logUpper), unit);
+  };
   const Dimension time = Dimension::time();
   const LatentModel& m = f.model;
   if (m.quantization > 0.0) {
     const double k = std::sqrt(12.0);
-    b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma)";
+    b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
+           << ln("quantization", k, u.increment) << ")";
     b.endComment();
     b.add(EffectSpec::make("quantization", {withSigma(ParamSpec::quantity("lsb", k * m.quantization,
                                                                           signal * time),
                                                       {k * sd("quantization")})}));
   }
   if (m.white > 0.0) {
-    b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma)";
+    b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma" << ln("white", 1.0, u.density) << ")";
     b.endComment();
     b.add(EffectSpec::make("white", {withSigma(ParamSpec::quantity("density", m.white,
                                                                    signal * time.sqrt()),
@@ -238,7 +248,8 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   for (std::size_t g = 0; g < m.gm.size(); ++g) {
     const std::string n = "gm" + std::to_string(g + 1);
     const LatentParameter& tau = f.parameter(n + ".tau");
-    b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << ", tau +- " << num(tau.stdError, 4)
+    b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << " (1 sigma" << ln(n + ".sigma", 1.0, u.level)
+           << "), tau +- " << num(tau.stdError, 4)
            << " s (1 sigma; profile-likelihood 1-sigma interval " << num(std::exp(tau.logCenter - tau.logLower), 4)
            << ".." << num(std::exp(tau.logCenter + tau.logUpper), 4) << " s)";
     b.endComment();
@@ -249,7 +260,7 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
          ParamSpec::quantity("rate", rate, Dimension::frequency())}));
   }
   if (m.flicker > 0.0) {
-    b.line << "flicker +- " << q(sd("flicker"), u.level) << " (1 sigma)";
+    b.line << "flicker +- " << q(sd("flicker"), u.level) << " (1 sigma" << ln("flicker", 1.0, u.level) << ")";
     b.endComment();
     b.add(EffectSpec::make(
         "bias_instability",
@@ -257,15 +268,16 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
          ParamSpec::quantities("tau_range", {f.tau.front(), f.tau.back()}, time)}));
   }
   if (m.randomWalk > 0.0) {
-    b.line << "random_walk +- " << q(sd("random_walk"), u.walk) << " (1 sigma)";
+    b.line << "random_walk +- " << q(sd("random_walk"), u.walk) << " (1 sigma"
+           << ln("random_walk", 1.0, u.walk) << ")";
     b.endComment();
     b.add(EffectSpec::make("random_walk", {withSigma(ParamSpec::quantity("K", m.randomWalk,
                                                                          signal / time.sqrt()),
                                                      {sd("random_walk")})}));
   }
   if (m.drift > 0.0) {
-    b.line << "drift (ramp) +- " << q(sd("drift"), u.slope)
-           << " (1 sigma; the Allan variance does not give its sign)";
+    b.line << "drift (ramp) +- " << q(sd("drift"), u.slope) << " (1 sigma" << ln("drift", 1.0, u.slope)
+           << "; the Allan variance does not give its sign)";
     b.endComment();
     b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", m.drift, signal / time),
                                               {sd("drift")})}));

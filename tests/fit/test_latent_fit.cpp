@@ -64,6 +64,17 @@ TEST_CASE("latent fit recovers every term set from its exact Allan variance", "[
     }
     CHECK(f.chi2 < 1e-6);
     CHECK(f.runnerUp() != nullptr);
+    // Every parameter states an interval in ln; an amplitude's is the delta method's of ln theta
+    // (theta = amplitude^2, the covariance's own space), halved: sd(ln amplitude) = stdError / value.
+    for (const auto& p : f.parameters) {
+      INFO(p.name);
+      REQUIRE(p.logScale);
+      CHECK(p.logCenter == Approx(std::log(p.value)).epsilon(1e-12));
+      if (p.name.find(".tau") == std::string::npos) {
+        CHECK(p.logLower == Approx(p.stdError / p.value).epsilon(1e-9));
+        CHECK(p.logUpper == p.logLower);
+      }
+    }
   }
 }
 
@@ -221,9 +232,9 @@ TEST_CASE("latent fit with an AR term recovers AR + slow terms from their exact 
   CHECK_THROWS_AS(fitLatentModel(m, latentAllanVariance(base, dt, m), N, o), sinsim::InputError);
 }
 
-TEST_CASE("latent fit's GM tau interval: the union of the delta method's and the profile's",
+TEST_CASE("latent fit's intervals: the union of the delta method's and the ln one",
           "[fit][latent]") {
-  // covers(): |truth - value| <= k stdError, or for a tau also -k logLower <= ln truth - logCenter
+  // covers(): |truth - value| <= k stdError, or (logScale) -k logLower <= ln truth - logCenter
   // <= k logUpper (closed form of the bounds at k = 2: linear 1.2..2.8, profile 1.213..8.963).
   const LatentParameter tau{"gm1.tau", 2.0, 0.4, true, std::log(2.0), 0.25, 0.75};
   CHECK(tau.covers(2.0 * std::exp(1.499), 2.0));        // the profile's upper side
@@ -232,10 +243,17 @@ TEST_CASE("latent fit's GM tau interval: the union of the delta method's and the
   CHECK(tau.covers(1.2001, 2.0));                       // the linear lower side (1.2) is longer
   CHECK_FALSE(tau.covers(1.1999, 2.0));
   CHECK_FALSE(tau.covers(0.0, 2.0));
-  const LatentParameter white{"white", 2.0, 1.0};
+  const LatentParameter white{"white", 2.0, 1.0};  // no ln interval: the linear one alone
   CHECK(white.covers(3.999, 2.0));
   CHECK_FALSE(white.covers(4.001, 2.0));
   CHECK(white.covers(0.001, 2.0));
+  // An amplitude's ln interval is symmetric in ln (K = 1, sd 0.3, ln sd 0.3; at k = 2 linear
+  // 0.4..1.6, ln e^-0.6..e^0.6 = 0.549..1.822): the ln side is the longer one above, the linear below.
+  const LatentParameter walk{"random_walk", 1.0, 0.3, true, 0.0, 0.3, 0.3};
+  CHECK(walk.covers(std::exp(0.599), 2.0));
+  CHECK_FALSE(walk.covers(std::exp(0.601), 2.0));
+  CHECK(walk.covers(0.4001, 2.0));
+  CHECK_FALSE(walk.covers(0.3999, 2.0));
 }
 
 TEST_CASE("latent fit's profile-likelihood interval of a slow GM's tau covers it", "[fit][latent]") {
