@@ -64,7 +64,7 @@ std::function<double(const ModelNow&)> regressorTest(const DetectorContext& ctx,
   for (std::size_t k = 0; k < ctx.N; ++k) rest[k] = y[k] - c * (x[k] - xm);
   line = line && !apart;
   return [c, trials, line, ratio = tt / xx, avar = allanVariance(rest, ctx.setup), spectrum = cosineSpectrum(x),
-          ySpectrum = line ? CosineSpectrum{} : cosineSpectrum(y), tau = ctx.tau, T = ctx.T,
+          ySpectrum = line ? CosineSpectrum{} : beside.empty() ? ctx.ySpectrum : cosineSpectrum(y), tau = ctx.tau, T = ctx.T,
           dt = ctx.dt](const ModelNow& m) {
     const TrendScatter s = m.trendVarWith ? m.trendVarWith(avar) : TrendScatter{m.trendVar, m.trendDof, 0.0, {}, 0.0, 0.0, {}, {}, {}};
     // The accepted noises' share: the smaller of two high-side bounds, or for the line the exact
@@ -170,7 +170,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
   var /= double(N);
   DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
                       mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
-                      isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}, {}, {}, {}};
+                      isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}, {}, {}, {},
+                      cosineSpectrum(y)};
   for (const auto& x : taken) ctx.takenBlocks.push_back(blockMeans(x, dt, 2000).m);
   if (!taken.empty()) ctx.takenBasis = orthonormalBasis(withConstant(N, taken));
   ctx.roundingAvar = roundingAvar;

@@ -20,6 +20,7 @@
 #include "errormodels/diagnose/candidate.hpp"
 #include "common/units.hpp"
 #include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/series_stats.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
@@ -54,6 +55,8 @@ struct DetectorContext {
   /// The sinusoid lines already taken out of y (Candidate::line of the accepted ones): what is
   /// left near one is that line's own width or distortion, not another line.
   std::vector<Line> linesTaken;
+  /// cosineSpectrum(y), made once: the record's side of every shape's GLS test (regressorTest).
+  CosineSpectrum ySpectrum;
 
   /// x without its least-squares projection on the constant, `taken` and `beside`: the part of a
   /// shape the record without the taken signals can still show. A coefficient on it is the joint

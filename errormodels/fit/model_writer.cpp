@@ -158,6 +158,13 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
   }
 }
 
+/// A parameter's ln-space 1-sigma interval exp(logCenter - logLower)..exp(logCenter + logUpper)
+/// (LatentParameter::logScale), each end formatted by `at`.
+template <class P, class At>
+std::string lnRange(const P& p, At at) {
+  return at(std::exp(p.logCenter - p.logLower)) + ".." + at(std::exp(p.logCenter + p.logUpper));
+}
+
 /// The selection-aware statement (LatentFit::averaged) as comments: every parameter of the sets
 /// the data support, with its weight of inclusion and the 1-sigma that includes the set choice.
 void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
@@ -178,8 +185,7 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
     std::string value = at(a.value) + " +- " + (tau ? num(a.stdError, 3) + " s" : q4(k * a.stdError, unit)) +
                         (n == "quantization" ? " (lsb)" : "");
     if (a.logScale)  // the ln-space interval (a tau's profile, an amplitude's Wald in ln; LatentParameter)
-      value += std::string(tau ? " (profile" : " (ln-space") + " 1-sigma " + at(std::exp(a.logCenter - a.logLower)) +
-               ".." + at(std::exp(a.logCenter + a.logUpper)) + ")";
+      value += std::string(tau ? " (profile" : " (ln-space") + " 1-sigma " + lnRange(a, at) + ")";
     b.line << "  " << n << " " << value << ", weight " << num(a.inclusion, 2);
     b.endComment();
   }
@@ -212,9 +218,7 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   auto sd = [&](const std::string& name) { return f.parameter(name).stdError; };
   // An amplitude's ln-space 1-sigma interval (LatentParameter::logScale), in the comment's unit.
   auto ln = [&](const std::string& name, double k, const std::string& unit) {
-    const LatentParameter& p = f.parameter(name);
-    return "; ln-space " + q4(k * std::exp(p.logCenter - p.logLower), unit) + ".." +
-           q4(k * std::exp(p.logCenter + p.logUpper), unit);
+    return "; ln-space " + lnRange(f.parameter(name), [&](double si) { return q4(k * si, unit); });
   };
   const Dimension time = Dimension::time();
   const LatentModel& m = f.model;
@@ -249,9 +253,8 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     const std::string n = "gm" + std::to_string(g + 1);
     const LatentParameter& tau = f.parameter(n + ".tau");
     b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << " (1 sigma" << ln(n + ".sigma", 1.0, u.level)
-           << "), tau +- " << num(tau.stdError, 4)
-           << " s (1 sigma; profile-likelihood 1-sigma interval " << num(std::exp(tau.logCenter - tau.logLower), 4)
-           << ".." << num(std::exp(tau.logCenter + tau.logUpper), 4) << " s)";
+           << "), tau +- " << num(tau.stdError, 4) << " s (1 sigma; profile-likelihood 1-sigma interval "
+           << lnRange(tau, [](double v) { return num(v, 4); }) << " s)";
     b.endComment();
     b.add(EffectSpec::make(
         "gauss_markov",
