@@ -36,6 +36,26 @@ ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
 POOLS = {"all": g.CATALOGUE + g.OUT_OF_CATALOGUE, "catalogue": g.CATALOGUE, "ooc": g.OUT_OF_CATALOGUE}
 
 
+def gen_module(row_or_name):
+    """The generator module of a results row (its "generator", default main) or of a name: its
+    CATALOGUE / OUT_OF_CATALOGUE / EQUIVALENT score the row. generate_alt.py (--generator alt) is an
+    independent design; imported only when used."""
+    name = row_or_name.get("generator", "main") if isinstance(row_or_name, dict) else row_or_name
+    if name == "main":
+        return g
+    import generate_alt
+    return generate_alt
+
+
+def size_key(row, h):
+    """The top-1 table's key of a one-effect row: main's sizes are the levels of SIZES; the alt
+    generator's are continuous (log-uniform 1.5-10), binned to the lower edge of [1.5, 3), [3, 6),
+    [6, 10]."""
+    if row.get("generator", "main") == "main":
+        return h["size"]
+    return max([s for s in (1.5, 3.0, 6.0) if h["size"] >= s] or [1.5])
+
+
 def draw_record(rng, max_samples, null=False, effects=None, pool="all"):
     """Rate, samples and hidden effect names; `effects` forces their number (studies of one case:
     --effects 2 --pool catalogue), drawn from POOLS[pool]."""
@@ -204,14 +224,15 @@ def score(rows):
                 sc["confusion"]["(clean)"][named] += 1
                 continue
             hid = [h["effect"] for h in r["hidden"]]
+            gm = gen_module(r)
             if len(hid) == 1:
                 h = r["hidden"][0]
                 sc["confusion"][h["effect"]][named] += 1
-                if h["effect"] in g.OUT_OF_CATALOGUE:
+                if h["effect"] in gm.OUT_OF_CATALOGUE:
                     sc["ooc"][1] += 1
-                    sc["ooc"][0] += named in g.EQUIVALENT[h["effect"]]
+                    sc["ooc"][0] += named in gm.EQUIVALENT[h["effect"]]
                 else:
-                    key = "lsb" if h["effect"] == "quantization" else h["size"]
+                    key = "lsb" if h["effect"] == "quantization" else size_key(r, h)
                     sc["top1"][key][1] += 1
                     sc["top1"][key][0] += named == h["effect"]
                     sc["by_effect"][h["effect"]][1] += 1
@@ -228,7 +249,7 @@ def score(rows):
                         sc["halved"][1] += 1
                         sc["halved"][0] += ratio <= 0.5
             else:
-                cat = [x for x in hid if x in g.CATALOGUE]
+                cat = [x for x in hid if x in gm.CATALOGUE]
                 sc["confusion"]["+".join(sorted(hid))][named] += 1
                 if len(cat) == 2:
                     sc["both"][1] += 1
@@ -253,11 +274,15 @@ def report(rows):
     errors = sum("error" in r.get("result", {}) for r in rows)
     print(f"records: {len(rows)}  (diagnose failed on {errors})")
     top1 = sc["top1"]
+    alt = any(r.get("generator", "main") != "main" for r in rows)
     for k in sorted(x for x in top1 if x != "lsb"):
-        print(f"top-1 correct, one effect at {k:4.1f}x base ADEV: {pct(*top1[k])}")
+        if alt:  # size_key: the alt generator's continuous sizes binned (its own size definition)
+            print(f"top-1 correct, one effect at {k:4.1f}x and up to the next bin (alt sizes): {pct(*top1[k])}")
+        else:
+            print(f"top-1 correct, one effect at {k:4.1f}x base ADEV: {pct(*top1[k])}")
     ge3 = at_least_3x(top1)
     print(f"top-1 correct, one effect at >= 3x:             {pct(*ge3)}")
-    print(f"top-1 correct, quantization (LSB 0.75-5 sd):    {pct(*top1['lsb'])}")
+    print(f"top-1 correct, quantization (LSB {'0.5' if alt else '0.75'}-5 sd):    {pct(*top1['lsb'])}")
     print(f"both effects found on two-effect channels:      {pct(*sc['both'])}")
     print(f"  ... where each is >= {VISIBLE}x the base + the other's ADEV at some tau: {pct(*sc['both_visible'])}")
     print(f"false alarms on clean channels:                 {pct(*sc['clean'])}")
@@ -288,25 +313,36 @@ def in_subset(row, subset):
     catalogue effect at 1.5x, strong = one at >= 3x (the cases of four floors, to iterate on a
     benchmark slice without its other records)."""
     hid = [h["effect"] for h in row["hidden"]]
+    gm = gen_module(row)
     if subset == "ooc":
-        return len(hid) == 1 and hid[0] in g.OUT_OF_CATALOGUE
+        return len(hid) == 1 and hid[0] in gm.OUT_OF_CATALOGUE
+    if subset == "weak" and gm is not g:  # alt: sizes are continuous, weak = below 3x
+        return (len(hid) == 1 and hid[0] in gm.CATALOGUE and hid[0] != "quantization"
+                and row["hidden"][0]["size"] < 3)
     if subset == "weak":
         return len(hid) == 1 and hid[0] in g.CATALOGUE and row["hidden"][0]["size"] == 1.5
     if subset == "strong":
-        return len(hid) == 1 and hid[0] in g.CATALOGUE and hid[0] != "quantization" and row["hidden"][0]["size"] >= 3
-    return len(hid) == 2 and all(x in g.CATALOGUE for x in hid)
+        return len(hid) == 1 and hid[0] in gm.CATALOGUE and hid[0] != "quantization" and row["hidden"][0]["size"] >= 3
+    return len(hid) == 2 and all(x in gm.CATALOGUE for x in hid)
 
 
 def run_one(a, i):
     rng = np.random.default_rng([a.seed, i])
-    bases = a.bases.split(",") if a.bases else BASES
-    row = make(rng, i, a.work, a.max_samples, bases, a.null, getattr(a, "effects", None),
-               getattr(a, "pool", "all"))
+    generator = getattr(a, "generator", "main")
+    if generator == "main":
+        bases = a.bases.split(",") if a.bases else BASES
+        row = make(rng, i, a.work, a.max_samples, bases, a.null, getattr(a, "effects", None),
+                   getattr(a, "pool", "all"))
+    else:  # the independent generator: its own base families (--bases names them), effects, sizes
+        row = gen_module(generator).make(rng, i, a.work, a.max_samples,
+                                         a.bases.split(",") if a.bases else None, a.null,
+                                         getattr(a, "effects", None), getattr(a, "pool", "all"))
+        row["generator"] = generator
     if getattr(a, "subset", None) and not in_subset(row, a.subset):
         os.remove(row["record"])
         return None
     row["result"] = diagnose(a.sinsim, row, a)
-    if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in g.CATALOGUE:
+    if a.add and len(row["hidden"]) == 1 and row["hidden"][0]["effect"] in gen_module(row).CATALOGUE:
         res = row["result"].get(row["channel"], {})
         if (res.get("findings") or [None])[0] == row["hidden"][0]["effect"]:
             row["add"] = diagnose(a.sinsim, row, a, f'{row["hidden"][0]["effect"]}:{row["channel"]}')
@@ -327,7 +363,11 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="records diagnosed at once")
     ap.add_argument("--realisations", type=int, default=32)
     ap.add_argument("--threshold", type=float, default=None, help="diagnose --threshold")
-    ap.add_argument("--bases", default="", help="comma list of base families (default: all)")
+    ap.add_argument("--bases", default="", help="comma list of base families (default: all; the "
+                    "alt generator's: w2gm, wgmrw, wflk, ar)")
+    ap.add_argument("--generator", choices=["main", "alt"], default="main",
+                    help="record generator: main (generate.py) or alt (generate_alt.py, an "
+                         "independent design; rows carry \"generator\": \"alt\")")
     ap.add_argument("--null", action="store_true", help="no hidden effects (threshold calibration)")
     ap.add_argument("--effects", type=int, default=None,
                     help="hidden effects per record (default: 0, 1 or 2 drawn); a study of one case")
