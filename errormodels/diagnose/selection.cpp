@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -400,6 +401,89 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
   return best;
 }
 
+/// Accepts candidate `best` of the last trial round: added to the set at its trial's fit; a signal
+/// is taken out of the record (and an AR base refitted without it) and the candidates proposed
+/// again on what is left (remeasure). Returns its finding.
+Finding accept(ChannelWork& w, Trials& t, std::size_t best) {
+  Finding f;
+  f.effect = w.cands[best].effect;
+  f.score = t.score[best];
+  f.drop = t.drop[best];
+  f.reported = true;
+  const Candidate& c = w.cands[best];
+  w.accepted.push_back(best);
+  w.sol = t.sol[best];
+  if (c.roundedRealisations && w.rounded.W.size() > 0) {
+    // The rounded model's Allan estimates scatter as its rounded realisations' do (more where
+    // few samples leave their cell): later trials are weighed with that scatter.
+    w.prob.W = w.rounded.W;
+    w.prob.bias = w.rounded.bias;
+    w.sol = solveAllan(w.prob, allanSet(w), w.sol.theta);
+  }
+  // c refers into w.cands, which remeasure() replaces: not used after it.
+  if (!c.signal.empty()) {  // taken out of the record (and the AR base refitted without it)
+    if (w.arOrder > 0) {
+      std::vector<double> av;
+      const auto refitted = trialProblem(w, c, &av);
+      if (t.refit[best]) w.prob = refitted;
+      w.baseAvar = av;  // later refits scale the model by their change from this one
+    }
+    w.removed.resize(c.signal.size(), 0.0);
+    for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
+    w.taken.insert(w.taken.end(), c.basis.begin(), c.basis.end());
+    remeasure(w, t);
+    auto start = w.sol.theta;
+    start.pop_back();
+    w.sol = solveAllan(w.prob, allanSet(w), start);
+  }
+  return f;
+}
+
+/// Whether the temperature candidate `temp`, which passed `threshold` in the last full trial round,
+/// only imitates a noise of that round that passed it too (a candidate without a signal): that
+/// noise x still passes `next` with the temperature taken, while the temperature does not pass
+/// `next` with x taken. A temperature column that no drift follows (a chamber's cycle, the room's
+/// wander) correlates by chance with a walk's or a flicker's realised wander, and its fitted
+/// polynomial takes part of that wander out of the record: alone it passes, beside the noise it
+/// imitates it does not. Where neither passes beside the other the temperature keeps its place
+/// ("regress on it first"), and so it does against shapes (a ramp, a warm-up): their likeness to
+/// a warming profile is the temperature's own, not chance. Each noise is tried by its best
+/// variant, the largest drop first.
+bool temperatureImitates(const ChannelWork& w, double penalty, const Trials& t, std::size_t temp, double threshold,
+                         double next) {
+  std::vector<std::size_t> others;  // the best variant of each other effect that passes
+  for (std::size_t i = 0; i < w.cands.size(); ++i) {
+    if (!stillOpen(w, i) || !w.cands[i].signal.empty() || t.drop[i] < threshold * threshold) continue;
+    auto same = std::find_if(others.begin(), others.end(), [&](std::size_t j) { return w.cands[j].effect == w.cands[i].effect; });
+    if (same == others.end()) others.push_back(i);
+    else if (t.drop[i] > t.drop[*same]) *same = i;
+  }
+  std::sort(others.begin(), others.end(), [&](std::size_t a, std::size_t b) { return t.drop[a] > t.drop[b]; });
+  std::optional<ChannelWork> withT;
+  Trials tt;
+  for (std::size_t x : others) {
+    ChannelWork withX = w;
+    Trials tx = t;
+    accept(withX, tx, x);
+    const std::ptrdiff_t tempBesideX = trialRound(withX, penalty, tx, "temperature");
+    if (tempBesideX >= 0 && tx.drop[std::size_t(tempBesideX)] >= next * next) continue;
+    if (!withT) withT = w, tt = t, accept(*withT, tt, temp);
+    const std::ptrdiff_t xBesideT = trialRound(*withT, penalty, tt, w.cands[x].effect);
+    if (xBesideT >= 0 && tt.drop[std::size_t(xBesideT)] >= next * next) return true;
+  }
+  return false;
+}
+
+/// The open candidate of the largest drop in the last trial round whose effect is not `except`;
+/// -1 when none is open.
+std::ptrdiff_t bestOtherThan(const ChannelWork& w, const Trials& t, const std::string& except) {
+  std::ptrdiff_t x = -1;
+  for (std::size_t i = 0; i < w.cands.size(); ++i)
+    if (stillOpen(w, i) && w.cands[i].effect != except && (x < 0 || t.drop[i] > t.drop[std::size_t(x)]))
+      x = std::ptrdiff_t(i);
+  return x;
+}
+
 /// One finding per effect still open (its best variant; a further line of a sinusoid), by score.
 std::vector<Finding> otherFindings(const ChannelWork& w, const Trials& t) {
   std::vector<Finding> rest;
@@ -541,8 +625,9 @@ void selectFindings(ChannelWork& w, double first, double next) {
   // With a temperature column the temperature is tried first in every round (issue 12: "regress
   // on it first"): a thermal drift has the shape of the record's temperature in time, which a
   // warm-up, a ramp or a random walk can imitate; when the temperature alone passes the threshold
-  // it is taken before them, and they are tried on what it leaves. A round after an accepted
-  // signal tries it again on the record without that signal (spikes hide a thermal drift).
+  // it is taken before them, and they are tried on what it leaves -- unless it only imitates the
+  // best other candidate (temperatureImitates: a column no drift follows). A round after an
+  // accepted signal tries it again on the record without that signal (spikes hide a thermal drift).
   auto temperaturePending = [&w] {
     for (std::size_t i = 0; i < w.cands.size(); ++i)
       if (w.cands[i].effect == "temperature" &&
@@ -554,41 +639,16 @@ void selectFindings(ChannelWork& w, double first, double next) {
     const double threshold = w.accepted.empty() ? first : next;
     const bool temperatureRound = temperaturePending();
     std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
-    if (temperatureRound && (best < 0 || t.drop[std::size_t(best)] < threshold * threshold))
+    if (temperatureRound) {
+      const std::ptrdiff_t temp = best >= 0 && t.drop[std::size_t(best)] >= threshold * threshold ? best : -1;
       best = trialRound(w, penalty, t);
+      if (temp >= 0)
+        best = temperatureImitates(w, penalty, t, std::size_t(temp), threshold, next)
+                   ? bestOtherThan(w, t, "temperature")
+                   : temp;
+    }
     if (best < 0 || t.drop[std::size_t(best)] < threshold * threshold) break;
-    Finding f;
-    f.effect = w.cands[std::size_t(best)].effect;
-    f.score = t.score[std::size_t(best)];
-    f.drop = t.drop[std::size_t(best)];
-    f.reported = true;
-    const Candidate& c = w.cands[std::size_t(best)];
-    w.accepted.push_back(std::size_t(best));
-    w.sol = t.sol[std::size_t(best)];
-    if (c.roundedRealisations && w.rounded.W.size() > 0) {
-      // The rounded model's Allan estimates scatter as its rounded realisations' do (more where
-      // few samples leave their cell): later trials are weighed with that scatter.
-      w.prob.W = w.rounded.W;
-      w.prob.bias = w.rounded.bias;
-      w.sol = solveAllan(w.prob, allanSet(w), w.sol.theta);
-    }
-    // c refers into w.cands, which remeasure() replaces: not used after it.
-    if (!c.signal.empty()) {  // taken out of the record (and the AR base refitted without it)
-      if (w.arOrder > 0) {
-        std::vector<double> av;
-        const auto refitted = trialProblem(w, c, &av);
-        if (t.refit[std::size_t(best)]) w.prob = refitted;
-        w.baseAvar = av;  // later refits scale the model by their change from this one
-      }
-      w.removed.resize(c.signal.size(), 0.0);
-      for (std::size_t k = 0; k < c.signal.size(); ++k) w.removed[k] += c.signal[k];
-      w.taken.insert(w.taken.end(), c.basis.begin(), c.basis.end());
-      remeasure(w, t);
-      auto start = w.sol.theta;
-      start.pop_back();
-      w.sol = solveAllan(w.prob, allanSet(w), start);
-    }
-    d.findings.push_back(f);
+    d.findings.push_back(accept(w, t, std::size_t(best)));
   }
   dropRedundant(w, penalty, t, d.findings);
   restateSignals(w);
