@@ -118,7 +118,8 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
 }
 
 /// The change of one channel: the wanted effects sized, a base AR at the record's rate refitted
-/// (base_refit.hpp; other bases keep their parameters and take the level refit), the effects'
+/// (base_refit.hpp, when the AR is the channel's whole base: soleBaseAr; other bases keep their
+/// parameters and take the level refit), the effects'
 /// effects into edits.
 AxisChange improveChannel(const ChannelWork& w, const Record& record, const ErrorModelSpec& model,
                           const std::vector<AddRequest>& adds, ModelEdits& edits,
@@ -130,7 +131,7 @@ AxisChange improveChannel(const ChannelWork& w, const Record& record, const Erro
   const auto c = std::size_t(w.channel);
   std::vector<const Candidate*> set;
   AllanSolution sol = fitWanted(w, wanted, model, set, notes);
-  const auto arBase = baseAr(model, w.channel, record.rate_hz);
+  const auto arBase = soleBaseAr(model, w.channel, record.rate_hz);
   if (arBase) edits.arReplace[c] = refitBaseAr(w, record, arBase->size() - 1, set, sol);
   const bool arRefitted = !edits.arReplace[c].empty();
   for (std::size_t j = 0; j < set.size(); ++j) {

@@ -98,6 +98,14 @@ std::optional<std::vector<double>> baseAr(const ErrorModelSpec& model, int chann
   return poly;
 }
 
+std::optional<std::vector<double>> soleBaseAr(const ErrorModelSpec& model, int channel, double rate) {
+  const SensorSpec& s = model.sensor(sensorOf(channel));
+  for (const auto* list : {&s.all, &s.list(axisList(channel % 3))})
+    for (const auto& e : *list)
+      if (e.type != "ar" && e.enabled) return std::nullopt;
+  return baseAr(model, channel, rate);
+}
+
 ErrorModelSpec editedModel(ErrorModelSpec model, const ModelEdits& edits) {
   for (double s : edits.varianceScale)
     if (!(std::isfinite(s) && s > 0))

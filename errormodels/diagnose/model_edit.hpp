@@ -15,6 +15,13 @@ namespace sinsim::errormodels::diagnose::detail {
 /// relative); nullopt otherwise.
 std::optional<std::vector<double>> baseAr(const ErrorModelSpec& model, int channel, double rate);
 
+/// baseAr when that `ar` is the channel's whole base (no other enabled effect acts on it): the
+/// AR then stands for all of the record's noise, as the seed paper's fit makes it, and may be
+/// refitted on the record with added effects taken out. Beside other terms (white noise, a
+/// lattice, slow terms) a Burg refit on the record would take their noise into the AR as well,
+/// and the model would count it twice.
+std::optional<std::vector<double>> soleBaseAr(const ErrorModelSpec& model, int channel, double rate);
+
 /// What improve() changes, per channel (0..5 = gx..az).
 struct ModelEdits {
   std::array<std::vector<EffectSpec>, 6> add;                  ///< appended to the axis list
