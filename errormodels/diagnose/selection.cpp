@@ -625,9 +625,10 @@ void selectFindings(ChannelWork& w, double first, double next) {
   // With a temperature column the temperature is tried first in every round (issue 12: "regress
   // on it first"): a thermal drift has the shape of the record's temperature in time, which a
   // warm-up, a ramp or a random walk can imitate; when the temperature alone passes the threshold
-  // it is taken before them, and they are tried on what it leaves -- unless it only imitates the
-  // best other candidate (temperatureImitates: a column no drift follows). A round after an
-  // accepted signal tries it again on the record without that signal (spikes hide a thermal drift).
+  // it is taken before them, and they are tried on what it leaves -- unless it only imitates a
+  // noise that passes too (temperatureImitates: a column no drift follows); the round then takes
+  // the best other candidate. A round after an accepted signal tries it again on the record
+  // without that signal (spikes hide a thermal drift).
   auto temperaturePending = [&w] {
     for (std::size_t i = 0; i < w.cands.size(); ++i)
       if (w.cands[i].effect == "temperature" &&
