@@ -474,12 +474,12 @@ bool temperatureImitates(const ChannelWork& w, double penalty, const Trials& t, 
   return false;
 }
 
-/// The open candidate of the largest drop in the last trial round whose effect is not `except`;
-/// -1 when none is open.
-std::ptrdiff_t bestOtherThan(const ChannelWork& w, const Trials& t, const std::string& except) {
+/// The open candidate of the largest drop in the last trial round whose effect is (`is`) or is not
+/// `effect`; -1 when there is none.
+std::ptrdiff_t bestOpen(const ChannelWork& w, const Trials& t, const std::string& effect, bool is) {
   std::ptrdiff_t x = -1;
   for (std::size_t i = 0; i < w.cands.size(); ++i)
-    if (stillOpen(w, i) && w.cands[i].effect != except && (x < 0 || t.drop[i] > t.drop[std::size_t(x)]))
+    if (stillOpen(w, i) && (w.cands[i].effect == effect) == is && (x < 0 || t.drop[i] > t.drop[std::size_t(x)]))
       x = std::ptrdiff_t(i);
   return x;
 }
@@ -622,32 +622,21 @@ void selectFindings(ChannelWork& w, double first, double next) {
   markJumps(w, *w.y);
   Trials t;
   t.resize(w.cands.size());
-  // With a temperature column the temperature is tried first in every round (issue 12: "regress
+  // With a temperature column the temperature is taken first in every round (issue 12: "regress
   // on it first"): a thermal drift has the shape of the record's temperature in time, which a
-  // warm-up, a ramp or a random walk can imitate; when the temperature alone passes the threshold
-  // it is taken before them, and they are tried on what it leaves -- unless it only imitates a
-  // noise that passes too (temperatureImitates: a column no drift follows); the round then takes
-  // the best other candidate. A round after an accepted signal tries it again on the record
-  // without that signal (spikes hide a thermal drift).
-  auto temperaturePending = [&w] {
-    for (std::size_t i = 0; i < w.cands.size(); ++i)
-      if (w.cands[i].effect == "temperature" &&
-          std::find(w.accepted.begin(), w.accepted.end(), i) == w.accepted.end())
-        return true;
-    return false;
-  };
+  // warm-up, a ramp or a random walk can imitate; when the temperature passes the threshold it is
+  // taken before them, and they are tried on what it leaves -- unless it only imitates a noise
+  // that passes too (temperatureImitates: a column no drift follows); the round then takes the
+  // best other candidate. A round after an accepted signal tries it again on the record without
+  // that signal (spikes hide a thermal drift).
   for (;;) {
     const double threshold = w.accepted.empty() ? first : next;
-    const bool temperatureRound = temperaturePending();
-    std::ptrdiff_t best = trialRound(w, penalty, t, temperatureRound ? "temperature" : "");
-    if (temperatureRound) {
-      const std::ptrdiff_t temp = best >= 0 && t.drop[std::size_t(best)] >= threshold * threshold ? best : -1;
-      best = trialRound(w, penalty, t);
-      if (temp >= 0)
-        best = temperatureImitates(w, penalty, t, std::size_t(temp), threshold, next)
-                   ? bestOtherThan(w, t, "temperature")
-                   : temp;
-    }
+    std::ptrdiff_t best = trialRound(w, penalty, t);
+    const std::ptrdiff_t temp = bestOpen(w, t, "temperature", true);
+    if (temp >= 0 && t.drop[std::size_t(temp)] >= threshold * threshold)
+      best = temperatureImitates(w, penalty, t, std::size_t(temp), threshold, next)
+                 ? bestOpen(w, t, "temperature", false)
+                 : temp;
     if (best < 0 || t.drop[std::size_t(best)] < threshold * threshold) break;
     d.findings.push_back(accept(w, t, std::size_t(best)));
   }
