@@ -20,9 +20,9 @@ std::vector<double> modelAvarOf(const AllanProblem& p, const std::vector<const C
 
 namespace {
 
-/// chi2(x) = r' W r, r_k = L_k - bias_k - ln M_k, M = e^x0 mu + fixed + sum_i x_i scale_i g_i over
-/// the free candidates i. The scale_i is the theta that alone explains the largest share of the
-/// measurement at some tau, so that every x_i is of order 1.
+/// chi2(x) = r' W r + (x0 / kLevelLnSd)^2, r_k = L_k - bias_k - ln M_k, M = e^x0 mu + fixed +
+/// sum_i x_i scale_i g_i over the free candidates i. The scale_i is the theta that alone explains
+/// the largest share of the measurement at some tau, so that every x_i is of order 1.
 class AllanObjective {
  public:
   AllanObjective(const AllanProblem& p, const std::vector<const Candidate*>& set, bool fixLevel)
@@ -61,7 +61,7 @@ class AllanObjective {
           (*J)(k, 1 + i) = -scale_[i] * set_[freeIdx_[i]]->g[k] / M;
       }
     }
-    return r.dot(p_.W * r);
+    return r.dot(p_.W * r) + priorW_ * x[0] * x[0];
   }
 
   /// Level alone (a few Gauss-Newton steps on ln s, step halving) for the given sizes.
@@ -71,7 +71,7 @@ class AllanObjective {
     double chi = evaluate(x, r, &J);
     for (int it = 0; it < 30; ++it) {
       const Eigen::VectorXd j0 = J.col(0);
-      const double h = j0.dot(p_.W * j0), g = j0.dot(p_.W * r);
+      const double h = j0.dot(p_.W * j0) + priorW_, g = j0.dot(p_.W * r) + priorW_ * x[0];
       if (fixLevel_ || !(h > 0)) break;
       Eigen::VectorXd xn = x;
       double step = -g / h;
@@ -121,8 +121,9 @@ class AllanObjective {
     double chi = evaluate(x, r, &J);
     double lambda = 1e-3;
     for (int it = 0; it < 300; ++it) {
-      const Eigen::MatrixXd H = J.transpose() * p_.W * J;
-      const Eigen::VectorXd g = J.transpose() * p_.W * r;
+      Eigen::MatrixXd H = J.transpose() * p_.W * J;
+      Eigen::VectorXd g = J.transpose() * p_.W * r;
+      H(0, 0) += priorW_, g[0] += priorW_ * x[0];  // the level's prior: one more residual ln s / sd
       bool improved = false;
       for (int tries = 0; tries < 12; ++tries) {
         Eigen::MatrixXd A = H;
@@ -164,6 +165,7 @@ class AllanObjective {
   std::vector<std::size_t> freeIdx_;
   std::vector<double> scale_;     // theta_i = x_i scale_i
   std::vector<double> fixedSum_;  // AVAR of the fixed-size candidates [SI^2]
+  static constexpr double priorW_ = 1.0 / (kLevelLnSd * kLevelLnSd);  // the level's prior weight
 };
 
 }  // namespace
