@@ -909,17 +909,19 @@ TEST_CASE("an AR beside white noise is not refitted when an effect is added", "[
 
 // On a channel whose Allan curve is white over the whole measured tau, a white noise the model
 // lacks raises the curve by one factor, which the fitted level s took whole: nothing was reported
-// (the independent generator's white + GM + walk channels at 1600 Hz, 4-6x, "Twenty-third
-// session"). The level's prior (allan_chi2.hpp, kLevelLnSd: the model's level known to 1.5x in
-// Allan variance) makes a 4x white noise (Allan variance 16x: (ln 16 / ln 1.5)^2 = 46.8, less one
-// parameter's ln K) a finding, and leaves a 1.5x one (2.25x: 4.0) the model's level.
-TEST_CASE("a white noise far above the model's is named white and a small excess is its level", "[diagnose][selection]") {
-  const std::string model = "gyro:\n  x:\n    - {type: white, density: 0.01 deg/s/sqrt(Hz)}\n";
+// (the independent generator's white + GM + walk channels at 1600 Hz, 4-6x; docs/diagnose.md,
+// "Twenty-fourth session"). The level's prior (allan_chi2.hpp, kLevelLnSd: the model's level known
+// to 1.5x in Allan variance) makes a 4x white noise (Allan variance 16x: (ln 16 / ln 1.5)^2 = 46.8,
+// less one parameter's ln K) a finding, and leaves a 1.5x one (2.25x: 4.0) the model's level.
+TEST_CASE("a white noise far above the model's is named white and a small excess is its level",
+          "[diagnose][selection]") {
+  auto white = [](const std::string& density) {
+    return "gyro:\n  x:\n    - {type: white, density: " + density + " deg/s/sqrt(Hz)}\n";
+  };
+  const auto model = errorModelFromString(white("0.01"), "model.yaml");
   for (std::uint64_t seed = 1500; seed < 1504; ++seed) {
-    const auto big = dg::diagnose(simulate("gyro:\n  x:\n    - {type: white, density: 0.04 deg/s/sqrt(Hz)}\n", 30000, seed),
-                                  errorModelFromString(model, "model.yaml"), gxOnly(seed));
-    const auto small = dg::diagnose(simulate("gyro:\n  x:\n    - {type: white, density: 0.015 deg/s/sqrt(Hz)}\n", 30000, seed),
-                                    errorModelFromString(model, "model.yaml"), gxOnly(seed));
+    const auto big = dg::diagnose(simulate(white("0.04"), 30000, seed), model, gxOnly(seed));
+    const auto small = dg::diagnose(simulate(white("0.015"), 30000, seed), model, gxOnly(seed));
     INFO("seed " << seed << ": 4x reported " << reportedList(big.axis("gx")) << ", 1.5x reported "
                  << reportedList(small.axis("gx")));
     CHECK(reportedList(big.axis("gx")) == "white ");
