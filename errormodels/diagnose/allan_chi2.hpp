@@ -17,7 +17,7 @@ namespace sinsim::errormodels::diagnose::detail {
 /// measured tau a missing white noise of 4-6x is only a level (the `level:` line, no finding).
 /// A level 3x off in Allan deviation costs (ln 9 / ln 1.5)^2 = 29; with a candidate's penalty
 /// (ln K) the prior alone names an effect (score 5.5) from ~3.2x on.
-constexpr double kLevelLnSd = 0.405;  // ln 1.5
+constexpr double kLevelLnSd = 0.405;  // ln 1.5 = 0.4055, to three digits
 
 /// The Allan chi-square problem of one channel.
 struct AllanProblem {
