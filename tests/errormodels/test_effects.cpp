@@ -32,7 +32,7 @@ ImuSample sample(double t, double dt, Vec3 dth = Vec3::Zero(),
 
 TEST_CASE("every catalogue effect is registered under its YAML name") {
   for (const char* name : {"white", "random_walk", "gauss_markov", "ar", "bias_instability", "bias",
-                           "quantization", "scale_factor", "misalignment", "g_sensitivity",
+                           "bias_jumps", "quantization", "scale_factor", "misalignment", "g_sensitivity",
                            "temperature", "sinusoid", "ramp", "warmup"})
     CHECK(findEffectType(name) != nullptr);
   CHECK(findEffectType("whyte") == nullptr);
@@ -264,10 +264,12 @@ gyro:
     - {type: bias_instability, floor: 10 deg/h, tau_range: [1 s, 1000 s]}
     - {type: ar, a: [-1.0604, -0.30249, 0.043657, 0.18006, 0.14555], sigma: 0.021 deg/s, rate: 1 kHz}
     - {type: outliers, rate: 0.5 Hz, amplitude: 1 deg/s}
+    - {type: bias_jumps, rate: 0.2 Hz, size: 0.05 deg/s}
     - {type: ramp, slope: 1 deg/h^2}
     - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC]}
     - {type: quantization, lsb: 0.001 deg}
-  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 12.34 Hz, phase: 30 deg}]
+  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 12.34 Hz, phase: 30 deg},
+      {type: bias_jumps, rate: 1 Hz, size: 0.02 deg/s, telegraph: yes}]
   z: [{type: warmup, amplitude: 0.1 deg/s, tau: 2 s}]
 accel:
   all:

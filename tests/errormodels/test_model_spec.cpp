@@ -60,6 +60,7 @@ accel:
     - {type: temperature, T0: 25 degC, coefficients: [0.1 mg/degC, 0.001 mg/degC^2]}
     - {type: warmup, amplitude: 1 mg, tau: 60 s}
     - {type: outliers, rate: 0.01 Hz, amplitude: 50 mg}
+    - {type: bias_jumps, rate: 0.002 Hz, size: 0.5 mg, telegraph: yes}
     - {type: quantization, lsb: 0.1 mg, carry: true}
   x: []
 )";

@@ -266,6 +266,60 @@ TEST_CASE("bias_instability: Allan floor 0.664 B over tau_range, at 100 Hz and 1
   }
 }
 
+TEST_CASE("bias_jumps steps: P(no jump) = exp(-rate T), final level variance rate T size^2") {
+  // A compound Poisson process (Poisson arrivals of rate lambda, N(0, s^2) jumps): over T the
+  // number of jumps is Poisson(mu = lambda T), so P(none) = e^-mu, and the level L_T given N
+  // jumps is N(0, N s^2), so E L_T^2 = mu s^2 and Var L_T^2 = s^4 (3 E N^2 - mu^2) = s^4
+  // (3 mu + 2 mu^2). Both bounds are exact (binomial; the mean of R independent L_T^2), not
+  // Gaussian-process approximations. At most one jump per interval: P(two) ~ (lambda dt)^2 / 2
+  // per interval, 2.5e-5 of the runs here.
+  const double s = 0.1 * kDeg, lambda = 0.02, T = 100.0, mu = lambda * T;
+  auto m = gyroX("{type: bias_jumps, rate: 0.02 Hz, size: 0.1 deg/s}");
+  for (double rate : {100.0, 1000.0}) {
+    INFO("IMU rate " << rate << " Hz");
+    const int runs = rate > 500 ? 600 : 3000;
+    int none = 0;
+    double sumL2 = 0;
+    for (int k = 0; k < runs; ++k) {
+      const auto x = simulateRates(m, rate, std::size_t(rate * T), 21, std::uint64_t(k));
+      bool flat = true;
+      for (double v : x) flat = flat && v == 0.0;
+      none += flat;
+      sumL2 += x.back() * x.back();
+    }
+    const double p0 = std::exp(-mu), sdP = std::sqrt(p0 * (1 - p0) / runs);
+    INFO("no jump in " << none << " of " << runs << " runs, expected " << p0 * runs);
+    CHECK(std::fabs(double(none) / runs - p0) <= 5 * sdP);
+    const double meanL2 = sumL2 / runs, sdL2 = s * s * std::sqrt((3 * mu + 2 * mu * mu) / runs);
+    INFO("E L_T^2 " << meanL2 << " vs " << mu * s * s << " +- " << sdL2);
+    CHECK(std::fabs(meanL2 - mu * s * s) <= 5 * sdL2);
+  }
+}
+
+TEST_CASE("bias_jumps telegraph: two levels +-size/2 and the ACF of a GM of tau 1/(2 rate)") {
+  // A random telegraph between +-a switching at rate lambda has E x(t) x(t+h) = a^2 e^(-2 lambda
+  // |h|): the continuous Gauss-Markov's with sigma = a, tau = 1/(2 lambda), so its interval
+  // averages have the continuous-GM ACF of the gauss_markov test. The bounds are Bartlett's for a
+  // Gaussian process; a two-level process has a negative fourth cumulant, which only lowers the
+  // variance of the autocovariance estimates. Intervals without a switch hold exactly +-a.
+  const double a = 0.05 * kDeg, lambda = 0.5, tau = 1.0 / (2 * lambda);
+  auto m = gyroX("{type: bias_jumps, rate: 0.5 Hz, size: 0.1 deg/s, telegraph: yes}");
+  for (double rate : {100.0, 1000.0}) {
+    INFO("IMU rate " << rate << " Hz");
+    const double D = 1.0 / rate, phi = std::exp(-D / tau);
+    auto x = simulateRates(m, rate, std::size_t(rate * 2000), 22, 0);
+    std::size_t onLevel = 0;
+    for (double v : x) onLevel += std::fabs(std::fabs(v) - a) <= 1e-12 * a;
+    // a switch moves one interval off the levels: ~lambda per second of the record
+    CHECK(double(x.size() - onLevel) == Approx(lambda * 2000).epsilon(0.25));
+    std::vector<double> r{2 * a * a * tau * tau / (D * D) * (D / tau - 1 + phi)};
+    for (int k = 1; k < int(40 * tau * rate) + 5; ++k)
+      r.push_back(a * a * tau * tau * (1 - phi) * (1 - phi) * std::pow(phi, k - 1) / (D * D));
+    checkAcf(x, r, 10);
+    for (double t : {0.1, 1.0, 10.0}) checkAllan({x}, r, std::size_t(t * rate));
+  }
+}
+
 TEST_CASE("streams: different runs are independent, and random access matches sequential") {
   auto m = gyroX("{type: white, density: 1 rad/s/sqrt(Hz)}");
   const std::size_t n = 200000;

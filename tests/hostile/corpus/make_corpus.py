@@ -147,6 +147,7 @@ EFFECTS = {
     "bias_instability": {"B": "1 deg/h", "tau_range": ["1 s", "1000 s"]},
     "quantization": {"lsb": "0.05 deg/s"},
     "outliers": {"rate": "0.01 Hz", "amplitude": "1 deg/s"},
+    "bias_jumps": {"rate": "0.01 Hz", "size": "0.1 deg/s", "telegraph": "yes"},
     "ar": {"a": ["-0.5", "0.2"], "sigma": "0.01 deg/s", "rate": "100 Hz"},
     "sinusoid": {"amplitude": "0.01 deg/s", "frequency": "3 Hz", "phase": "10 deg"},
     "temperature": {"T0": "25 degC", "coefficients": ["0.1 deg/h/K", "0.01 deg/h/K^2"]},
@@ -599,6 +600,10 @@ def models(c):
                                "tau_range: [100 s, 1 s]}]}\n", "reject"),
         "outliers-every-sample": ("gyro: {x: [{type: outliers, rate: 100 kHz, amplitude: "
                                   "1 deg/s}]}\n", "either"),
+        "jumps-every-sample": ("gyro: {x: [{type: bias_jumps, rate: 1e300 Hz, size: 1 deg/s}]}\n",
+                               "either"),
+        "jumps-size-huge": ("gyro: {x: [{type: bias_jumps, rate: 1 kHz, size: 1e300 deg/s}]}\n",
+                            "either"),
         "sinusoid-nyquist": ("gyro: {x: [{type: sinusoid, amplitude: 1 deg/s, frequency: 100 kHz,"
                              " phase: 0 deg}]}\n", "either"),
         "white-rate-1e12": ("gyro: {x: [{type: white, sigma: 1 deg/s, rate: 1e12 Hz}]}\n",
