@@ -126,10 +126,10 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
                   "missing; --add EFFECT[:AXIS] refits the model with it");
   c->add_option("DATA", a->data, "record: CSV or CSV.gz (t, gx gy gz, ax ay az, temp)")->required();
   c->add_option("--model", a->model, "error model file (YAML)")->required();
+  std::string addable;
+  for (const auto& e : dg::detectableEffects()) addable += e + ", ";
   c->add_option("--add", a->add,
-                "add an effect (quantization, random_walk, ramp, bias_instability, sinusoid, "
-                "temperature, warmup, outliers, or found = every reported finding), optionally on one "
-                "channel: ramp:gz")
+                "add an effect (" + addable + "or found = every reported finding), optionally on one channel: ramp:gz")
       ->take_all();
   c->add_option("--edited", a->edited, "compare with a second (user-edited) model file: before -> after");
   c->add_option("-o,--output", a->output, "improved model file (default MODEL.improved.yaml)");

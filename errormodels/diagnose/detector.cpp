@@ -159,7 +159,8 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
                                        const std::vector<std::string>& modelEffects,
                                        const std::vector<std::vector<double>>& taken,
                                        const std::vector<double>& roundingAvar,
-                                       const std::vector<Line>& linesTaken) {
+                                       const std::vector<Line>& linesTaken,
+                                       const std::vector<double>& steps) {
   const std::size_t N = y.size();
   const double dt = 1.0 / record.rate_hz;
   double mean = 0;
@@ -170,12 +171,13 @@ std::vector<Candidate> buildCandidates(const Record& record, int channel, const 
   var /= double(N);
   DetectorContext ctx{record, channel, y, N, dt, double(N) * dt, tau, setup, unitsFor(channel),
                       mean, var, lattice, blockMeans(y, dt, 2000), modelEffects,
-                      isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}, {}, {}, {},
+                      isGyro(channel) ? Dimension::angularRate() : Dimension::acceleration(), taken, {}, {}, {}, {}, {},
                       cosineSpectrum(y)};
   for (const auto& x : taken) ctx.takenBlocks.push_back(blockMeans(x, dt, 2000).m);
   if (!taken.empty()) ctx.takenBasis = orthonormalBasis(withConstant(N, taken));
   ctx.roundingAvar = roundingAvar;
   ctx.linesTaken = linesTaken;
+  ctx.steps = steps;
   std::vector<Candidate> out;
   for (const auto& d : detectorTypes()) {
     if (!d.repeatable && std::find(modelEffects.begin(), modelEffects.end(), d.effect) != modelEffects.end())

@@ -55,6 +55,9 @@ struct DetectorContext {
   /// The sinusoid lines already taken out of y (Candidate::line of the accepted ones): what is
   /// left near one is that line's own width or distortion, not another line.
   std::vector<Line> linesTaken;
+  /// The level steps the selection finds on y (stepSeries, selection.cpp: window-mean jumps, else
+  /// level shifts) as a piecewise-constant series; empty when there are none.
+  std::vector<double> steps;
   /// cosineSpectrum(y), made once: the record's side of every shape's GLS test (regressorTest).
   CosineSpectrum ySpectrum;
 
@@ -113,13 +116,14 @@ const std::vector<DetectorType>& detectorTypes();
 /// The candidates of every detector that is repeatable or whose effect is not among modelEffects,
 /// on the series y of the record's channel (the channel's samples, or them without the signals
 /// accepted so far, whose regressors are `taken`) whose value lattice is `lattice` (latticeStep
-/// of the channel as recorded).
+/// of the channel as recorded) and whose level steps are `steps` (DetectorContext::steps).
 std::vector<Candidate> buildCandidates(const Record& record, int channel, const std::vector<double>& y,
                                        double lattice, const std::vector<double>& tau, const Setup& setup,
                                        const std::vector<std::string>& modelEffects,
                                        const std::vector<std::vector<double>>& taken = {},
                                        const std::vector<double>& roundingAvar = {},
-                                       const std::vector<Line>& linesTaken = {});
+                                       const std::vector<Line>& linesTaken = {},
+                                       const std::vector<double>& steps = {});
 
 #define SINSIM_DETECTOR(effect, repeatable, summary) std::vector<Candidate> detect_##effect(const DetectorContext& ctx);
 #include "errormodels/diagnose/detectors.def"

@@ -136,12 +136,13 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
       for (std::size_t k = 0; k < r.avar.size(); ++k) rounding[k] += (r.roundedAvar[k] - r.avar[k]) / double(real.size());
     }
   w.rounded = roundedScatter(real);
-  w.propose = [&record, c, lattice, &d, &setup, effects = effectTypesOn(model, sensor, c % 3), rounding](
+  const auto modelEffects = effectTypesOn(model, sensor, c % 3);
+  w.modelJumps = std::find(modelEffects.begin(), modelEffects.end(), "bias_jumps") != modelEffects.end();
+  w.propose = [&record, c, lattice, &d, &setup, effects = modelEffects, rounding](
                   const std::vector<double>& series, const std::vector<std::vector<double>>& taken,
-                  const std::vector<Line>& linesTaken) {
-    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken);
+                  const std::vector<Line>& linesTaken, const std::vector<double>& steps) {
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken, steps);
   };
-  w.cands = w.propose(y, {}, {});
   selectFindings(w, o.threshold, o.furtherThreshold());
   w.propose = nullptr;  // it refers to this call's record and setup
   return w;

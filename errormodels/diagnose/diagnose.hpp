@@ -144,8 +144,9 @@ struct AxisDiagnosis {
   /// 2.58 sigma on one side, >= 2 points, remaining chi2 above its 0.999 quantile): what no
   /// candidate explains. Empty when the remaining misfit is within the estimation scatter.
   std::optional<FailRange> unexplained;
-  /// The level steps no reported finding takes out (a warm-up's or a temperature's signal may):
-  /// no effect of the catalogue makes them, so they are unexplained too, with time and size.
+  /// The level steps no reported finding takes out (bias_jumps does, and a warm-up's or a
+  /// temperature's signal may): unexplained too, with time and size. None where the model has
+  /// bias jumps of its own (the steps are their realisation).
   std::vector<LevelStep> unexplainedSteps;
   /// Level steps that go back and forth, explained instead by a reported switching process (a
   /// Gauss-Markov: a telegraph's autocorrelation is its) as that process' realisation.

@@ -77,7 +77,7 @@ std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a) {
   }
   if (!a.unexplainedSteps.empty())
     out.push_back(stepsText(a, a.unexplainedSteps) +
-                  "; no effect of the catalogue makes a level step (a bias jump, a telegraph switch, a knock)");
+                  "; no reported finding takes it out (bias_jumps: below the threshold)");
   return out;
 }
 

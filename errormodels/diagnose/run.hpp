@@ -24,13 +24,15 @@ struct ChannelWork {
   /// measurement's AVAR recomputed without it (selection.cpp).
   const std::vector<double>* y = nullptr;
   double rate = 0;
-  /// The detectors' candidates on a series of this channel (during the diagnosis only): proposed
-  /// again on the record without an accepted signal, so that the next effect is fitted and
+  /// The detectors' candidates on a series of this channel and its level steps (during the
+  /// diagnosis only): proposed by selectFindings once the record's steps are found, and again on
+  /// the record without an accepted signal, so that the next effect is fitted and
   /// tested on what the first leaves (a temperature fit is not bent by spikes), beside the
   /// regressors of the signals taken out (`taken`, DetectorContext::taken).
   std::function<std::vector<Candidate>(const std::vector<double>& series,
                                        const std::vector<std::vector<double>>& taken,
-                                       const std::vector<Line>& linesTaken)>
+                                       const std::vector<Line>& linesTaken,
+                                       const std::vector<double>& steps)>
       propose;
   std::vector<std::vector<double>> taken;
   /// An AR base at the record's rate is re-estimated in each trial of a candidate with a signal
@@ -57,6 +59,9 @@ struct ChannelWork {
   /// else 0: single-LSB steps on it are rounding, not level steps (diagnose.cpp).
   double lattice = 0;
   std::vector<char> explainsJumps;
+  /// The channel's model has bias jumps of its own: the record's steps are its realisation, not
+  /// unexplained.
+  bool modelJumps = false;
   /// Per candidate with a signal that takes most of the steps out but not all: ln AVAR of the
   /// record without the steps left once its signal is taken out (empty otherwise).
   std::vector<std::vector<double>> ownJumpFreeL;

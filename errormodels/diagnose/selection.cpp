@@ -185,33 +185,6 @@ std::vector<double> stepSeries(const ChannelWork& w, const std::vector<double>& 
   return steps;
 }
 
-/// The jumps of the piecewise-constant series `steps` (empty: none), with their times at `rate`.
-std::vector<LevelStep> jumpsOf(const std::vector<double>& steps, double rate) {
-  std::vector<LevelStep> out;
-  for (std::size_t k = 1; k < steps.size(); ++k)
-    if (steps[k] != steps[k - 1]) out.push_back({double(k) / rate, steps[k] - steps[k - 1]});
-  return out;
-}
-
-/// Whether level steps go back and forth: those above a quarter of the largest (a step located in
-/// two pieces is one) change sign at least four times. One bias step has none, a few disturbances
-/// up, down, up two; a telegraph's switches alternate (a switch the test misses leaves the others
-/// alternating), and so does a series of excursions that come back. Such steps are a switching
-/// process' realisation, which a candidate with its second-order statistics
-/// (Candidate::switching) explains.
-bool revertingSteps(const std::vector<LevelStep>& jumps) {
-  double largest = 0;
-  for (const auto& j : jumps) largest = std::max(largest, std::fabs(j.size));
-  int changes = 0;
-  double last = 0;
-  for (const auto& j : jumps) {
-    if (!(std::fabs(j.size) > 0.25 * largest)) continue;
-    changes += last != 0 && (j.size > 0) != (last > 0);
-    last = j.size;
-  }
-  return changes >= 4;
-}
-
 /// ln AVAR of a series of this channel on its tau grid (the Allan problem's L).
 std::vector<double> lnAvarOf(const ChannelWork& w, const std::vector<double>& x) {
   Setup s;
@@ -231,7 +204,13 @@ double spread(const std::vector<double>& s) {
   return ss;
 }
 
-/// w.steps, w.jumpFreeL, w.explainsJumps and w.ownJumpFreeL for the series x (the record without
+/// The level steps of the series x (the record without the accepted signals) under the current
+/// model: w.steps (stepSeries).
+void findSteps(ChannelWork& w, const std::vector<double>& x) {
+  w.steps = stepSeries(w, x, modelAvarOf(w.prob, allanSet(w), w.sol));
+}
+
+/// w.jumpFreeL, w.explainsJumps and w.ownJumpFreeL for the steps w.steps of the series x (the record without
 /// the accepted signals). A level jump (a bias step, a telegraph switch, a disturbance of the test
 /// stand) is no effect of the catalogue, and every candidate's Allan shape can absorb part of its
 /// excess: a single step has exactly a random walk's Allan variance, a telegraph's switches make a
@@ -250,7 +229,6 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.explainsJumps.assign(w.cands.size(), 0);
   w.ownJumpFreeL.assign(w.cands.size(), {});
   const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
-  w.steps = stepSeries(w, x, modelAvar);
   const auto& steps = w.steps;
   if (steps.empty()) return;
   std::vector<double> r(x.size());
@@ -285,6 +263,7 @@ void remeasure(ChannelWork& w, Trials& t) {
   std::vector<double> x = *w.y;
   for (std::size_t k = 0; k < x.size(); ++k) x[k] -= w.removed[k];
   w.prob.L = lnAvarOf(w, x);
+  findSteps(w, x);
   if (!w.propose) return markJumps(w, x);
   std::vector<Candidate> cands;
   for (auto i : w.accepted) cands.push_back(std::move(w.cands[i]));
@@ -292,7 +271,7 @@ void remeasure(ChannelWork& w, Trials& t) {
   std::vector<Line> lines;
   for (const auto& c : cands)
     if (c.line.frequency > 0) lines.push_back(c.line);
-  for (auto& c : w.propose(x, w.taken, lines)) cands.push_back(std::move(c));
+  for (auto& c : w.propose(x, w.taken, lines, w.steps)) cands.push_back(std::move(c));
   w.cands = std::move(cands);
   t.resize(w.cands.size());
   markJumps(w, x);
@@ -559,7 +538,7 @@ void restateSignals(ChannelWork& w) {
       const auto& s = w.cands[i].statedSignal();
       for (std::size_t k = 0; k < x.size() && k < s.size(); ++k) x[k] -= s[k];
     }
-    for (auto& n : w.propose(x, {}, {}))
+    for (auto& n : w.propose(x, {}, {}, {}))
       if (n.effect == c.effect && n.parameters == c.parameters) {
         c.describe = std::move(n.describe);
         c.stated = std::move(n.signal);
@@ -619,6 +598,8 @@ void selectFindings(ChannelWork& w, double first, double next) {
   const std::vector<double> measured = w.prob.L;
   w.sol = solveAllan(w.prob, {});
   if (w.arOrder > 0) w.baseAvar = refittedBaseAvar(w, {});
+  findSteps(w, *w.y);
+  if (w.propose) w.cands = w.propose(*w.y, {}, {}, w.steps);
   markJumps(w, *w.y);
   Trials t;
   t.resize(w.cands.size());
@@ -646,7 +627,9 @@ void selectFindings(ChannelWork& w, double first, double next) {
   // Steps that go back and forth are the realisation of an accepted switching process: no longer
   // unexplained, they are its evidence.
   const auto set = allanSet(w);
-  auto steps = jumpsOf(w.steps, w.rate);  // those the record without the accepted signals shows
+  // those the record without the accepted signals shows (none unexplained where the model makes
+  // bias jumps itself)
+  auto steps = w.modelJumps ? std::vector<LevelStep>{} : jumpsOf(w.steps, w.rate);
   const bool reverting = revertingSteps(steps);
   bool switched = false;
   for (std::size_t j = 0, a = 0; j < w.accepted.size(); ++j) {

@@ -156,4 +156,24 @@ std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<s
   return steps;
 }
 
+std::vector<LevelStep> jumpsOf(const std::vector<double>& steps, double rate) {
+  std::vector<LevelStep> out;
+  for (std::size_t k = 1; k < steps.size(); ++k)
+    if (steps[k] != steps[k - 1]) out.push_back({double(k) / rate, steps[k] - steps[k - 1]});
+  return out;
+}
+
+bool revertingSteps(const std::vector<LevelStep>& jumps) {
+  double largest = 0;
+  for (const auto& j : jumps) largest = std::max(largest, std::fabs(j.size));
+  int changes = 0;
+  double last = 0;
+  for (const auto& j : jumps) {
+    if (!(std::fabs(j.size) > 0.25 * largest)) continue;
+    changes += last != 0 && (j.size > 0) != (last > 0);
+    last = j.size;
+  }
+  return changes >= 4;
+}
+
 }  // namespace sinsim::errormodels::diagnose::detail

@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "errormodels/diagnose/diagnose.hpp"
+
 namespace sinsim::errormodels::diagnose::detail {
 
 /// Scores are capped here (a p-value beyond it underflows and says nothing more).
@@ -41,5 +43,17 @@ double jumpZ(const std::vector<double>& y, const std::vector<std::size_t>& facto
 /// one lattice level is rounding, not a jump, and only steps beyond 1.5 q are kept.
 std::vector<double> levelSteps(const std::vector<double>& y, const std::vector<std::size_t>& factors,
                                double zLimit, double lattice = 0.0, int maxPasses = 8);
+
+/// The jumps of the piecewise-constant series `steps` (empty: none), with their times at `rate`
+/// [Hz].
+std::vector<LevelStep> jumpsOf(const std::vector<double>& steps, double rate);
+
+/// Whether level steps go back and forth: those above a quarter of the largest (a step located in
+/// two pieces is one) change sign at least four times. One bias step has none, a few disturbances
+/// up, down, up two; a telegraph's switches alternate (a switch the test misses leaves the others
+/// alternating), and so does a series of excursions that come back. Such steps are a switching
+/// process' realisation, which a candidate with its second-order statistics
+/// (Candidate::switching) explains.
+bool revertingSteps(const std::vector<LevelStep>& jumps);
 
 }  // namespace sinsim::errormodels::diagnose::detail
