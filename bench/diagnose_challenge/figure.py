@@ -91,7 +91,7 @@ def panel_floors(ax, runs):
 
 def panel_confusion(ax, label, sc):
     hidden = [e for e in g.CATALOGUE + g.OUT_OF_CATALOGUE if sum(sc["confusion"][e].values())] + ["(clean)"]
-    named = [e for e in g.CATALOGUE] + ["white", "none", "unexplained"]
+    named = [e for e in g.CATALOGUE] + ["white", "bias_jumps", "none", "unexplained"]
     m = np.array([[sc["confusion"][h][n] for n in named] for h in hidden], dtype=float)
     frac = m / np.maximum(m.sum(axis=1, keepdims=True), 1)
     ax.imshow(frac, cmap="Blues", vmin=0, vmax=1, aspect="auto")

@@ -20,8 +20,10 @@ CATALOGUE = ["random_walk", "ramp", "warmup", "sinusoid", "quantization", "outli
              "bias_instability", "gauss_markov", "temperature"]
 OUT_OF_CATALOGUE = ["telegraph", "bias_step"]
 # what a diagnosis may call an out-of-catalogue effect and still be right
-EQUIVALENT = {"telegraph": {"gauss_markov", "unexplained"},
-              "bias_step": {"unexplained", "warmup", "ramp"}}
+# (bias_jumps, the catalogue's name for a bias that steps or switches between two levels, since
+# the twenty-fifth session: docs/diagnose.md)
+EQUIVALENT = {"telegraph": {"gauss_markov", "bias_jumps", "unexplained"},
+              "bias_step": {"bias_jumps", "unexplained", "warmup", "ramp"}}
 
 EARTH_RATE = 7.292115e-5
 LATITUDE = math.radians(45.0)

@@ -85,12 +85,14 @@ OUT_OF_CATALOGUE = ["telegraph", "bias_step", "square_wave"]
 EQUIVALENT = {
     # Markov two-level switching has the autocovariance var * exp(-|t| / tau) of a first-order
     # Gauss-Markov process (Lorentzian PSD, the same ADEV); only its two-level amplitude
-    # distribution differs, which a second-order (ADEV/PSD) test cannot see.
-    "telegraph": {"gauss_markov", "unexplained"},
+    # distribution differs, which a second-order (ADEV/PSD) test cannot see; its switches, where
+    # the record shows them, are bias jumps between two levels (bias_jumps, telegraph: yes).
+    "telegraph": {"gauss_markov", "bias_jumps", "unexplained"},
     # a single step: its largest-scale component is a linear trend (what a least-squares ramp
     # fits), and a step-like settling of the bias is what an exponential settling with a short
-    # time constant away from t = 0 approximates; no catalogue term is exact, so also unexplained.
-    "bias_step": {"unexplained", "warmup", "ramp"},
+    # time constant away from t = 0 approximates; the exact term is a bias jump (bias_jumps, since
+    # the twenty-fifth session), and a diagnosis may leave it unexplained.
+    "bias_step": {"bias_jumps", "unexplained", "warmup", "ramp"},
     # a periodic non-sinusoidal bias is a set of lines at f, 3f, 5f...; the fundamental carries
     # >= 80 % of a 35-65 % duty square wave's power (more through the lag), so a sinusoid at f is
     # the right first-order description; the harmonics may leave it unexplained.
