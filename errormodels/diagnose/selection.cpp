@@ -210,13 +210,13 @@ void findSteps(ChannelWork& w, const std::vector<double>& x) {
   w.steps = stepSeries(w, x, modelAvarOf(w.prob, allanSet(w), w.sol));
 }
 
-/// w.jumpFreeL, w.explainsJumps and w.ownJumpFreeL for the steps w.steps of the series x (the record without
-/// the accepted signals). A level jump (a bias step, a telegraph switch, a disturbance of the test
-/// stand) is no effect of the catalogue, and every candidate's Allan shape can absorb part of its
-/// excess: a single step has exactly a random walk's Allan variance, a telegraph's switches make a
-/// ramp's slope. So on a record with jumps a candidate is credited only with what it explains on
-/// the record with the jumps taken out as well (trialRound) -- unless its own signal takes them
-/// out. A signal that takes most of them out (what its removal leaves of the steps' variance is
+/// w.jumpFreeL, w.explainsJumps and w.ownJumpFreeL for the steps w.steps of the series x (the
+/// record without the accepted signals). A level jump (a bias step, a telegraph switch, a
+/// disturbance of the test stand) is what the bias_jumps candidate takes out, and every other
+/// candidate's Allan shape can absorb part of its excess: a single step has exactly a random
+/// walk's Allan variance, a telegraph's switches make a ramp's slope. So on a record with jumps a
+/// candidate is credited only with what it explains on the record with the jumps taken out as well
+/// (trialRound) -- unless its own signal takes them out (bias_jumps' does, whole). A signal that takes most of them out (what its removal leaves of the steps' variance is
 /// less than half: a settling the step test cut into pieces, beside the sensor's own blips) is
 /// credited on the record without the steps that remain once it is taken out: the steps found on
 /// the record are then mostly its own shape. (Every other candidate is judged on one record
