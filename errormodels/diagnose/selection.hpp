@@ -12,8 +12,8 @@ namespace sinsim::errormodels::diagnose::detail {
 /// points of the channel.
 double criterionPenalty(std::size_t points);
 
-/// The candidates w.propose makes on the record and its level steps (w.cands as given when it is
-/// empty); then, greedily: every candidate not yet accepted is added in trial to the
+/// The candidates w.propose makes on the record and its level steps (w.cands as given when there
+/// is no w.propose); then, greedily: every candidate not yet accepted is added in trial to the
 /// accepted set, the level and all free sizes refitted (solveAllan), and its drop of the criterion
 ///   chi2 (Allan GLS) + penalty x parameters - sum of z^2 of the members' own tests
 /// computed; the largest drop is accepted while drop >= threshold^2 (w.accepted, w.sol), the
