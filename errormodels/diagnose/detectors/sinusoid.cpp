@@ -256,6 +256,41 @@ WelchLine lowLineTest(const DetectorContext& ctx) {
   return {pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, double(bestJ) * ctx.record.rate_hz / double(n)};
 }
 
+/// A line proposed at f within the Welch test's separation of a line taken out at `taken` [Hz] is
+/// another line only where the whole record resolves it: f is more than kResolved Fourier spacings
+/// (kResolved / T) from the taken line, and the ordinates j / T within +-2 / T of f (its main lobe
+/// and first side lobes: >= 95 % of a line's power) hold at least half of what stands out within
+/// the separation of the taken line (ordinates above 10 times their median: 0.1 % of a
+/// continuum's, Exp(1) law; each counted above the continuum, median / ln 2). What is left of a line
+/// whose frequency wanders is spread over tens of ordinates: on ADIS16405 run 2's accelerometers
+/// the stand's 0.564 Hz line leaves ~100 above that level over +-0.004 Hz, the largest peak's lobe
+/// holding 13-15 % of them. Two lines 17 / T apart on a 75-s record are 0.6 Welch bins apart.
+constexpr double kResolved = 3.0;
+bool resolvedBeside(const DetectorContext& ctx, double taken, double f, double separation) {
+  const double T = double(ctx.N) * ctx.dt;
+  if (std::fabs(f - taken) <= kResolved / T) return false;
+  const LinePeriodogram pg(ctx, taken, separation);
+  std::vector<double> freq, ord;
+  for (double j = std::ceil((taken - separation) * T); j / T <= taken + separation; j += 1) {
+    if (j < 1) continue;
+    freq.push_back(j / T);
+    ord.push_back(pg.power(j / T, ctx.N));
+  }
+  if (ord.size() < 8) return false;
+  std::vector<double> sorted = ord;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  if (!(median > 0)) return false;
+  const double continuum = median / std::log(2.0);
+  double all = 0, own = 0;
+  for (std::size_t i = 0; i < ord.size(); ++i) {
+    if (!(ord[i] > 10 * median)) continue;
+    all += ord[i] - continuum;
+    if (std::fabs(freq[i] - f) <= 2 / T) own += ord[i] - continuum;
+  }
+  return all > 0 && own >= 0.5 * all;
+}
+
 /// Lines a channel may be found to have: each accepted one is taken out of the record and the next
 /// proposed on what is left (a test stand's line and a vibration's, harmonics).
 constexpr std::size_t kMaxLines = 8;
@@ -274,14 +309,15 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   // significant by the Welch test and then fail the confirmation: the real line behind them (a
   // test stand's 0.564 Hz beside a 10x Gauss-Markov in the ADIS16405 injections) must not be lost.
   // Near a line taken out already (within the Welch test's separation of 3 bins) what is left is
-  // that line's own width (a test stand's line wanders by a few 1/T over hours), not another line;
+  // that line's own width (a test stand's line wanders by tens of 1/T over hours), not another
+  // line, unless the whole record resolves it as one (resolvedBeside);
   // so is a much weaker line at one of its harmonics (folded at Nyquist): the distortion of a
   // strong line rounded onto a lattice (odd harmonics at 3-8 % of it) or of a nonlinear source.
   const double separation = 3.0 * ctx.record.rate_hz / double(ctx.setup.psdSegment);
   auto nearTaken = [&](double f, double amplitude) {
     const double fs = ctx.record.rate_hz;
     for (const Line& t : ctx.linesTaken) {
-      if (std::fabs(f - t.frequency) <= separation) return true;
+      if (std::fabs(f - t.frequency) <= separation && !resolvedBeside(ctx, t.frequency, f, separation)) return true;
       if (!(amplitude < kHarmonicShare * t.amplitude)) continue;
       for (int k = 2; k <= kHarmonics; ++k) {
         const double h = std::fmod(k * t.frequency, fs), folded = std::min(h, fs - h);
