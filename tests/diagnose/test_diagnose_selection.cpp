@@ -859,7 +859,7 @@ TEST_CASE("two lines on one channel are both found and both added", "[diagnose][
 // segments, 44 / T on this 300-s record) but 18 / T apart, so that the whole record's periodogram
 // resolves them: 0.05 deg/s at 1.30 Hz and 0.03 deg/s at 1.36 Hz beside white of sd 0.1 deg/s per
 // sample. Before, what was left after the first line was taken as that line's own width: the second
-// stayed unproposed (the independent generator's seed 2 r0007: two lines 0.6 Welch bins apart on a
+// stayed unproposed (the independent generator's seed 2 r0007: two lines 1.2 Welch bins apart on a
 // 75-s record read as one line and a Gauss-Markov). Now both, each amplitude within 10 % (> 5 sd of
 // its estimate, 0.1 sqrt(2 / N) = 0.0008 deg/s), on 3 of 3 seeds.
 TEST_CASE("two lines the whole record resolves inside one Welch separation are both found",
@@ -885,7 +885,7 @@ TEST_CASE("two lines the whole record resolves inside one Welch separation are b
 // white of sd 0.1 deg/s per sample. Its power sits in Bessel side bands 1 / (100 s) apart (J_k(3):
 // 0.26, 0.34, 0.49, 0.31, 0.13), each far above the noise, none holding half of the remains (a test
 // stand's line wandering over hours: ADIS16405 run 2's 0.564 Hz). One sinusoid on 3 of 3 seeds;
-// checked by mutation: with every remains 3 / T away taken as a line (the share test removed) 3
+// checked by mutation: with every remains 5 / T away taken as a line (the share test removed) 2
 // sinusoids, with no separation rule at all 6.
 TEST_CASE("a wandering line's side bands are not further lines", "[diagnose][selection]") {
   const double A = 0.3 * M_PI / 180, fm = 0.01, beta = 0.03 / fm;

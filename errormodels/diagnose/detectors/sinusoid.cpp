@@ -262,10 +262,12 @@ WelchLine lowLineTest(const DetectorContext& ctx) {
 /// and first side lobes: >= 95 % of a line's power) hold at least half of what stands out within
 /// the separation of the taken line (ordinates above 10 times their median: 0.1 % of a
 /// continuum's, Exp(1) law; each counted above the continuum, median / ln 2). What is left of a line
-/// whose frequency wanders is spread over tens of ordinates: on ADIS16405 run 2's accelerometers
-/// the stand's 0.564 Hz line leaves ~100 above that level over +-0.004 Hz, the largest peak's lobe
-/// holding 13-15 % of them. Two lines 17 / T apart on a 75-s record are 0.6 Welch bins apart.
-constexpr double kResolved = 3.0;
+/// whose frequency wanders lies close to it or is spread: the ADIS16405 stand's 0.564 Hz line,
+/// taken out of a whole run's accelerometer, leaves 65-100 of the ~1465 ordinates above that
+/// level, the largest peak's +-2 / T holding 19-32 % of them; out of a 1000-s window, 4-9 of 147,
+/// the largest within 1.1-3.1 / T of the line (holding 33-59 %). 3 Welch bins are 3 N / L
+/// ordinates: two lines 17.7 / T apart on a 75-s record (1.2 Welch bins) were one line before.
+constexpr double kResolved = 5.0;
 bool resolvedBeside(const DetectorContext& ctx, double taken, double f, double separation) {
   const double T = double(ctx.N) * ctx.dt;
   if (std::fabs(f - taken) <= kResolved / T) return false;
