@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <optional>
 
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
@@ -267,28 +268,26 @@ WelchLine lowLineTest(const DetectorContext& ctx) {
 /// level, the largest peak's +-2 / T holding 19-32 % of them; out of a 1000-s window, 4-9 of 147,
 /// the largest within 1.1-3.1 / T of the line (holding 33-59 %). 3 Welch bins are 3 N / L
 /// ordinates: two lines 17.7 / T apart on a 75-s record (1.2 Welch bins) were one line before.
+/// The ordinates come from one FFT of the record (untapered, its first n ~ N samples), computed
+/// once per proposal and only when a line lands that close: N log N, where evaluating each ordinate
+/// by demodulation would cost (N / L)^2.
 constexpr double kResolved = 5.0;
-bool resolvedBeside(const DetectorContext& ctx, double taken, double f, double separation) {
-  const double T = double(ctx.N) * ctx.dt;
+bool resolvedBeside(const Periodogram& pg, double rate, double taken, double f, double separation) {
+  const double T = double(pg.taper.size()) / rate;  // of the n samples transformed
   if (std::fabs(f - taken) <= kResolved / T) return false;
-  const LinePeriodogram pg(ctx, taken, separation);
-  std::vector<double> freq, ord;
-  for (double j = std::ceil((taken - separation) * T); j / T <= taken + separation; j += 1) {
-    if (j < 1) continue;
-    freq.push_back(j / T);
-    ord.push_back(pg.power(j / T, ctx.N));
-  }
-  if (ord.size() < 8) return false;
-  std::vector<double> sorted = ord;
+  const auto j0 = std::size_t(std::max(1.0, std::ceil((taken - separation) * T)));
+  const auto j1 = std::size_t(std::max(0.0, std::floor((taken + separation) * T)));
+  if (j1 >= pg.I.size() || j1 < j0 + 8) return false;
+  std::vector<double> sorted(pg.I.begin() + std::ptrdiff_t(j0), pg.I.begin() + std::ptrdiff_t(j1) + 1);
   std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
   const double median = sorted[sorted.size() / 2];
   if (!(median > 0)) return false;
   const double continuum = median / std::log(2.0);
   double all = 0, own = 0;
-  for (std::size_t i = 0; i < ord.size(); ++i) {
-    if (!(ord[i] > 10 * median)) continue;
-    all += ord[i] - continuum;
-    if (std::fabs(freq[i] - f) <= 2 / T) own += ord[i] - continuum;
+  for (std::size_t j = j0; j <= j1; ++j) {
+    if (!(pg.I[j] > 10 * median)) continue;
+    all += pg.I[j] - continuum;
+    if (std::fabs(double(j) / T - f) <= 2 / T) own += pg.I[j] - continuum;
   }
   return all > 0 && own >= 0.5 * all;
 }
@@ -316,10 +315,14 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   // so is a much weaker line at one of its harmonics (folded at Nyquist): the distortion of a
   // strong line rounded onto a lattice (odd harmonics at 3-8 % of it) or of a nonlinear source.
   const double separation = 3.0 * ctx.record.rate_hz / double(ctx.setup.psdSegment);
+  std::optional<Periodogram> ordinates;  // the whole record's, for resolvedBeside
   auto nearTaken = [&](double f, double amplitude) {
     const double fs = ctx.record.rate_hz;
     for (const Line& t : ctx.linesTaken) {
-      if (std::fabs(f - t.frequency) <= separation && !resolvedBeside(ctx, t.frequency, f, separation)) return true;
+      if (std::fabs(f - t.frequency) <= separation) {
+        if (!ordinates) ordinates = taperedPeriodogram(ctx.y, 0.0, Detrend::Mean);
+        if (!resolvedBeside(*ordinates, fs, t.frequency, f, separation)) return true;
+      }
       if (!(amplitude < kHarmonicShare * t.amplitude)) continue;
       for (int k = 2; k <= kHarmonics; ++k) {
         const double h = std::fmod(k * t.frequency, fs), folded = std::min(h, fs - h);
