@@ -216,10 +216,11 @@ void findSteps(ChannelWork& w, const std::vector<double>& x) {
 /// candidate's Allan shape can absorb part of its excess: a single step has exactly a random
 /// walk's Allan variance, a telegraph's switches make a ramp's slope. So on a record with jumps a
 /// candidate is credited only with what it explains on the record with the jumps taken out as well
-/// (trialRound) -- unless its own signal takes them out (bias_jumps' does, whole). A signal that takes most of them out (what its removal leaves of the steps' variance is
-/// less than half: a settling the step test cut into pieces, beside the sensor's own blips) is
-/// credited on the record without the steps that remain once it is taken out: the steps found on
-/// the record are then mostly its own shape. (Every other candidate is judged on one record
+/// (trialRound) -- unless its own signal takes them out (bias_jumps' does, whole). A signal that
+/// takes most of them out (what its removal leaves of the steps' variance is less than half: a
+/// settling the step test cut into pieces, beside the sensor's own blips) is credited on the record
+/// without the steps that remain once it is taken out: the steps found on the record are then
+/// mostly its own shape. (Every other candidate is judged on one record
 /// without the same steps: on a record of its own, left with more excess, any Allan term could
 /// gain more.)
 void markJumps(ChannelWork& w, const std::vector<double>& x) {

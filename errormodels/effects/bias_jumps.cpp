@@ -9,8 +9,9 @@
 // random walk's with K^2 = rate size^2 (Allan variance K^2 tau / 3). A telegraph has the
 // autocovariance (size/2)^2 exp(-2 rate |t|) of a Gauss-Markov process of tau = 1 / (2 rate).
 // In each IMU interval a jump occurs with probability p = 1 - exp(-rate dt), dt = 1 / the nominal
-// IMU rate as for `outliers` (at most one: dt << 1 / rate is the intended use), at a uniform instant inside it, so the interval's
-// integral holds the old level before it and the new one after. Three normals per interval from
+// IMU rate as for `outliers` (at most one: dt << 1 / rate is the intended use), at a uniform
+// instant inside it, so the interval's integral holds the old level before it and the new one
+// after. Three normals per interval from
 // the effect's stream: z1 < Phi^-1(p) decides the event (P = p exactly), Phi(z2) its instant, z3
 // its size (steps) — drawn whether or not a jump occurs, so each interval uses the same draws.
 #include "errormodels/effect.hpp"

@@ -278,14 +278,12 @@ bool resolvedBeside(const Periodogram& pg, double rate, double taken, double f, 
   const auto j0 = std::size_t(std::max(1.0, std::ceil((taken - separation) * T)));
   const auto j1 = std::size_t(std::max(0.0, std::floor((taken + separation) * T)));
   if (j1 >= pg.I.size() || j1 < j0 + 8) return false;
-  std::vector<double> sorted(pg.I.begin() + std::ptrdiff_t(j0), pg.I.begin() + std::ptrdiff_t(j1) + 1);
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  if (!(median > 0)) return false;
-  const double continuum = median / std::log(2.0);
+  const double med = median({pg.I.begin() + std::ptrdiff_t(j0), pg.I.begin() + std::ptrdiff_t(j1) + 1});
+  if (!(med > 0)) return false;
+  const double continuum = med / std::log(2.0);
   double all = 0, own = 0;
   for (std::size_t j = j0; j <= j1; ++j) {
-    if (!(pg.I[j] > 10 * median)) continue;
+    if (!(pg.I[j] > 10 * med)) continue;
     all += pg.I[j] - continuum;
     if (std::fabs(double(j) / T - f) <= 2 / T) own += pg.I[j] - continuum;
   }
