@@ -137,6 +137,51 @@ gyro:
   CHECK(std::fabs(sum) > 2 * lsb);
 }
 
+TEST_CASE("dithered quantization: 3Q^2/tau^2 carried, lsb^2/12 white per sample, no lattice") {
+  // Remainders independent uniform on +-lsb/2 (IEEE 952's Q = lsb/sqrt(12)): the rate error
+  // (r[k-1] - r[k]) / dt has autocovariance 2Q^2/dt^2, -Q^2/dt^2 at lags 0, 1 (then 0), whose Allan
+  // variance is 3Q^2/tau^2 at every tau = m dt (helpers.hpp computes it from the autocovariance).
+  const double lsb = 0.001 * kDeg, dt = 0.01, Q = lsb / std::sqrt(12.0);
+  const auto m = ImuErrorModel::fromString(
+      "gyro:\n  x: [{type: quantization, lsb: 0.001 deg, dithered: true}]\n", "q.yaml");
+  const std::size_t n = 200000;
+  const auto y = sinsim::test::simulateRates(m, 1.0 / dt, n, 5, 0);
+  const std::vector<double> r = {2 * Q * Q / (dt * dt), -Q * Q / (dt * dt)};
+  for (std::size_t mm : {1, 2, 4, 16, 64}) {
+    std::size_t K = 0;
+    const double avar = sinsim::test::allanVar({y}, mm, &K);
+    const auto th = sinsim::test::allanFromAcf(r, mm, K, K);
+    INFO("m = " << mm << ": " << avar << " against " << th.avar << " +- " << th.sd);
+    CHECK(th.avar == Approx(3 * Q * Q / (mm * dt * mm * dt)).epsilon(1e-12));
+    CHECK(std::fabs(avar - th.avar) < 5 * th.sd);
+  }
+  // Not on a lattice: a fraction of the outputs far from any multiple of the LSB.
+  std::size_t off = 0;
+  double sum = 0, worst = 0;
+  for (double v : y) {
+    const double u = v * dt / lsb;
+    off += std::fabs(u - std::round(u)) > 0.1;
+    sum += v * dt;
+    worst = std::max(worst, std::fabs(sum));
+  }
+  CHECK(off > n / 2);
+  // The remainders telescope: the summed output is the true sum (0) less the last one.
+  CHECK(worst <= 0.5 * lsb * (1 + 1e-9));
+  // Not carried (a rate LSB): each sample's remainder alone, white noise of variance lsb^2/12.
+  const double lsbRate = 0.05 * kDeg;  // deg/s
+  const auto w = sinsim::test::simulateRates(
+      ImuErrorModel::fromString("gyro:\n  x: [{type: quantization, lsb: 0.05 deg/s, dithered: true}]\n",
+                                "w.yaml"),
+      1.0 / dt, n, 6, 0);
+  for (std::size_t mm : {1, 8}) {
+    std::size_t K = 0;
+    const double avar = sinsim::test::allanVar({w}, mm, &K);
+    const auto th = sinsim::test::allanFromAcf({lsbRate * lsbRate / 12.0}, mm, K, K);
+    INFO("rate LSB, m = " << mm << ": " << avar << " against " << th.avar << " +- " << th.sd);
+    CHECK(std::fabs(avar - th.avar) < 5 * th.sd);
+  }
+}
+
 TEST_CASE("a rate LSB rounds each interval's increment to lsb·dt") {
   auto c = ImuErrorModel::fromString(
       "gyro:\n  z: [{type: quantization, lsb: 0.07326 deg/s}]\n", "q.yaml").instantiate(1000, {});
