@@ -1,5 +1,5 @@
-// Small tools on one recorded series shared by the detectors: the value lattice, window and block
-// means, the median and a least-squares solve.
+// Small tools on one recorded series shared by the detectors: window and block means, the median
+// and a least-squares solve (the value lattice: errormodels/stats/lattice.hpp).
 #pragma once
 
 #include <cstddef>
@@ -7,11 +7,10 @@
 
 #include <Eigen/Dense>
 
+#include "errormodels/stats/lattice.hpp"
+
 namespace sinsim::errormodels::diagnose::detail {
 
-/// Lattice of values: step q [SI] when the record's increments are integer multiples of one
-/// step (>= 99 % of >= 10 non-zero differences within 1 % of a multiple); 0 otherwise.
-double latticeStep(const std::vector<double>& y);
 /// Least-squares slope of y against t = (k + 0.5) dt [SI/s]: a ramp's size, and the trend whose
 /// scatter under the model the ramp's conditional test compares it with.
 double trendSlope(const std::vector<double>& y, double dt);

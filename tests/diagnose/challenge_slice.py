@@ -16,10 +16,12 @@ from types import SimpleNamespace
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "diagnose_challenge"))
 import challenge  # noqa: E402
+import quantization_noise  # noqa: E402
 
 RECORDS = 16
 OOC_RECORDS = 12  # one out-of-catalogue effect each (telegraph or bias step), hidden channel only
 ALT_RECORDS = 24  # the independent generator, one catalogue effect each, hidden channel only
+QN_RECORDS = 8  # quantization noise without a lattice (GMWM's QN) on the independent generator's bases
 
 
 def binom_cdf(k, n, p):
@@ -78,8 +80,19 @@ def main():
     alt3 = challenge.at_least_3x(challenge.score(alt_rows)["top1"])
     alt_min = min_required(alt3[1], 0.90)
     print(f"independent generator: top-1 at >= 3x {alt3[0]}/{alt3[1]} (required >= {alt_min})")
+    # Quantization noise as GMWM generates it (no value lattice), 1.5-10x the base at one sample:
+    # named first >= 90 % (the floor of a catalogue effect), on other draws than the study's.
+    q = SimpleNamespace(**{**vars(a), "work": os.path.join(work, "qn"), "generator": "alt", "hidden_only": True})
+    os.makedirs(q.work, exist_ok=True)
+    qn_rows = [quantization_noise.run_one(q, i) for i in range(QN_RECORDS)]
+    errors += sum("error" in r.get("result", {}) for r in qn_rows)
+    qn = sum((r["result"][r["channel"]]["findings"] or [None])[0] == "quantization" for r in qn_rows
+             if "error" not in r["result"])
+    qn_min = min_required(QN_RECORDS, 0.90)
+    print(f"quantization noise without a lattice named first {qn}/{QN_RECORDS} (required >= {qn_min})")
     ok = errors == 0 and fa <= fa_max and ge3[0] >= top_min and clean >= 60 and ge3[1] >= 3
     ok = ok and ooc >= ooc_min and ooc_n == OOC_RECORDS and alt3[0] >= alt_min and alt3[1] >= 8
+    ok = ok and qn >= qn_min
     sys.exit(0 if ok else 1)
 
 

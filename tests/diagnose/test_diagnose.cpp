@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <random>
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
@@ -145,6 +146,53 @@ TEST_CASE("quantization on a lattice coarser than the noise is added without low
   CHECK(before.findings.front().effect == "quantization");
   CHECK(before.misfit > 0.1);
   CHECK(after.misfit <= 0.5 * before.misfit);
+}
+
+// Quantization noise as GMWM (simts' QN) and IEEE Std 952 define it: the rate error
+// sqrt(12) Q_r (U[k] - U[k-1]), U independent uniform on (0, 1) (std::mt19937_64 here, not the
+// simulator's streams), on no value lattice; ADEV at one sample sqrt(3) Q_r = 4x the base's. The
+// model given is the true base (as in the challenge benchmark; a Burg AR(2) fitted to the record
+// absorbs most of it: negative lag-1 correlation is what a low-order AR imitates). Found from the
+// Allan slope -1 alone, nothing else reported, its LSB (sqrt(12) Q_r dt, an increment) within
+// 10 %, written as the catalogue's dithered quantization; --add halves the misfit. (It leaves
+// 20-40 % of the tau outside the band: the base AR is refitted beside the added noise, which
+// dominates the short-tau variance 4:1, and comes out a few % off -- as when white noise of that
+// size is added, 45 % outside.)
+TEST_CASE("quantization noise without a lattice (GMWM's QN) is found and added", "[diagnose][hidden]") {
+  for (std::uint64_t seed : {131, 132}) {
+    auto r = record("", seed);
+    auto& y = r.gyro[0];
+    double d2 = 0;
+    for (std::size_t k = 1; k < y.size(); ++k) d2 += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
+    const double adev1 = std::sqrt(0.5 * d2 / double(y.size() - 1));
+    const double qRate = 4.0 * adev1 / std::sqrt(3.0);
+    std::mt19937_64 gen(seed);
+    std::uniform_real_distribution<double> uni(0.0, 1.0);
+    double prev = uni(gen);
+    for (double& v : y) {
+      const double next = uni(gen);
+      v += std::sqrt(12.0) * qRate * (next - prev);
+      prev = next;
+    }
+    REQUIRE(sinsim::errormodels::latticeStep(y) == 0.0);
+    const auto imp = dg::improve(r, errorModelFromString(kBase, "base.yaml"),
+                                 {dg::AddRequest::parse("quantization:gx")}, options());
+    const auto& before = imp.before.axis("gx");
+    const auto& after = imp.after.axis("gx");
+    print(before);
+    print(after);
+    REQUIRE_FALSE(before.findings.empty());
+    const auto& f = before.findings.front();
+    CHECK(f.effect == "quantization");
+    CHECK(f.reported);
+    std::size_t reported = 0;
+    for (const auto& g : before.findings) reported += g.reported;
+    CHECK(reported == 1);
+    CHECK(f.params.count("lattice") == 0);
+    CHECK(f.params.at("lsb") == Approx(std::sqrt(12.0) * qRate / kRate).epsilon(0.10));
+    CHECK_THAT(dg::effectText(f.spec, "gx"), Catch::Contains("dithered: true"));
+    CHECK(after.misfit <= 0.5 * before.misfit);
+  }
 }
 
 TEST_CASE("hidden random walk is found and added", "[diagnose][hidden]") {
@@ -285,7 +333,7 @@ TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
 }
 
 TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
-  using sinsim::errormodels::diagnose::detail::latticeStep;
+  using sinsim::errormodels::latticeStep;
   std::vector<double> y, z;
   for (int k = 0; k < 5000; ++k) {
     const double v = std::sin(0.37 * k) * 3 + std::cos(1.1 * k);  // continuous values
@@ -299,18 +347,18 @@ TEST_CASE("the value lattice is found exactly and not invented", "[diagnose]") {
 // A record written with a fixed number of decimals sits on a value lattice too: gx's base
 // (sd ~2e-3 rad/s) on a 0.5 rad/s offset written as %.7f is on a 1e-7 rad/s lattice, whose
 // rounding adds q^2/12 ~ 1e-15 rad^2/s^2 -- ~1e-10 of the record's one-sample Allan variance,
-// far below its own scatter (sqrt(3/N) = 0.4 %). No quantization is proposed (before: a finding
+// far below its own scatter (sqrt(3/N) = 0.4 %). No lattice quantization is proposed (before: a finding
 // of score 40 on every such channel), the lattice is still found, and a real LSB of the same
 // record's size (the ADIS16405's, above) still is.
 TEST_CASE("a CSV's printing precision is no quantization", "[diagnose]") {
   for (std::uint64_t seed : {204, 205}) {
     auto r = record("", seed);
     for (double& v : r.gyro[0]) v = 1e-7 * std::nearbyint((0.5 + v) / 1e-7);
-    REQUIRE(dg::detail::latticeStep(r.gyro[0]) == Approx(1e-7).epsilon(1e-3));
+    REQUIRE(sinsim::errormodels::latticeStep(r.gyro[0]) == Approx(1e-7).epsilon(1e-3));
     const auto d = dg::diagnose(r, fitBase(r), options());
     for (const auto& f : d.axis("gx").findings) {
       INFO(f.effect << " score " << f.score);
-      CHECK(f.effect != "quantization");
+      CHECK(f.params.count("lattice") == 0);  // the lattice-free QN candidate may stand, unreported
       CHECK_FALSE(f.reported);
     }
   }

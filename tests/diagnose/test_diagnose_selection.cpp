@@ -906,7 +906,10 @@ TEST_CASE("a wandering line's side bands are not further lines", "[diagnose][sel
 // on its lattice makes): the rounding's odd harmonics, folded at Nyquist, are lines of the record
 // at 3-30 % of the fundamental. Reported as 7 more sinusoids on 3 of 3 seeds once a channel could
 // show several lines; a much weaker line (< 1/4) at a harmonic (k <= 50) of a line taken is its
-// distortion, and is not proposed.
+// distortion, and is not proposed. What the harmonics leave once the line is taken out is the
+// rounding's error, a short-tau excess off any value lattice (the noise is added after the
+// rounding): since the lattice-free quantization candidate (twenty-seventh session) it may be
+// reported as `quantization`, which it is; nothing else is.
 TEST_CASE("the harmonics of a coarsely rounded line are not further lines", "[diagnose][selection]") {
   const double A = 0.3 * M_PI / 180, q = A / 3;
   for (std::uint64_t seed : {1920, 1921, 1922}) {
@@ -919,7 +922,8 @@ TEST_CASE("the harmonics of a coarsely rounded line are not further lines", "[di
                        .axis("gx");
     INFO("seed " << seed << ": reported " << reportedList(d));
     REQUIRE_FALSE(d.findings.empty());
-    CHECK(reportedList(d) == "sinusoid ");
+    CHECK(linesReported(d).size() == 1);
+    CHECK((reportedList(d) == "sinusoid " || reportedList(d) == "sinusoid quantization "));
     CHECK(d.findings[0].params.at("frequency") == Approx(2.3651).margin(1e-3));
   }
 }

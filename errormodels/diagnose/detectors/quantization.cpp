@@ -1,9 +1,11 @@
-// Quantization: only on a value lattice (exact evidence); its Allan slope then tells rounding of
-// each sample (white) from an increment output with the remainder carried (slope -1). Without a
-// lattice there is no candidate: the signature is the lattice AND the short-tau excess (issue 5).
-// A short-tau excess alone is what a base model fitted to a record with a trend or a transient
-// shows (the fit bends its short-tau level), and scoring it as quantization was a false alarm
-// that grew with the hidden ramp.
+// Quantization. On a value lattice (exact evidence) its Allan slope tells rounding of each sample
+// (white) from an increment output with the remainder carried (slope -1), and the lattice says
+// the LSB. Without a lattice it sees can only be quantization noise in the sense of IEEE Std 952
+// and GMWM (their QN): the remainder of an integrating output whose input moves by many LSBs,
+// uniform and independent from sample to sample, Allan variance 3 Q^2/tau^2 -- a candidate of free
+// size like white noise, chosen by the trial only where the record's short-tau excess falls as
+// tau^-2. (Before trial selection a lattice-free candidate was a signature score of any short-tau
+// excess, which a base bent by a hidden trend also shows; it was removed then, issue 5.)
 // Each sample rounded adds q^2/12 of white variance only when the noise sd is >= about q/2; on a
 // coarser lattice the rounded record's short-scale variance depends on where its level sits in
 // the cell and may lie below the input's, so the added variance is taken from the record
@@ -19,9 +21,46 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+namespace {
+
+/// Quantization noise without a lattice: rate error (r[k-1] - r[k]) / dt, r uniform and
+/// independent of variance Q^2 (angle or velocity units). theta = 3 Q^2: AVAR theta / tau^2 exactly
+/// at every tau = m dt (the mean over m samples is (r[0] - r[m]) / (m dt)), autocovariance
+/// (2/3, -1/3) theta / dt^2 at lags 0 and 1. Written as the catalogue's dithered quantization, LSB
+/// sqrt(12) Q = 2 sqrt(theta) of the increment.
+Candidate quantizationNoise(const DetectorContext& ctx) {
+  const Units& u = ctx.units;
+  const double dt = ctx.dt;
+  Candidate c;
+  c.effect = "quantization";
+  c.parameters = 1;
+  c.g = ctx.shape([](double t) { return 1.0 / (t * t); });
+  c.acovSpan = 2;
+  c.acov = [dt](std::size_t maxLag) {
+    std::vector<double> r(maxLag + 1, 0.0);
+    r[0] = 2.0 / (3.0 * dt * dt);
+    if (maxLag >= 1) r[1] = -1.0 / (3.0 * dt * dt);
+    return r;
+  };
+  c.evidence = "Allan deviation falling with slope -1 (3 Q^2/tau^2) where the model is too low, and no value "
+               "lattice: quantization noise (IEEE 952 Q) of an output whose input moves by many LSBs";
+  const Dimension increment = ctx.signal * Dimension::time();
+  c.describe = [u, increment](double theta, Finding& f) {
+    const double lsb = 2.0 * std::sqrt(std::max(theta, 0.0)), Q = lsb / std::sqrt(12.0);
+    f.size = "Q = " + quantity(Q, u.increment) + " (LSB " + quantity(lsb, u.increment) + ", dithered)";
+    f.spec = EffectSpec::make("quantization", {ParamSpec::quantity("lsb", stated(lsb, u.increment), increment),
+                                               ParamSpec::flagValue("dithered", true)});
+    f.params["lsb"] = lsb;
+    f.params["Q"] = Q;
+  };
+  return c;
+}
+
+}  // namespace
+
 std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   const double q = ctx.lattice, dt = ctx.dt;
-  if (!(q > 0)) return {};
+  if (!(q > 0)) return {quantizationNoise(ctx)};
   const Units& u = ctx.units;
   const double added = roundingAddedVariance(channelData(ctx.record, ctx.channel), q);  // [SI^2]
   const double share = added / ctx.var;
@@ -75,6 +114,7 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   std::vector<Candidate> out;
   if (q * q / 12.0 > seen) out.push_back(std::move(rateLsb));
   if (q * q / 4.0 > seen) out.push_back(std::move(carry));
+  if (out.empty()) out.push_back(quantizationNoise(ctx));  // a lattice no rounding of it can show
   return out;
 }
 
