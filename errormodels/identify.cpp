@@ -20,6 +20,7 @@
 #include "errormodels/identify_auto.hpp"
 #include "errormodels/identify_terms.hpp"
 #include "errormodels/model_io.hpp"
+#include "errormodels/stats/lattice.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
@@ -223,6 +224,23 @@ void warnAccelUnit(Identification& id) {
   if (count > 0 && norm > 0.5 && norm < 1.5)
     id.warnings.push_back("accelerometer mean |f| = " + significant(norm, 4) +
                           " m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?");
+}
+
+/// The quantization Q [SI s] the written model holds (0: none).
+double writtenQuantization(const fit::AxisFitResult& w) {
+  if (w.latent) return w.latent->model.quantization;
+  if (w.allan) {
+    const auto& t = w.allan->term(fit::AllanTermKind::Quantization);
+    if (w.allanWrite[std::size_t(fit::AllanTermKind::Quantization)] && t.enabled && t.detected) return t.value;
+  }
+  return 0.0;
+}
+
+/// Whether a fitted quantization Q [SI s] is written dithered: the record shows no value lattice
+/// its rounding could leave -- none, or one finer than half its LSB as a rate (a CSV's printing
+/// precision) -- so the Allan slope -1 is the remainder of a busy input (IEEE 952's Q, GMWM's QN).
+bool quantizationIsDithered(double Q, double lattice, double dt) {
+  return Q > 0.0 && !(lattice >= 0.5 * std::sqrt(12.0) * Q / dt);
 }
 
 }  // namespace
@@ -486,6 +504,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
              friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
         ax.written.notes.push_back(s);
       }
+      ax.written.ditheredQuantization =
+          quantizationIsDithered(writtenQuantization(ax.written), latticeStep(x), dt);
       axes[slot] = std::move(ax);
       ++done;
     });

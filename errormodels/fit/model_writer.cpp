@@ -119,8 +119,16 @@ void addAr(ListBuilder& b, const ArFit& ar, double rate, const Units& u, Dimensi
              ParamSpec::quantity("rate", rate, Dimension::frequency())}));
 }
 
+/// The quantization effect of a fitted LSB (an increment LSB: the remainder carried), dithered
+/// where the record shows no lattice it would leave (AxisFitResult::ditheredQuantization).
+EffectSpec quantizationSpec(ParamSpec lsb, bool dithered) {
+  std::vector<ParamSpec> params{std::move(lsb)};
+  if (dithered) params.push_back(ParamSpec::flagValue("dithered", true));
+  return EffectSpec::make("quantization", std::move(params));
+}
+
 void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const Units& u,
-                  Dimension signal) {
+                  Dimension signal, bool dithered) {
   const AllanTerm& t = fit.term(kind);
   if (!t.enabled) return;
   std::string unit;
@@ -146,7 +154,7 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
     return withSigma(ParamSpec::quantity(key, scale * t.value, dim), {scale * t.stdError});
   };
   switch (kind) {
-    case AllanTermKind::Quantization: b.add(EffectSpec::make("quantization", {value("lsb")})); break;
+    case AllanTermKind::Quantization: b.add(quantizationSpec(value("lsb"), dithered)); break;
     case AllanTermKind::White: b.add(EffectSpec::make("white", {value("density")})); break;
     case AllanTermKind::BiasInstability:
       b.add(EffectSpec::make(
@@ -192,7 +200,7 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
 }
 
 /// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec.
-void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal) {
+void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal, bool dithered) {
   const double rate = 1.0 / f.sampleInterval;
   b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
          << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
@@ -227,9 +235,9 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
            << ln("quantization", k, u.increment) << ")";
     b.endComment();
-    b.add(EffectSpec::make("quantization", {withSigma(ParamSpec::quantity("lsb", k * m.quantization,
-                                                                          signal * time),
-                                                      {k * sd("quantization")})}));
+    b.add(quantizationSpec(withSigma(ParamSpec::quantity("lsb", k * m.quantization, signal * time),
+                                     {k * sd("quantization")}),
+                           dithered));
   }
   if (m.white > 0.0) {
     b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma" << ln("white", 1.0, u.density) << ")";
@@ -325,7 +333,7 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
         {withSigma(ParamSpec::quantity("sigma", g.sigma, signal), {g.sigmaStdError}),
          withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
   }
-  if (ax.latent) addLatent(b, *ax.latent, u, signal);
+  if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization);
   if (ax.allan) {
     b.line << "Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
            << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6) << " s, chi2 "
@@ -333,7 +341,8 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
            << (ax.allan->correlated ? ", correlated points (GLS)" : ", independent points");
     b.endComment();
     for (std::size_t j = 0; j < kAllanTermCount; ++j)
-      if (ax.allanWrite[j]) addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal);
+      if (ax.allanWrite[j])
+        addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal, ax.ditheredQuantization);
   }
   b.finish();
 }

@@ -51,6 +51,11 @@ struct AxisFitResult {
   /// as comments.
   std::optional<LatentFit> latent;
   std::vector<std::string> notes;            ///< extra comment lines for this axis
+  /// Write a fitted quantization term as `dithered: true` (a fresh uniform remainder each sample,
+  /// effects/quantization.cpp): the record shows no value lattice that rounding at its LSB would
+  /// leave (quantizationIsDithered, identify.cpp), so its Allan slope -1 is quantization noise of a
+  /// busy input; carried rounding at that LSB would realise a pulse train instead.
+  bool ditheredQuantization = false;
 };
 
 struct ModelProvenance {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,51 @@ TEST_CASE("white noise: Allan fit returns N, auto chooses Allan terms", "[identi
     CHECK(std::fabs(lw.white - N) <= 0.05 * N);
     // The file it writes loads in the simulator's loader.
     CHECK_NOTHROW(ImuErrorModel::fromString(ida.modelYaml(), "white.yaml"));
+  }
+}
+
+// A quantization term is realised as the record made it: carried rounding where the record's
+// values sit on the lattice of its LSB, dithered (a fresh uniform remainder, effects/quantization.cpp)
+// where they do not -- GMWM's QN, sqrt(12) Q_r (U[k] - U[k-1]) with U uniform (std::mt19937_64
+// here), or that record printed with 7 decimals (a 1e-7 rad/s lattice, far finer than its LSB).
+// White 0.3 deg/sqrt(h) at 100 Hz for 20 min; the LSB 0.0005 deg equals the white's increment sd
+// (the textbook regime of 3 Q^2 / tau^2).
+TEST_CASE("a fitted quantization is written dithered only off the lattice its rounding leaves",
+          "[identify][roundtrip]") {
+  const double rate = 100.0, lsb = 0.0005 * kDeg, Q = lsb / std::sqrt(12.0);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Latent;
+  // Rounded with carry: on the rate lattice lsb / dt, written as the carried rounding it is.
+  const Record rounded = staticRecord(
+      "gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}, {type: quantization, lsb: 0.0005 deg}]}", rate,
+      1200.0, 21);
+  const auto idr = identify(rounded, o);
+  REQUIRE(idr.axis("gx").written.latent);
+  CHECK(idr.axis("gx").written.latent->model.quantization > 0.0);
+  CHECK_FALSE(idr.axis("gx").written.ditheredQuantization);
+  CHECK(idr.modelYaml().find("dithered") == std::string::npos);
+  // The same white with GMWM's QN of the same Q: no lattice.
+  Record qn = staticRecord("gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}]}", rate, 1200.0, 21);
+  std::mt19937_64 gen(21);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  double prev = uni(gen);
+  for (double& v : qn.gyro[0]) {
+    const double next = uni(gen);
+    v += std::sqrt(12.0) * Q * rate * (next - prev);
+    prev = next;
+  }
+  for (bool printed : {false, true}) {
+    INFO((printed ? "printed with 7 decimals" : "full precision"));
+    Record r = qn;
+    if (printed)
+      for (double& v : r.gyro[0]) v = 1e-7 * std::nearbyint(v / 1e-7);
+    const auto id = identify(r, o);
+    REQUIRE(id.axis("gx").written.latent);
+    const double Qfit = id.axis("gx").written.latent->model.quantization;
+    CHECK(Qfit == Approx(Q).epsilon(0.15));
+    CHECK(id.axis("gx").written.ditheredQuantization);
+    CHECK(id.modelYaml().find("dithered: true") != std::string::npos);
+    CHECK_NOTHROW(ImuErrorModel::fromString(id.modelYaml(), "qn.yaml"));
   }
 }
 
