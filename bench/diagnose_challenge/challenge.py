@@ -401,18 +401,24 @@ def main():
     if a.report:
         report([row for path in a.report for row in json.load(open(path))])
         return
+    report(run_records(a, run_one))
+
+
+def run_records(a, one):
+    """one(a, i) for records a.first .. a.first + a.records - 1 on a.jobs threads (a row, or None
+    for a record left out), with a progress count; the rows are written to a.work/results.json."""
     os.makedirs(a.work, exist_ok=True)
     rows = []
     from concurrent.futures import ThreadPoolExecutor
     with ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for row in ex.map(lambda i: run_one(a, i), range(a.first, a.first + a.records)):
+        for row in ex.map(lambda i: one(a, i), range(a.first, a.first + a.records)):
             if row is not None:
                 rows.append(row)
             print(f"\r{len(rows)}/{a.records} records", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
     with open(os.path.join(a.work, "results.json"), "w") as f:
         json.dump(rows, f, indent=1, default=float)
-    report(rows)
+    return rows
 
 
 if __name__ == "__main__":

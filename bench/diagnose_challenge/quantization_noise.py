@@ -20,7 +20,6 @@ import math
 import os
 import sys
 from collections import Counter
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -124,16 +123,7 @@ def main():
     if a.report:
         report([r for p in a.report for r in json.load(open(p))])
         return
-    os.makedirs(a.work, exist_ok=True)
-    rows = []
-    with ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for row in ex.map(lambda i: run_one(a, i), range(a.first, a.first + a.records)):
-            rows.append(row)
-            print(f"\r{len(rows)}/{a.records} records", end="", file=sys.stderr, flush=True)
-    print(file=sys.stderr)
-    with open(os.path.join(a.work, "results.json"), "w") as f:
-        json.dump(rows, f, indent=1, default=float)
-    report(rows)
+    report(C.run_records(a, run_one))
 
 
 if __name__ == "__main__":

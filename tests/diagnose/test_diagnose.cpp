@@ -113,6 +113,18 @@ Outcome diagnoseHidden(const std::string& name, const Record& r,
   return o;
 }
 
+/// `--add quantization:gx` to the model `base` (the true base, not a fit) on r, both diagnoses
+/// printed; quantization must come first before.
+dg::Improvement quantizationAdded(const Record& r, const std::string& base) {
+  auto imp = dg::improve(r, errorModelFromString(base, "base.yaml"), {dg::AddRequest::parse("quantization:gx")},
+                         options());
+  print(imp.before.axis("gx"));
+  print(imp.after.axis("gx"));
+  REQUIRE_FALSE(imp.before.axis("gx").findings.empty());
+  CHECK(imp.before.axis("gx").findings.front().effect == "quantization");
+  return imp;
+}
+
 }  // namespace
 
 TEST_CASE("hidden quantization is found from the value lattice and added", "[diagnose][hidden]") {
@@ -136,14 +148,9 @@ TEST_CASE("quantization on a lattice coarser than the noise is added without low
   const auto r = dg::simulateRecord(
       errorModelFromString(base + "    - {type: quantization, lsb: 2.5 deg/s}\n", "truth.yaml"), kRate,
       kSamples, 121, 0, {0, 0, 0, 0, 0, 0});
-  const auto imp = dg::improve(r, errorModelFromString(base, "base.yaml"),
-                               {dg::AddRequest::parse("quantization:gx")}, options());
+  const auto imp = quantizationAdded(r, base);
   const auto& before = imp.before.axis("gx");
   const auto& after = imp.after.axis("gx");
-  print(before);
-  print(after);
-  REQUIRE_FALSE(before.findings.empty());
-  CHECK(before.findings.front().effect == "quantization");
   CHECK(before.misfit > 0.1);
   CHECK(after.misfit <= 0.5 * before.misfit);
 }
@@ -175,15 +182,10 @@ TEST_CASE("quantization noise without a lattice (GMWM's QN) is found and added",
       prev = next;
     }
     REQUIRE(sinsim::errormodels::latticeStep(y) == 0.0);
-    const auto imp = dg::improve(r, errorModelFromString(kBase, "base.yaml"),
-                                 {dg::AddRequest::parse("quantization:gx")}, options());
+    const auto imp = quantizationAdded(r, kBase);
     const auto& before = imp.before.axis("gx");
     const auto& after = imp.after.axis("gx");
-    print(before);
-    print(after);
-    REQUIRE_FALSE(before.findings.empty());
     const auto& f = before.findings.front();
-    CHECK(f.effect == "quantization");
     CHECK(f.reported);
     std::size_t reported = 0;
     for (const auto& g : before.findings) reported += g.reported;
