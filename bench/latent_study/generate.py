@@ -9,6 +9,7 @@ Issue 11's five cases at a given rate and length, one gyro-like channel per reco
 and, only when asked by --case (the `--kind ar+slow` study, fit/ar_slow_fit.hpp):
   ar2+rw              AR(2) + random walk
   ar2+gm              AR(2) + a slow first-order GM
+  qn+white            white noise + quantization noise as GMWM makes it (no value lattice)
 
 How each process is made (on purpose not the way the fit models it, where there is a choice):
   white        N / sqrt(dt) * normal samples
@@ -21,7 +22,9 @@ How each process is made (on purpose not the way the fit models it, where there 
                (one-sided PSD h / f, h = B^2 / pi, so that the Allan floor is 2 ln 2 h = (2 ln 2 / pi)
                B^2 in IEEE 952's convention) over an FFT twice the record's length, first half kept.
                No sum of GMs, no AR: nothing the fit is built from.
-  quantization the angle (cumulative increment) rounded to an LSB, the rate = difference / dt
+  quantization the angle (cumulative increment) rounded to an LSB, the rate = difference / dt;
+               qn+white: GMWM's (simts) QN process sqrt(12) Q (U_k - U_{k-1}) / dt, U uniform on
+               (0, 1), added to the white noise (the same Q; the record has no value lattice)
   AR(2)        scipy.signal.lfilter of normal driving noise through 1 / A(z), after a burn-in of
                20 x the slower pole's time constant (the fit uses Burg and closed forms)
 
@@ -40,7 +43,7 @@ import sys
 import numpy as np
 
 CASES = ["white+gm", "white+gm+rw", "white+2gm", "white+flicker+rw", "quantization+white"]
-AR_CASES = ["ar2+rw", "ar2+gm"]
+AR_CASES = ["ar2+rw", "ar2+gm", "qn+white"]
 DEG = math.pi / 180.0
 
 
@@ -69,7 +72,7 @@ def parameters(case, rate, duration):
     elif case == "white+flicker+rw":
         terms.update(flicker=True, random_walk=True)
         p = {"white": N, "flicker": B, "random_walk": Kf}
-    elif case == "quantization+white":
+    elif case in ("quantization+white", "qn+white"):
         terms["quantization"] = True
         p = {"white": N, "quantization": Q}
     elif case in AR_CASES:
@@ -143,7 +146,10 @@ def record(case, rate, duration, seed):
         x += np.cumsum(p["random_walk"] * math.sqrt(dt) * rng.standard_normal(n))
     if "flicker" in p:
         x += flicker(rng, n, dt, p["flicker"])
-    if "quantization" in p:
+    if "quantization" in p and case == "qn+white":
+        u = rng.uniform(0.0, 1.0, n + 1)
+        x += math.sqrt(12.0) * p["quantization"] / dt * (u[1:] - u[:-1])
+    elif "quantization" in p:
         lsb = p["quantization"] * math.sqrt(12.0)  # [rad]
         angle = np.round(np.cumsum(x * dt) / lsb) * lsb
         x = np.diff(angle, prepend=0.0) / dt

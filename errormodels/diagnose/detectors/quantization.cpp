@@ -1,6 +1,6 @@
 // Quantization. On a value lattice (exact evidence) its Allan slope tells rounding of each sample
 // (white) from an increment output with the remainder carried (slope -1), and the lattice says
-// the LSB. Without a lattice it sees can only be quantization noise in the sense of IEEE Std 952
+// the LSB. Without a lattice to see, it can only be quantization noise in the sense of IEEE Std 952
 // and GMWM (their QN): the remainder of an integrating output whose input moves by many LSBs,
 // uniform and independent from sample to sample, Allan variance 3 Q^2/tau^2 -- a candidate of free
 // size like white noise, chosen by the trial only where the record's short-tau excess falls as
