@@ -240,7 +240,7 @@ double writtenQuantization(const fit::AxisFitResult& w) {
 /// its rounding could leave -- none, or one finer than half its LSB as a rate (a CSV's printing
 /// precision) -- so the Allan slope -1 is the remainder of a busy input (IEEE 952's Q, GMWM's QN).
 bool quantizationIsDithered(double Q, double lattice, double dt) {
-  return Q > 0.0 && !(lattice >= 0.5 * std::sqrt(12.0) * Q / dt);
+  return !(lattice >= 0.5 * std::sqrt(12.0) * Q / dt);
 }
 
 }  // namespace
@@ -504,8 +504,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
              friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
         ax.written.notes.push_back(s);
       }
-      ax.written.ditheredQuantization =
-          quantizationIsDithered(writtenQuantization(ax.written), latticeStep(x), dt);
+      const double Q = writtenQuantization(ax.written);
+      ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, latticeStep(x), dt);
       axes[slot] = std::move(ax);
       ++done;
     });

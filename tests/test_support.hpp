@@ -3,11 +3,14 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,6 +28,20 @@ inline std::string messageOf(const std::function<void()>& f) {
     return e.what();
   }
   return "";
+}
+
+/// Adds quantization noise as GMWM (simts' QN) and IEEE Std 952 make it to the rate samples y:
+/// sqrt(12) qRate (U[k] - U[k-1]), U independent uniform on (0, 1) from std::mt19937_64(seed) --
+/// not the simulator's streams, and on no value lattice. Its Allan variance is 3 qRate^2 dt^2/tau^2.
+inline void addQuantizationNoise(std::vector<double>& y, double qRate, std::uint64_t seed) {
+  std::mt19937_64 gen(seed);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  double prev = uni(gen);
+  for (double& v : y) {
+    const double next = uni(gen);
+    v += std::sqrt(12.0) * qRate * (next - prev);
+    prev = next;
+  }
 }
 
 /// Is there a diagnostic of `file` at `line` for key path `key` whose message contains `fragment`?

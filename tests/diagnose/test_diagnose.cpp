@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <random>
 #include <string>
 
 #include "errormodels/diagnose/diagnose.hpp"
@@ -25,6 +24,7 @@
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
+#include "test_support.hpp"
 
 namespace dg = sinsim::errormodels::diagnose;
 using sinsim::errormodels::ErrorModelSpec;
@@ -156,9 +156,9 @@ TEST_CASE("quantization on a lattice coarser than the noise is added without low
 }
 
 // Quantization noise as GMWM (simts' QN) and IEEE Std 952 define it: the rate error
-// sqrt(12) Q_r (U[k] - U[k-1]), U independent uniform on (0, 1) (std::mt19937_64 here, not the
-// simulator's streams), on no value lattice; ADEV at one sample sqrt(3) Q_r = 4x the base's. The
-// model given is the true base (as in the challenge benchmark; a Burg AR(2) fitted to the record
+// sqrt(12) Q_r (U[k] - U[k-1]), U independent uniform on (0, 1) (test_support.hpp's
+// addQuantizationNoise, not the simulator's streams), on no value lattice; ADEV at one sample
+// sqrt(3) Q_r = 4x the base's. The model given is the true base (as in the challenge benchmark; a Burg AR(2) fitted to the record
 // absorbs most of it: negative lag-1 correlation is what a low-order AR imitates). Found from the
 // Allan slope -1 alone, nothing else reported, its LSB (sqrt(12) Q_r dt, an increment) within
 // 10 %, written as the catalogue's dithered quantization; --add halves the misfit. (It leaves
@@ -173,14 +173,7 @@ TEST_CASE("quantization noise without a lattice (GMWM's QN) is found and added",
     for (std::size_t k = 1; k < y.size(); ++k) d2 += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
     const double adev1 = std::sqrt(0.5 * d2 / double(y.size() - 1));
     const double qRate = 4.0 * adev1 / std::sqrt(3.0);
-    std::mt19937_64 gen(seed);
-    std::uniform_real_distribution<double> uni(0.0, 1.0);
-    double prev = uni(gen);
-    for (double& v : y) {
-      const double next = uni(gen);
-      v += std::sqrt(12.0) * qRate * (next - prev);
-      prev = next;
-    }
+    sinsim::test::addQuantizationNoise(y, qRate, seed);
     REQUIRE(sinsim::errormodels::latticeStep(y) == 0.0);
     const auto imp = quantizationAdded(r, kBase);
     const auto& before = imp.before.axis("gx");

@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -22,6 +21,7 @@
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/special.hpp"
 #include "identify_test_util.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 using namespace sinsim::errormodels;
@@ -88,9 +88,10 @@ TEST_CASE("white noise: Allan fit returns N, auto chooses Allan terms", "[identi
 }
 
 // A quantization term is realised as the record made it: carried rounding where the record's
-// values sit on the lattice of its LSB, dithered (a fresh uniform remainder, effects/quantization.cpp)
-// where they do not -- GMWM's QN, sqrt(12) Q_r (U[k] - U[k-1]) with U uniform (std::mt19937_64
-// here), or that record printed with 7 decimals (a 1e-7 rad/s lattice, far finer than its LSB).
+// values sit on the lattice of its LSB, dithered (a fresh uniform remainder,
+// effects/quantization.cpp) where they do not -- GMWM's QN, sqrt(12) Q_r (U[k] - U[k-1]) with U
+// uniform (test_support.hpp's addQuantizationNoise), or that record printed with 7 decimals (a
+// 1e-7 rad/s lattice, far finer than its LSB).
 // White 0.3 deg/sqrt(h) at 100 Hz for 20 min; the LSB 0.0005 deg equals the white's increment sd
 // (the textbook regime of 3 Q^2 / tau^2).
 TEST_CASE("a fitted quantization is written dithered only off the lattice its rounding leaves",
@@ -109,14 +110,7 @@ TEST_CASE("a fitted quantization is written dithered only off the lattice its ro
   CHECK(idr.modelYaml().find("dithered") == std::string::npos);
   // The same white with GMWM's QN of the same Q: no lattice.
   Record qn = staticRecord("gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}]}", rate, 1200.0, 21);
-  std::mt19937_64 gen(21);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
-  double prev = uni(gen);
-  for (double& v : qn.gyro[0]) {
-    const double next = uni(gen);
-    v += std::sqrt(12.0) * Q * rate * (next - prev);
-    prev = next;
-  }
+  sinsim::test::addQuantizationNoise(qn.gyro[0], Q * rate, 21);
   for (bool printed : {false, true}) {
     INFO((printed ? "printed with 7 decimals" : "full precision"));
     Record r = qn;
