@@ -79,6 +79,16 @@ bool arWithoutQuantization(const std::vector<double>& y, std::size_t order, cons
   return yuleWalker(r, order, y.size(), a, E);
 }
 
+/// The Allan chi-square of `set` (sizes started at theta, refitted) beside the AR a = [1, a1..ap]
+/// with driving variance E as the base, at its stated level.
+double chi2BesideAr(const ChannelWork& w, const std::vector<double>& a, double E,
+                    const std::vector<const Candidate*>& set, const std::vector<double>& theta) {
+  const auto av = fit::arAllanVariance(a, E, w.factors);
+  AllanProblem p = w.prob;
+  for (std::size_t k = 0; k < av.size(); ++k) p.mu[k] = av[k];
+  return solveAllan(p, set, theta, true).chi2;
+}
+
 /// [a1..ap, sqrt(E)] of a = [1, a1..ap].
 std::vector<double> coefficientsAndSigma(const std::vector<double>& a, double E) {
   std::vector<double> out(a.begin() + 1, a.end());
@@ -103,13 +113,10 @@ bool refitWithoutQuantization(const ChannelWork& w, const std::vector<double>& x
     std::vector<double> a;
     double E = 0;
     if (!arWithoutQuantization(x, order, c, a, E)) continue;
-    const auto av = fit::arAllanVariance(a, E, w.factors);
-    AllanProblem p2 = w.prob;
-    for (std::size_t k = 0; k < av.size(); ++k) p2.mu[k] = av[k];
     std::vector<const Candidate*> s2;
     for (auto* c2 : set) s2.push_back(c2 == lat ? &c : c2);
-    const auto sol2 = solveAllan(p2, s2, sol.theta, true);
-    if (sol2.chi2 < bestChi) bestChi = sol2.chi2, bestA = a, bestE = E, bestC = &c;
+    const double chi2 = chi2BesideAr(w, a, E, s2, sol.theta);
+    if (chi2 < bestChi) bestChi = chi2, bestA = a, bestE = E, bestC = &c;
   }
   if (!bestC) return false;
   std::replace(set.begin(), set.end(), lat, bestC);
@@ -145,17 +152,21 @@ std::vector<double> refitBaseAr(const ChannelWork& w, const Record& record, std:
                                 std::vector<const Candidate*>& set, AllanSolution& sol) {
   bool any = false;
   const std::vector<double> x = withoutAddedEffects(record, w.channel, set, sol, any);
+  const auto given = set;
   std::vector<double> out;
-  if (refitWithoutQuantization(w, x, order, set, sol, out) ||
-      refitWithoutAutocovariance(x, order, set, sol, out)) {
-    sol.s = 1.0;
-    return out;
-  }
-  if (any) {
+  if (!refitWithoutQuantization(w, x, order, set, sol, out) &&
+      !refitWithoutAutocovariance(x, order, set, sol, out) && any) {
     const auto refit = fit::burg(x, order);
     out = coefficientsAndSigma(refit.a, refit.drivingVariance);
-    sol.s = 1.0;
   }
+  if (out.empty()) return out;
+  std::vector<double> a{1.0};
+  a.insert(a.end(), out.begin(), out.end() - 1);
+  if (!(chi2BesideAr(w, a, out.back() * out.back(), set, sol.theta) < sol.chi2)) {
+    set = given;
+    return {};
+  }
+  sol.s = 1.0;
   return out;
 }
 

@@ -18,7 +18,13 @@ namespace sinsim::errormodels::diagnose::detail {
 ///   - terms with a known autocovariance (bias instability): Yule-Walker on the record's minus
 ///     theirs;
 ///   - otherwise, when a signal was taken out: Burg of the same order.
-/// Returns [a1..ap, driving sigma (SI)] and sets sol.s = 1, or returns empty (not refitted).
+/// The refit is kept only where its Allan chi-square beside the added effects (sizes refitted) is
+/// below sol.chi2, the given AR's: a base that was fitted to the record had absorbed the effects
+/// and loses to its refit; a true base (or one fitted without them) stays, where subtracting a
+/// dominant noise's autocovariance or a coarse lattice's rounding would leave the refit a few % or
+/// a factor off.
+/// Returns [a1..ap, driving sigma (SI)] and sets sol.s = 1, or returns empty (not refitted; set
+/// as given).
 std::vector<double> refitBaseAr(const ChannelWork& w, const Record& record, std::size_t order,
                                 std::vector<const Candidate*>& set, AllanSolution& sol);
 

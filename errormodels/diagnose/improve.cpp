@@ -118,7 +118,8 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
 }
 
 /// The change of one channel: the wanted effects sized, a base AR at the record's rate refitted
-/// (base_refit.hpp, when the AR is the channel's whole base: soleBaseAr; other bases keep their
+/// (base_refit.hpp, when the AR is the channel's whole base: soleBaseAr, and the refit fits the
+/// record's Allan curve better than the AR given; other bases keep their
 /// parameters and take the level refit), the effects'
 /// effects into edits.
 AxisChange improveChannel(const ChannelWork& w, const Record& record, const ErrorModelSpec& model,
@@ -149,9 +150,12 @@ AxisChange improveChannel(const ChannelWork& w, const Record& record, const Erro
     edits.varianceScale[c] = sol.s;
     ch.noiseScale = sol.s;
   }
-  if (arRefitted) notes.push_back(w.d.channel + ": base AR refitted (Burg, order " +
-                                  std::to_string(arBase->size() - 1) +
-                                  ") on the record with the added effects taken out");
+  if (arRefitted)
+    notes.push_back(w.d.channel + ": base AR refitted (order " + std::to_string(arBase->size() - 1) +
+                    ") on the record with the added effects taken out");
+  else if (arBase && !ch.added.empty())
+    notes.push_back(w.d.channel + ": base AR kept as given (no refit on the record with the added "
+                                  "effects taken out fits its Allan curve better)");
   return ch;
 }
 
