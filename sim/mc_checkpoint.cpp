@@ -91,6 +91,7 @@ static void hashAiding(Fnv& f, const aided::AidingConfig& a) {
   for (const aided::TimeWindow& w : a.gnss.outages) {
     f.value(w.start);
     f.value(w.end);
+    if (w.toTheEnd) f.value(true);  // holds the last epoch too (only then: older fingerprints stay)
   }
   f.value(a.filter.enabled);
   for (int i = 0; i < 6; ++i) {

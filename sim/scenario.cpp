@@ -109,6 +109,28 @@ errormodels::ImuErrorModel parseErrors(const ConfigNode& root, const std::string
   return errormodels::ImuErrorModel::none();
 }
 
+/// Coarse alignment averages the IMU over the first `duration` seconds as if the vehicle stood
+/// still (docs/aided.md): a moving start, or a window longer than the static start, would level
+/// and gyrocompass on the motion and start the filter kilometres off, silently.
+void checkAlignmentAtRest(const ConfigNode& root, const Scenario& sc) {
+  const double T = sc.aiding.alignment.duration;
+  if (!(T > 0.0) || sc.segments.empty()) return;
+  const ConfigNode n = root["alignment"]["duration"];
+  for (const Segment& g : sc.segments) {
+    if (g.t0 >= T * (1.0 - 1e-12)) return;
+    const bool atRest = g.kind == SegmentKind::Static || (g.kind == SegmentKind::Cruise && g.speed0 == 0.0);
+    if (atRest) continue;
+    std::string how = g.type + " segment";
+    if (g.speed0 != 0.0) how += ", at " + limits::fmt(g.speed0) + " m/s";
+    n.error("coarse alignment needs the vehicle at rest for its " + limits::fmt(T) +
+            " s, but it moves from t = " + limits::fmt(g.t0) + " s (" + how +
+            "): start with a static segment at least that long, or shorten the alignment");
+    return;
+  }
+  n.check(sc.duration() >= T * (1.0 - 1e-12), "the alignment is longer than the scenario (" +
+                                                 limits::fmt(sc.duration()) + " s)");
+}
+
 Scenario parse(ConfigFile& file, const std::string& baseDir) {
   ConfigNode root = file.root();
   Scenario sc;
@@ -150,6 +172,7 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
 
   sc.temperature = readTemperature(root["temperature"], sc.duration());
   sc.aiding = aided::parseAiding(root, baseDir, sc.duration());
+  checkAlignmentAtRest(root, sc);
   // A fix is applied at an IMU epoch: GNSS at 100 kHz with a 100 Hz IMU ran as if it were 100 Hz.
   if (sc.aiding.gnss.enabled && std::isfinite(sc.imuRate) && sc.aiding.gnss.rate > sc.imuRate)
     root["gnss"]["rate"].error("GNSS at " + limits::fmt(sc.aiding.gnss.rate) +

@@ -15,15 +15,15 @@ using D = Dimension;
 namespace fs = std::filesystem;
 
 // A scalar (the same on all three axes) or a list of three quantities of dimension dim.
-nav::Vec3 vec3(const ConfigNode& n, D dim, bool positive) {
+// `axes` names the three components for a message ("north, east, down").
+nav::Vec3 vec3(const ConfigNode& n, D dim, bool positive, const char* axes) {
   nav::Vec3 v = nav::Vec3::Constant(NAN);
   if (n.isScalar()) {
     v.setConstant(n.asQuantity(dim).value_or(NAN));
   } else if (n.isSequence()) {
     const auto items = n.items();
     if (items.size() != 3) {
-      n.error("expected 3 values (x, y, z or north, east, down), got " +
-              std::to_string(items.size()));
+      n.error("expected 3 values (" + std::string(axes) + "), got " + std::to_string(items.size()));
       return v;
     }
     for (int i = 0; i < 3; ++i) v[i] = items[i].asQuantity(dim).value_or(NAN);
@@ -36,7 +36,7 @@ nav::Vec3 vec3(const ConfigNode& n, D dim, bool positive) {
   return v;
 }
 
-ValueOrSigma valueOrSigma(const ConfigNode& n, D dim) {
+ValueOrSigma valueOrSigma(const ConfigNode& n, D dim, const char* axes) {
   ValueOrSigma vs;
   if (!n.exists()) return vs;
   if (n.isMap()) {
@@ -44,11 +44,11 @@ ValueOrSigma valueOrSigma(const ConfigNode& n, D dim) {
     const ConfigNode s = n.require("sigma");
     if (s.exists()) {
       vs.random = true;
-      vs.sigma = vec3(s, dim, false);
+      vs.sigma = vec3(s, dim, false, axes);
       if (vs.sigma.allFinite()) s.check((vs.sigma.array() >= 0.0).all(), "expected sigmas ≥ 0");
     }
   } else {
-    vs.value = vec3(n, dim, false);
+    vs.value = vec3(n, dim, false, axes);
   }
   return vs;
 }
@@ -57,9 +57,9 @@ void parseInitialErrors(const ConfigNode& root, InitialErrors& e) {
   const ConfigNode n = root["initial_errors"];
   if (!n.exists()) return;
   n.allowKeys({"position", "velocity", "attitude"});
-  e.position = valueOrSigma(n["position"], D::length());
-  e.velocity = valueOrSigma(n["velocity"], D::speed());
-  e.attitude = valueOrSigma(n["attitude"], D::angle());
+  e.position = valueOrSigma(n["position"], D::length(), "north, east, down");
+  e.velocity = valueOrSigma(n["velocity"], D::speed(), "north, east, down");
+  e.attitude = valueOrSigma(n["attitude"], D::angle(), "roll, pitch, yaw");
 }
 
 void parseAlignment(const ConfigNode& root, AlignmentConfig& a) {
@@ -95,6 +95,7 @@ void parseOutages(const ConfigNode& n, double duration, std::vector<TimeWindow>&
     if (!w.check(tw.start >= 0.0 && tw.end > tw.start, "expected 0 ≤ start < end")) continue;
     w.check(tw.start < duration || !(duration > 0.0),
             "the outage starts after the scenario's end");
+    if (duration > 0.0 && tw.end > duration) tw.end = duration, tw.toTheEnd = true;  // "to the end"
     out.push_back(tw);
   }
   std::sort(out.begin(), out.end(),
@@ -110,16 +111,18 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
   g.enabled = true;
   g.rate = n.quantity("rate", D::frequency(), 1.0);
   n["rate"].check(std::isfinite(g.rate) && g.rate > 0.0, "expected a positive rate");
-  if (n.has("position_sigma")) g.positionSigma = vec3(n["position_sigma"], D::length(), true);
-  if (n.has("velocity_sigma")) g.velocitySigma = vec3(n["velocity_sigma"], D::speed(), true);
+  if (n.has("position_sigma"))
+    g.positionSigma = vec3(n["position_sigma"], D::length(), true, "north, east, down");
+  if (n.has("velocity_sigma"))
+    g.velocitySigma = vec3(n["velocity_sigma"], D::speed(), true, "north, east, down");
   n.check(n.has("position_sigma") || n.has("velocity_sigma"),
           "expected position_sigma, velocity_sigma or both (what the fixes measure)");
   if (n.has("lever_arm")) {
-    g.leverArm_b = vec3(n["lever_arm"], D::length(), false);
+    g.leverArm_b = vec3(n["lever_arm"], D::length(), false, "x, y, z in body axes");
     // Beyond any vehicle: a unit slip (mm given as m), and the filter's lever-arm terms would
-    // swamp its attitude.
-    n["lever_arm"].check(g.leverArm_b.allFinite() && g.leverArm_b.norm() <= kMaxLeverArm,
-                         "expected an antenna within 1 km of the IMU");
+    // swamp its attitude. (Not finite: a value that did not read, reported where it was read.)
+    if (g.leverArm_b.allFinite())
+      n["lever_arm"].check(g.leverArm_b.norm() <= kMaxLeverArm, "expected an antenna within 1 km of the IMU");
   }
   parseOutages(n["outages"], duration, g.outages);
 }

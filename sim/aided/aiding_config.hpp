@@ -41,7 +41,9 @@ struct AlignmentConfig {
 
 struct TimeWindow {
   double start = 0.0, end = 0.0;  // [s]
-  bool contains(double t) const { return t >= start && t < end; }
+  /// A window given past the scenario's end is stored ending there and holds its last epoch too.
+  bool toTheEnd = false;
+  bool contains(double t) const { return t >= start && (toTheEnd || t < end); }
 };
 
 /// The longest filter propagation step [s]: between GNSS fixes further apart (a rate below 1 Hz,

@@ -154,6 +154,64 @@ filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
           std::string::npos);
     CHECK(m.find("gnss.lever_arm: expected an antenna within 1 km") != std::string::npos);
   }
+  // A lever arm of two values: that, in body axes, and no second message about its size.
+  try {
+    sim::parseScenario(std::string(kBase) + R"(
+gnss: {rate: 1 Hz, position_sigma: 1 m, lever_arm: [1 m, 2 m]}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)", "bad.yaml");
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    INFO(m);
+    CHECK(m.find("gnss.lever_arm: expected 3 values (x, y, z in body axes), got 2") != std::string::npos);
+    CHECK(m.find("within 1 km") == std::string::npos);
+  }
+}
+
+TEST_CASE("coarse alignment is refused unless the vehicle is at rest over its window") {
+  // An independent user's probe: a coarse alignment over a moving start ran silently and started
+  // the filter kilometres off (NEES ~1e9 while aided by 1 m fixes); so did a window longer than the
+  // static start. kBase: 60 s static, then it accelerates.
+  std::string moving = kBase;
+  moving.replace(moving.find("heading: 60 deg}"), 16, "heading: 60 deg, speed: 5 m/s}");
+  moving.replace(moving.find("{type: static, duration: 60 s}"), 30, "{type: cruise, duration: 60 s}");
+  for (const auto& [text, what] :
+       {std::pair<std::string, std::string>{moving + "alignment: {duration: 30 s}\n",
+                                            "it moves from t = 0 s (cruise segment, at 5 m/s)"},
+        {std::string(kBase) + "alignment: {duration: 90 s}\n",
+         "it moves from t = 60 s (accelerate segment)"}}) {
+    try {
+      sim::parseScenario(text, "align.yaml");
+      FAIL("expected a ConfigError");
+    } catch (const ConfigError& e) {
+      const std::string m = e.what();
+      INFO(m);
+      CHECK(m.find("align.yaml:") != std::string::npos);
+      CHECK(m.find("alignment.duration: coarse alignment needs the vehicle at rest") != std::string::npos);
+      CHECK(m.find(what) != std::string::npos);
+    }
+  }
+  // The static start's 60 s, or less, aligns.
+  CHECK(sim::parseScenario(std::string(kBase) + "alignment: {duration: 60 s}\n", "ok.yaml")
+            .aiding.alignment.duration == 60.0);
+}
+
+TEST_CASE("an outage given past the scenario's end lasts to the end, and says so") {
+  // kBase lasts 120 s. Windows are [start, end): one that ends at 120 s leaves the last epoch its
+  // fix; one given past the end holds it too and is reported ending at 120 s (not at 500 s).
+  const sim::Scenario sc = sim::parseScenario(std::string(kBase) + R"(
+gnss: {rate: 1 Hz, position_sigma: 1 m, outages: [[30 s, 40 s], [100 s, 500 s]]}
+filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]}}}
+)", "past.yaml");
+  const auto& w = sc.aiding.gnss.outages;
+  REQUIRE(w.size() == 2);
+  CHECK(w[1].end == 120.0);
+  CHECK(w[1].contains(120.0));
+  CHECK(w[1].contains(119.0));
+  CHECK_FALSE(w[1].contains(99.0));
+  CHECK_FALSE(w[0].contains(40.0));
+  CHECK(w[0].contains(39.99));
 }
 
 TEST_CASE("GNSS off: the aided run navigates bit-identically to the free-inertial run") {
