@@ -171,6 +171,8 @@ void printBatch(const sim::McCommandResult& batch, int size) {
               << lengthText(h.cep) << ", R95 " << lengthText(h.r95) << "\n";
   for (const sim::McPairedHeadline& p : batch.headlines.pairs)
     std::cout << "  " << p.sentence() << " Wilcoxon p = " << pValueText(p.pWilcoxon) << ".\n";
+  for (const sim::McAidedSummary& s : batch.headlines.aided)
+    for (const std::string& line : s.sentences()) std::cout << "  " << line << "\n";
 }
 
 int runMc(const Args& a) {

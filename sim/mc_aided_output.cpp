@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/number_text.hpp"
 #include "errormodels/stats/special.hpp"
+#include "sim/aided/aided_navigation.hpp"
 #include "sim/aided/aided_output.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
@@ -19,8 +21,9 @@ struct EpochAverage {
   bool inside() const { return runs > 0 && mean >= lo && mean <= hi; }
 };
 
-// Average over the runs of field `f` (kNees or kNis) at epoch e; dof 9 for the NEES, the stored
-// NIS dof for the NIS. Runs without a value there (NaN) are left out.
+// Average over the runs of field `f` (kNees or kNis) at epoch e; dof aided::neesDof for the NEES
+// (9, or 7 with a held vertical channel), the stored NIS dof for the NIS. Runs without a value
+// there (NaN) are left out.
 EpochAverage averageAt(const McBatch& batch, std::size_t entry, std::size_t e, int f) {
   const Reference& ref = batch.ref;
   const std::size_t perRun = ref.runFloats();
@@ -32,7 +35,7 @@ EpochAverage averageAt(const McBatch& batch, std::size_t entry, std::size_t e, i
     const float* row = view + k * perRun;
     if (!std::isfinite(row[f])) continue;
     sum += row[f];
-    a.dof = f == kNees ? 9.0 : double(row[kNisDof]);
+    a.dof = f == kNees ? double(aided::neesDof(ref.strapdown.vertical)) : double(row[kNisDof]);
     ++a.runs;
   }
   if (a.runs == 0) return a;
@@ -50,11 +53,87 @@ int epochClass(const McBatch& batch, std::size_t entry, std::size_t e) {
 
 const char* className(int c) { return c == 1 ? "aiding" : c == 2 ? "outage" : "none"; }
 
-nlohmann::json classJson(std::size_t epochs, std::size_t inside, double sumMean) {
-  return {{"epochs", epochs},
-          {"inside_99", inside},
-          {"fraction_inside_99", epochs ? double(inside) / double(epochs) : NAN},
-          {"mean_of_run_averages", epochs ? sumMean / double(epochs) : NAN}};
+nlohmann::json classJson(const McConsistencyClass& c) {
+  return {{"epochs", c.epochs},
+          {"inside_99", c.inside},
+          {"fraction_inside_99", c.fractionInside()},
+          {"mean_of_run_averages", c.meanOfAverages}};
+}
+
+// Counts one epoch's run-average into its class.
+void count(McConsistencyClass& c, const EpochAverage& a, double& sum) {
+  ++c.epochs;
+  c.inside += a.inside() ? 1 : 0;
+  sum += a.mean;
+  c.meanOfAverages = sum / double(c.epochs);
+}
+
+// Outage window w of model m over the runs; outages.csv's rows written when fo is given.
+McOutageSummary outageSummary(const McBatch& batch, std::size_t m, std::size_t w, std::FILE* fo) {
+  const Reference& ref = batch.ref;
+  const std::size_t perRun = ref.runFloats();
+  const std::size_t outageBase = ref.epochs() * (kErrorFields + kAidedEpochFields);
+  const aided::TimeWindow& win = ref.aiding.gnss.outages[w];
+  const std::string label = csvField(batch.entries[m].label);
+  McOutageSummary o;
+  o.start = win.start;
+  o.end = win.end;
+  std::vector<double> mx, sg, ratio;
+  for (std::uint64_t k = 0; k < batch.runs; ++k) {
+    const float* v = batch.errors[m].data() + k * perRun + outageBase + w * kOutageFields;
+    if (fo) {
+      std::fprintf(fo, "%s,%llu,%zu,%.6f,%.6f", label.c_str(), static_cast<unsigned long long>(k),
+                   w, win.start, win.end);
+      aided::writeCsvNumber(fo, "%.9g", v[kOutageMaxHorizontal]);  // empty: no filter there
+      aided::writeCsvNumber(fo, "%.9g", v[kOutageSigmaHorizontal]);
+      std::fputc('\n', fo);
+    }
+    if (!(std::isfinite(v[kOutageMaxHorizontal]) && v[kOutageSigmaHorizontal] > 0.0f))
+      continue;  // a window the filter never ran in (before the alignment's end)
+    mx.push_back(v[kOutageMaxHorizontal]);
+    sg.push_back(v[kOutageSigmaHorizontal]);
+    ratio.push_back(mx.back() / sg.back());
+  }
+  o.runs = mx.size();
+  if (mx.empty()) return o;
+  for (auto* v : {&mx, &sg, &ratio}) std::sort(v->begin(), v->end());
+  o.maxP50 = mcstats::percentileSorted(mx, 50);
+  o.maxP95 = mcstats::percentileSorted(mx, 95);
+  o.maxMean = mcstats::moments(mx).mean;
+  o.sigmaP50 = mcstats::percentileSorted(sg, 50);
+  o.sigmaP95 = mcstats::percentileSorted(sg, 95);
+  o.ratioP50 = mcstats::percentileSorted(ratio, 50);
+  o.ratioP95 = mcstats::percentileSorted(ratio, 95);
+  return o;
+}
+
+// Model m's summary; outages.csv's and filter_consistency.csv's rows written when fo, fc are given.
+McAidedSummary summarize(const McBatch& batch, std::size_t m, std::FILE* fo, std::FILE* fc) {
+  const Reference& ref = batch.ref;
+  McAidedSummary s;
+  s.label = batch.entries[m].label;
+  s.neesDof = aided::neesDof(ref.strapdown.vertical);
+  for (std::size_t w = 0; w < ref.aiding.gnss.outages.size(); ++w)
+    s.outages.push_back(outageSummary(batch, m, w, fo));
+  const std::string label = csvField(s.label);
+  double sum[3] = {0, 0, 0};
+  for (std::size_t e = 0; e < ref.epochs(); ++e) {
+    const EpochAverage nees = averageAt(batch, m, e, kNees);
+    if (nees.runs == 0) continue;
+    const EpochAverage nis = averageAt(batch, m, e, kNis);
+    const int c = epochClass(batch, m, e);
+    if (fc) {
+      std::fprintf(fc, "%s,%.6f,%s,%zu", label.c_str(), ref.epochTime(e), className(c), nees.runs);
+      // The NIS of an epoch without fixes (an outage) does not exist: empty fields.
+      for (double v : {nees.mean, nees.lo, nees.hi, nis.mean, nis.dof, nis.lo, nis.hi})
+        aided::writeCsvNumber(fc, "%.9g", v);
+      std::fputc('\n', fc);
+    }
+    if (c == 1) count(s.neesAiding, nees, sum[0]);
+    if (c == 2) count(s.neesOutage, nees, sum[1]);
+    if (nis.runs > 0) count(s.nisAiding, nis, sum[2]);
+  }
+  return s;
 }
 
 }  // namespace
@@ -65,78 +144,72 @@ void chiSquareMeanBand99(double dof, std::size_t runs, double& lo, double& hi) {
   hi = errormodels::chiSquareQuantile(0.995, n) / double(runs);
 }
 
+std::vector<std::string> McAidedSummary::sentences() const {
+  std::vector<std::string> out;
+  if (!neesAiding.epochs && !neesOutage.epochs) return out;  // no filter epoch in any run
+  auto cls = [&](const char* what, const McConsistencyClass& c) {
+    return std::to_string(c.inside) + "/" + std::to_string(c.epochs) + " " + what + " epochs (mean " +
+           significant(c.meanOfAverages, 3) + ")";
+  };
+  std::string text = label + ": filter consistency: the run-averaged NEES (" + std::to_string(neesDof) +
+                     " states) lies inside its 99 % band at " + cls("aiding", neesAiding);
+  if (neesOutage.epochs) text += " and " + cls("outage", neesOutage);
+  if (nisAiding.epochs) text += "; the NIS at " + cls("aiding", nisAiding);
+  out.push_back(text + ".");
+  for (const auto* c : {&neesAiding, &neesOutage}) {
+    if (!(c->epochs && c->fractionInside() < 0.8)) continue;
+    const bool above = c->meanOfAverages > neesDof;
+    out.push_back(label + ": " + (c == &neesAiding ? "while aided" : "in outages") +
+                  " the NEES lies outside its band at " + std::to_string(c->epochs - c->inside) +
+                  "/" + std::to_string(c->epochs) + " epochs, " + (above ? "above" : "below") +
+                  " it on average (mean " + significant(c->meanOfAverages, 3) + " against " +
+                  std::to_string(neesDof) + "): the filter is " +
+                  (above ? "over-confident" : "pessimistic") + " there, its model " +
+                  (above ? "under" : "over") + "states the errors (a consistent filter leaves more "
+                  "than 20 % of the epochs outside with probability <= 5 %).");
+  }
+  for (const McOutageSummary& o : outages) {
+    if (!o.runs) continue;
+    out.push_back(label + ": outage " + significant(o.start, 6) + "-" + significant(o.end, 6) +
+                  " s: largest horizontal error median " + lengthText(o.maxP50, 3) + ", 95 % " +
+                  lengthText(o.maxP95, 3) + "; the filter's 1-sigma then, median " +
+                  lengthText(o.sigmaP50, 3) + " (error / sigma median " + significant(o.ratioP50, 2) +
+                  ").");
+  }
+  return out;
+}
+
+std::vector<McAidedSummary> mcAidedSummaries(const McBatch& batch, std::size_t models) {
+  std::vector<McAidedSummary> out;
+  for (std::size_t m = 0; m < models && m < batch.entries.size(); ++m)
+    out.push_back(summarize(batch, m, nullptr, nullptr));
+  return out;
+}
+
 nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
                                    std::vector<std::string>& files) {
-  const Reference& ref = batch.ref;
-  const std::size_t perRun = ref.runFloats(), epochs = ref.epochs();
-  const std::size_t outageBase = epochs * (kErrorFields + kAidedEpochFields);
-  const auto& windows = ref.aiding.gnss.outages;
-  nlohmann::json models = nlohmann::json::array();
-
   std::FILE* fo = out.open("outages.csv");
   std::fputs("model,run,outage,start_s,end_s,max_horizontal_m,sigma_horizontal_m\n", fo);
   std::FILE* fc = out.open("filter_consistency.csv");
   std::fputs("model,t_s,class,runs,nees_mean,nees_lo99,nees_hi99,nis_mean,nis_dof,nis_lo99,"
              "nis_hi99\n", fc);
+  nlohmann::json models = nlohmann::json::array();
   for (std::size_t m = 0; m < batch.entries.size(); ++m) {
-    const std::string label = csvField(batch.entries[m].label);
+    const McAidedSummary s = summarize(batch, m, fo, fc);
     nlohmann::json outages = nlohmann::json::array();
-    for (std::size_t w = 0; w < windows.size(); ++w) {
-      std::vector<double> mx, sg, ratio;
-      for (std::uint64_t k = 0; k < batch.runs; ++k) {
-        const float* o = batch.errors[m].data() + k * perRun + outageBase + w * kOutageFields;
-        std::fprintf(fo, "%s,%llu,%zu,%.6f,%.6f", label.c_str(),
-                     static_cast<unsigned long long>(k), w, windows[w].start, windows[w].end);
-        aided::writeCsvNumber(fo, "%.9g", o[kOutageMaxHorizontal]);  // empty: no filter there
-        aided::writeCsvNumber(fo, "%.9g", o[kOutageSigmaHorizontal]);
-        std::fputc('\n', fo);
-        if (!(std::isfinite(o[kOutageMaxHorizontal]) && o[kOutageSigmaHorizontal] > 0.0f))
-          continue;  // a window the filter never ran in (before the alignment's end)
-        mx.push_back(o[kOutageMaxHorizontal]);
-        sg.push_back(o[kOutageSigmaHorizontal]);
-        ratio.push_back(mx.back() / sg.back());
-      }
-      nlohmann::json oj{{"start_s", windows[w].start}, {"end_s", windows[w].end},
-                        {"runs", mx.size()}};
-      if (!mx.empty()) {
-        for (auto* v : {&mx, &sg, &ratio}) std::sort(v->begin(), v->end());
-        oj["max_horizontal_m"] = {{"p50", mcstats::percentileSorted(mx, 50)},
-                                  {"p95", mcstats::percentileSorted(mx, 95)},
-                                  {"mean", mcstats::moments(mx).mean}};
-        oj["sigma_horizontal_m"] = {{"p50", mcstats::percentileSorted(sg, 50)},
-                                    {"p95", mcstats::percentileSorted(sg, 95)}};
-        oj["max_over_sigma"] = {{"p50", mcstats::percentileSorted(ratio, 50)},
-                                {"p95", mcstats::percentileSorted(ratio, 95)}};
+    for (const McOutageSummary& o : s.outages) {
+      nlohmann::json oj{{"start_s", o.start}, {"end_s", o.end}, {"runs", o.runs}};
+      if (o.runs) {
+        oj["max_horizontal_m"] = {{"p50", o.maxP50}, {"p95", o.maxP95}, {"mean", o.maxMean}};
+        oj["sigma_horizontal_m"] = {{"p50", o.sigmaP50}, {"p95", o.sigmaP95}};
+        oj["max_over_sigma"] = {{"p50", o.ratioP50}, {"p95", o.ratioP95}};
       }
       outages.push_back(oj);
     }
-
-    std::size_t n[3] = {0, 0, 0}, neesIn[3] = {0, 0, 0}, nisN = 0, nisIn = 0;
-    double neesSum[3] = {0, 0, 0}, nisSum = 0;
-    for (std::size_t e = 0; e < epochs; ++e) {
-      const EpochAverage nees = averageAt(batch, m, e, kNees);
-      if (nees.runs == 0) continue;
-      const EpochAverage nis = averageAt(batch, m, e, kNis);
-      const int c = epochClass(batch, m, e);
-      std::fprintf(fc, "%s,%.6f,%s,%zu", label.c_str(), ref.epochTime(e), className(c), nees.runs);
-      // The NIS of an epoch without fixes (an outage) does not exist: empty fields.
-      for (double v : {nees.mean, nees.lo, nees.hi, nis.mean, nis.dof, nis.lo, nis.hi})
-        aided::writeCsvNumber(fc, "%.9g", v);
-      std::fputc('\n', fc);
-      ++n[c];
-      neesIn[c] += nees.inside() ? 1 : 0;
-      neesSum[c] += nees.mean;
-      if (nis.runs > 0) {
-        ++nisN;
-        nisIn += nis.inside() ? 1 : 0;
-        nisSum += nis.mean;
-      }
-    }
-    models.push_back({{"model", batch.entries[m].label},
+    models.push_back({{"model", s.label},
                       {"outages", outages},
-                      {"nees", {{"aiding", classJson(n[1], neesIn[1], neesSum[1])},
-                                {"outage", classJson(n[2], neesIn[2], neesSum[2])}}},
-                      {"nis", {{"aiding", classJson(nisN, nisIn, nisSum)}}}});
+                      {"nees", {{"aiding", classJson(s.neesAiding)}, {"outage", classJson(s.neesOutage)}}},
+                      {"nis", {{"aiding", classJson(s.nisAiding)}}}});
   }
   files.push_back("outages.csv");
   files.push_back("filter_consistency.csv");

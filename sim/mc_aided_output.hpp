@@ -11,6 +11,8 @@
 // (Bar-Shalom, Li & Kirubarajan 2001, §5.4.2), exact quantiles (errormodels/stats/special.hpp).
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,37 @@
 #include "sim/output.hpp"
 
 namespace sinsim::sim {
+
+/// Per epoch class (aiding, outage): the epochs with a run-average, how many lie inside their
+/// band, and the mean of the run-averages (NaN without epochs).
+struct McConsistencyClass {
+  std::size_t epochs = 0, inside = 0;
+  double meanOfAverages = NAN;
+  double fractionInside() const { return epochs ? double(inside) / double(epochs) : NAN; }
+};
+
+/// One outage window over the runs whose filter ran in it: the largest horizontal error's median,
+/// 95 % and mean, the filter's horizontal 1-sigma then (median, 95 %), and their ratio.
+struct McOutageSummary {
+  double start = 0.0, end = 0.0;  // [s]
+  std::size_t runs = 0;
+  double maxP50 = NAN, maxP95 = NAN, maxMean = NAN, sigmaP50 = NAN, sigmaP95 = NAN,
+         ratioP50 = NAN, ratioP95 = NAN;
+};
+
+/// The filter's consistency and outage drift of one model of an aided batch.
+struct McAidedSummary {
+  std::string label;
+  int neesDof = 9;  // aided::neesDof of the scenario's vertical channel
+  std::vector<McOutageSummary> outages;
+  McConsistencyClass neesAiding, neesOutage, nisAiding;
+  /// The verdict in words: "consistent", or the class whose NEES lies above (over-confident) or
+  /// below (pessimistic) its band at more than 20 % of the epochs, with the numbers.
+  std::vector<std::string> sentences() const;
+};
+
+/// The summaries of the given models (the first `models` entries) of an aided batch.
+std::vector<McAidedSummary> mcAidedSummaries(const McBatch& batch, std::size_t models);
 
 /// Writes outages.csv and filter_consistency.csv into `out` (names appended to files) and returns
 /// summary.json's "aided" object. The batch's reference must be aided.

@@ -54,6 +54,7 @@ McHeadlines mcHeadlines(const McBatch& batch, std::size_t models) {
         out.pairs.push_back(p);
       }
   }
+  if (batch.ref.aiding.filter.enabled) out.aided = mcAidedSummaries(batch, models);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/mc_aided_output.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/montecarlo.hpp"
 
@@ -38,6 +39,7 @@ struct McPairedHeadline {
 struct McHeadlines {
   std::vector<McHeadline> models;       // time-major: every model at the first time, then ...
   std::vector<McPairedHeadline> pairs;  // every pair of the given models at every time
+  std::vector<McAidedSummary> aided;    // per model, of a batch whose scenario runs the filter
 };
 
 /// The headlines of the given models (the first `models` entries: no budget variants) of a

@@ -98,6 +98,8 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
       }
       page.paragraph(text + " (near 50: the model predicts it; near 0 or 100: it does not).");
     }
+    for (const McAidedSummary& s : h.aided)
+      for (const std::string& line : s.sentences()) page.paragraph(line);
   }
 
   std::vector<double> t(st.epochs);

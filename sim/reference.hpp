@@ -30,7 +30,7 @@ enum ErrorField : int {
 /// kAidedEpochFields floats, then per outage window kOutageFields floats. NaN where the epoch had
 /// no filter step (alignment, or an output epoch between GNSS ticks) or no update.
 enum AidedEpochField : int {
-  kNees = 0,   // (nav − truth)ᵀ P⁻¹ (nav − truth) over the 9 navigation states
+  kNees = 0,   // (nav − truth)ᵀ P⁻¹ (nav − truth) over the aided::neesDof navigation states
   kNis,        // of the epoch's GNSS update
   kNisDof,     // its degrees of freedom (3: position, 6: position and velocity)
   kEpochClass, // 0 none, 1 aiding (a fix used), 2 outage

@@ -18,6 +18,17 @@ nav::Vec3 attitudeError(const nav::Quat& q_est, const nav::Quat& q_true) {
   return 0.5 * nav::Vec3(E(1, 2) - E(2, 1), E(2, 0) - E(0, 2), E(0, 1) - E(1, 0));
 }
 
+/// errorᵀ P⁻¹ error over the neesDof(vertical) states: a held vertical channel's down position
+/// and velocity (states 2 and 5) left out.
+double nees(const Eigen::Matrix<double, 9, 1>& error, const Eigen::Matrix<double, 9, 9>& P,
+            nav::VerticalChannel vertical) {
+  if (neesDof(vertical) == 9) return error.dot(P.ldlt().solve(error));
+  static const std::vector<int> kept{0, 1, 3, 4, 6, 7, 8};
+  const Eigen::VectorXd e = error(kept);
+  const Eigen::MatrixXd Pk = P(kept, kept);
+  return e.dot(Pk.ldlt().solve(e));
+}
+
 FilterOptions filterOptions(const AidingConfig& c, const nav::StrapdownOptions& sd) {
   FilterOptions o;
   o.vertical = sd.vertical;
@@ -69,6 +80,8 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
                 earth.rate() * std::cos(start.lat) * deg * 3600.0);
   return {text};
 }
+
+int neesDof(nav::VerticalChannel vertical) { return vertical == nav::VerticalChannel::Held ? 7 : 9; }
 
 Vec9 navErrorStates(const nav::Earth& earth, const nav::NavState& nav,
                     const nav::NavState& truth) {
@@ -262,7 +275,7 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
   out.error = navErrorStates(*earth_, sd.state(), truth);
   const Eigen::Matrix<double, 9, 9> P = filter_.P().topLeftCorner<9, 9>();
   out.sigma = P.diagonal().cwiseSqrt();
-  out.nees = out.error.dot(P.ldlt().solve(out.error));
+  out.nees = nees(out.error, P, sdOptions_.vertical);
   for (OutageResult& o : outages_) {
     if (!o.window.contains(truth.t)) continue;
     const double hor = std::hypot(out.error[0], out.error[1]);

@@ -44,12 +44,17 @@ struct FilterEpoch {
   bool filtered = false;                           // a GNSS clock epoch: the fields below are set
   Eigen::Matrix<double, 9, 1> error;               // nav − truth: δr_n [m], δv_n [m/s], ψ [rad]
   Eigen::Matrix<double, 9, 1> sigma;               // filter 1-sigma of the same
-  double nees = NAN;                               // errorᵀ P⁻¹ error over the 9 nav states
+  double nees = NAN;                               // errorᵀ P⁻¹ error over the nav states (neesDof)
   double nis = NAN;                                // of the update at this epoch (NaN: none)
   int nisDof = 0;                                  // its degrees of freedom (3 or 6)
   bool aiding = false;                             // a fix was used at this epoch
   bool outage = false;                             // inside an outage window
 };
+
+/// The navigation states the NEES sums over: all 9, or 7 with a held vertical channel, whose
+/// down position and velocity the strapdown holds at the truth (no error for the filter to own:
+/// their variances stay at the prior and would pull the NEES below its band).
+int neesDof(nav::VerticalChannel vertical);
 
 /// The largest attitude 1-sigma [rad] the filter starts from without a warning: it is linear in
 /// the attitude error ψ, and beyond ~10° its errors and sigmas are no longer to be trusted.
