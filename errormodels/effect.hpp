@@ -46,6 +46,7 @@ struct EffectSite {
   unsigned listId = 0;   ///< which list it came from (see streamBase)
   int index = 0;         ///< position in that list
   std::string name;      ///< "gyro.x[1].ar" style, for listings and messages
+  int line = 0;          ///< the effect's line in its model file (0: not from a file), for messages
 
   /// The dimension of the sensor's signal: angular rate (gyro) or acceleration (accel).
   Dimension signal() const {

@@ -41,6 +41,7 @@ void buildList(const ErrorModelSpec& spec, const std::string& source, Sensor sen
     site.index = int(i);
     site.axis = list == EffectList::triad ? -1 : list == EffectList::all ? 0 : int(list) - 2;
     site.name = path + "." + e.type;
+    site.line = e.where.line;
     SpecProblems found;
     const EffectType* et = findEffectType(e.type);
     if (et && (et->scope == Scope::triad) != (list == EffectList::triad))
@@ -203,9 +204,11 @@ std::unique_ptr<ImuCorruptor> ImuErrorModel::instantiate(double imuRate,
     ctx.key = key;
     ctx.site = &e->site;
     // "gyro.x[0].ar: the process is defined at 5 Hz, slower than the IMU rate" names the model
-    // file too (it is found only here, once the IMU rate is known).
+    // file and the effect's line too (it is found only here, once the IMU rate is known).
+    const std::string where =
+        e->site.line > 0 ? source() + ":" + std::to_string(e->site.line) : source();
     auto state = source().empty() ? e->effect->instantiate(ctx)
-                                  : withContext(source(), [&] { return e->effect->instantiate(ctx); });
+                                  : withContext(where, [&] { return e->effect->instantiate(ctx); });
     (e->site.sensor == Sensor::gyro ? c->gyro : c->accel).push_back(std::move(state));
     c->needsTemperature = c->needsTemperature || e->effect->needsTemperature();
   }

@@ -141,13 +141,14 @@ TEST_CASE("corpus finding, unnamed errors: the file or option is named") {
   CHECK(runSinsim("run " + (d / "s.yaml").string() + " -o " + (d / "out").string(), d / "err") == 1);
   CHECK_THAT(slurp(d / "err"),
              Contains((d / "s.yaml").string() + ":2: errors: " + d.string() + ": is a directory"));
-  // An AR process slower than the IMU is found only when instantiated: the model file is named.
+  // An AR process slower than the IMU is found only when instantiated: the model file and the
+  // effect's line are named.
   writeText(d / "ar.yaml", "gyro: {x: [{type: ar, a: [-0.5], sigma: 1 deg/s, rate: 5 Hz}]}\n");
   CHECK(runSinsim("synth " + (d / "ar.yaml").string() + " --rate 100 --duration 1 -o " +
                       (d / "x.csv").string(),
                   d / "err") == 1);
   CHECK_THAT(slurp(d / "err"),
-             Contains((d / "ar.yaml").string() + ": gyro.x[0].ar: the process is defined at 5 Hz"));
+             Contains((d / "ar.yaml").string() + ":1: gyro.x[0].ar: the process is defined at 5 Hz"));
   // A state that turns non-finite: the scenario (and model) are named.
   writeText(d / "ramp.yaml", "gyro: {x: [{type: ramp, slope: 1e11 rad/s/s}]}\n");
   writeText(d / "s2.yaml", kStart + "segments: [{type: static, duration: 10 s}]\n");
