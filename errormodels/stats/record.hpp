@@ -65,7 +65,7 @@ struct AuxChannel {
 
 struct Record {
   std::string source;   ///< file path as given
-  double rate_hz = 0;   ///< [Hz] nominal sample rate (option, or 1 / median time step)
+  double rate_hz = 0;   ///< [Hz] nominal sample rate (option; else from the span of regular time stamps, or 1 / their median step)
   /// [s] time stamps as read (empty when the file has no time column: sample k is at k / rate_hz)
   std::vector<double> t;
   /// omega_ib_b per axis x, y, z [rad/s]; an axis absent from the file is an empty vector

@@ -59,6 +59,10 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
       if (found.size() < 1000) found.push_back({lineOf(k), k, t[k], dt, dt > 1.5 * dt0});
     }
   }
+  // Regular steps: the rate from the whole span, not from one step, whose printed digits (a time
+  // column written with %.12g or %.6f) leave it 1e-7..1e-4 off -- enough for a model's process
+  // defined at the record's own rate to read as slower than it.
+  if (count == 0 && n >= 2 && !options.rate_hz) rec.rate_hz = double(n - 1) / (t[n - 1] - t[0]);
   rec.irregular_count = count;
   if (count > 0 && !options.allow_irregular_time) {
     std::ostringstream os;

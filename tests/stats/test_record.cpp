@@ -63,6 +63,26 @@ TEST_CASE("record: columns, header units, options and conversion to SI", "[recor
   CHECK(r.irregular_count == 0);
 }
 
+TEST_CASE("record: the rate of regular time stamps comes from their span, not from one step's digits",
+          "[record]") {
+  // 104 Hz for 20 min with the time printed to the microsecond (%.6f) and to 12 significant
+  // digits (%.12g): one step read from the text is 1e-7..1e-4 off the true 1/104 s (the median
+  // step read 104.000004 Hz with %.12g), and a model's AR defined at 104 Hz was refused as slower
+  // than the record (an independent generator's records). The span (n - 1) / (t_last - t_first)
+  // has the digits' error divided by the record's length.
+  for (const char* fmt : {"%.6f", "%.12g"}) {
+    std::string text = "t,gx,gy,gz,ax,ay,az\n";
+    char buf[64];
+    for (int k = 1; k <= 124800; ++k) {
+      std::snprintf(buf, sizeof buf, fmt, k / 104.0);
+      text += std::string(buf) + ",0,0,0,0,0,-9.8\n";
+    }
+    const Record r = parseRecord(text, "rec.csv", {});
+    INFO(fmt);
+    CHECK(std::abs(r.rate_hz / 104.0 - 1.0) < 1e-9);
+  }
+}
+
 TEST_CASE("record: no time column needs a rate, defaults are SI", "[record]") {
   const std::string text = "gx,gy,gz\n0.1,0.2,0.3\n0.1,0.2,0.3\n";
   CHECK_THAT(errorOf(text), Catch::Contains("no time column") && Catch::Contains("rec.csv"));
