@@ -33,18 +33,19 @@ GYRO_SCALE = math.radians(0.005)  # rad/s/sqrt(Hz): a MEMS gyro's white density
 ACCEL_SCALE = 1e-3                # m/s^2/sqrt(Hz)
 
 
+GENERATORS = {"main": "generate", "alt": "generate_alt", "third": "generate_third"}
 POOLS = {"all": g.CATALOGUE + g.OUT_OF_CATALOGUE, "catalogue": g.CATALOGUE, "ooc": g.OUT_OF_CATALOGUE}
 
 
 def gen_module(row_or_name):
     """The generator module of a results row (its "generator", default main) or of a name: its
-    CATALOGUE / OUT_OF_CATALOGUE / EQUIVALENT score the row. generate_alt.py (--generator alt) is an
-    independent design; imported only when used."""
+    CATALOGUE / OUT_OF_CATALOGUE / EQUIVALENT score the row. generate_alt.py (--generator alt) and
+    generate_third.py (--generator third) are independent designs; imported only when used."""
     name = row_or_name.get("generator", "main") if isinstance(row_or_name, dict) else row_or_name
     if name == "main":
         return g
-    import generate_alt
-    return generate_alt
+    import importlib
+    return importlib.import_module(GENERATORS[name])
 
 
 def size_key(row, h):
@@ -379,9 +380,10 @@ def main():
     ap.add_argument("--threshold", type=float, default=None, help="diagnose --threshold")
     ap.add_argument("--bases", default="", help="comma list of base families (default: all; the "
                     "alt generator's: w2gm, wgmrw, wflk, ar)")
-    ap.add_argument("--generator", choices=["main", "alt"], default="main",
-                    help="record generator: main (generate.py) or alt (generate_alt.py, an "
-                         "independent design; rows carry \"generator\": \"alt\")")
+    ap.add_argument("--generator", choices=sorted(GENERATORS), default="main",
+                    help="record generator: main (generate.py), alt (generate_alt.py) or third "
+                         "(generate_third.py), the last two independent designs; rows carry "
+                         "\"generator\": NAME")
     ap.add_argument("--null", action="store_true", help="no hidden effects (threshold calibration)")
     ap.add_argument("--effects", type=int, default=None,
                     help="hidden effects per record (default: 0, 1 or 2 drawn); a study of one case")
