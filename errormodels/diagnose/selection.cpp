@@ -420,20 +420,23 @@ Finding accept(ChannelWork& w, Trials& t, std::size_t best) {
 }
 
 /// Whether the temperature candidate `temp`, which passed `threshold` in the last full trial round,
-/// only imitates a noise of that round that passed it too (a candidate without a signal): that
-/// noise x still passes `next` with the temperature taken, while the temperature does not pass
-/// `next` with x taken. A temperature column that no drift follows (a chamber's cycle, the room's
-/// wander) correlates by chance with a walk's or a flicker's realised wander, and its fitted
-/// polynomial takes part of that wander out of the record: alone it passes, beside the noise it
-/// imitates it does not. Where neither passes beside the other the temperature keeps its place
-/// ("regress on it first"), and so it does against shapes (a ramp, a warm-up): their likeness to
-/// a warming profile is the temperature's own, not chance. Each noise is tried by its best
-/// variant, the largest drop first.
+/// only imitates a noise or a ramp of that round that passed it too: that candidate x still passes
+/// `next` with the temperature taken, while the temperature does not pass `next` with x taken. A
+/// temperature column that no drift follows (a chamber's cycle, the room's wander) correlates by
+/// chance with a walk's or a flicker's realised wander, and its fitted polynomial takes part of
+/// that wander out of the record: alone it passes, beside the noise it imitates it does not. A
+/// column that rises or falls through the record (a chamber's ramp between holds) imitates a
+/// ramp the same way, but only in part: its polynomial in the temperature leaves the ramp's
+/// straight line in time to a ramp. Where neither passes beside the other the temperature keeps
+/// its place ("regress on it first"), and so it does against a warm-up, a thermal settling's own
+/// shape (with warm-ups too a warm-up took a ramp and a thermal drift together). Each candidate
+/// is tried by its best variant, the largest drop first.
 bool temperatureImitates(const ChannelWork& w, double penalty, const Trials& t, std::size_t temp, double threshold,
                          double next) {
   std::vector<std::size_t> others;  // the best variant of each other effect that passes
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
-    if (!stillOpen(w, i) || !w.cands[i].signal.empty() || t.drop[i] < threshold * threshold) continue;
+    const bool noise = w.cands[i].signal.empty(), ramp = w.cands[i].effect == "ramp";
+    if (!stillOpen(w, i) || !(noise || ramp) || t.drop[i] < threshold * threshold) continue;
     auto same = std::find_if(others.begin(), others.end(), [&](std::size_t j) { return w.cands[j].effect == w.cands[i].effect; });
     if (same == others.end()) others.push_back(i);
     else if (t.drop[i] > t.drop[*same]) *same = i;
