@@ -89,38 +89,34 @@ double chi2BesideAr(const ChannelWork& w, const std::vector<double>& a, double E
   return solveAllan(p, set, theta, true).chi2;
 }
 
-/// [a1..ap, sqrt(E)] of a = [1, a1..ap].
-std::vector<double> coefficientsAndSigma(const std::vector<double>& a, double E) {
-  std::vector<double> out(a.begin() + 1, a.end());
-  out.push_back(std::sqrt(E));
-  return out;
-}
+/// A refitted AR: a = [1, a1..ap] and its driving variance E (a empty: none).
+struct ArFit {
+  std::vector<double> a;
+  double E = 0.0;
+};
 
 /// The lattice candidate of set replaced by the variant whose refitted AR fits the Allan curve
 /// best; false when none refits.
 bool refitWithoutQuantization(const ChannelWork& w, const std::vector<double>& x, std::size_t order,
                               std::vector<const Candidate*>& set, const AllanSolution& sol,
-                              std::vector<double>& out) {
+                              ArFit& out) {
   const Candidate* lat = nullptr;
   for (auto* c : set)
     if (c->lsbRate > 0) lat = c;
   if (!lat) return false;
-  std::vector<double> bestA;
-  double bestE = 0, bestChi = INFINITY;
+  double bestChi = INFINITY;
   const Candidate* bestC = nullptr;
   for (const auto& c : w.cands) {
     if (!(c.lsbRate > 0)) continue;
-    std::vector<double> a;
-    double E = 0;
-    if (!arWithoutQuantization(x, order, c, a, E)) continue;
+    ArFit f;
+    if (!arWithoutQuantization(x, order, c, f.a, f.E)) continue;
     std::vector<const Candidate*> s2;
     for (auto* c2 : set) s2.push_back(c2 == lat ? &c : c2);
-    const double chi2 = chi2BesideAr(w, a, E, s2, sol.theta);
-    if (chi2 < bestChi) bestChi = chi2, bestA = a, bestE = E, bestC = &c;
+    const double chi2 = chi2BesideAr(w, f.a, f.E, s2, sol.theta);
+    if (chi2 < bestChi) bestChi = chi2, out = f, bestC = &c;
   }
   if (!bestC) return false;
   std::replace(set.begin(), set.end(), lat, bestC);
-  out = coefficientsAndSigma(bestA, bestE);
   return true;
 }
 
@@ -128,7 +124,7 @@ bool refitWithoutQuantization(const ChannelWork& w, const std::vector<double>& x
 /// no added term has one or the fit fails.
 bool refitWithoutAutocovariance(const std::vector<double>& x, std::size_t order,
                                 const std::vector<const Candidate*>& set, const AllanSolution& sol,
-                                std::vector<double>& out) {
+                                ArFit& out) {
   std::vector<double> rSub;
   for (std::size_t j = 0; j < set.size(); ++j)
     if (set[j]->acov && sol.theta[j] > 0) {
@@ -139,11 +135,7 @@ bool refitWithoutAutocovariance(const std::vector<double>& x, std::size_t order,
   if (rSub.empty()) return false;
   auto r = centredAutocovariance(x, order);
   for (std::size_t k = 0; k <= order; ++k) r[k] -= rSub[k];
-  std::vector<double> a;
-  double E = 0;
-  if (!yuleWalker(r, order, x.size(), a, E)) return false;
-  out = coefficientsAndSigma(a, E);
-  return true;
+  return yuleWalker(r, order, x.size(), out.a, out.E);
 }
 
 }  // namespace
@@ -153,20 +145,19 @@ std::vector<double> refitBaseAr(const ChannelWork& w, const Record& record, std:
   bool any = false;
   const std::vector<double> x = withoutAddedEffects(record, w.channel, set, sol, any);
   const auto given = set;
-  std::vector<double> out;
-  if (!refitWithoutQuantization(w, x, order, set, sol, out) &&
-      !refitWithoutAutocovariance(x, order, set, sol, out) && any) {
+  ArFit f;
+  if (!refitWithoutQuantization(w, x, order, set, sol, f) &&
+      !refitWithoutAutocovariance(x, order, set, sol, f) && any) {
     const auto refit = fit::burg(x, order);
-    out = coefficientsAndSigma(refit.a, refit.drivingVariance);
+    f = {refit.a, refit.drivingVariance};
   }
-  if (out.empty()) return out;
-  std::vector<double> a{1.0};
-  a.insert(a.end(), out.begin(), out.end() - 1);
-  if (!(chi2BesideAr(w, a, out.back() * out.back(), set, sol.theta) < sol.chi2)) {
+  if (f.a.empty() || !(chi2BesideAr(w, f.a, f.E, set, sol.theta) < sol.chi2)) {
     set = given;
     return {};
   }
   sol.s = 1.0;
+  std::vector<double> out(f.a.begin() + 1, f.a.end());  // [a1..ap, sqrt(E)]
+  out.push_back(std::sqrt(f.E));
   return out;
 }
 
