@@ -1,6 +1,7 @@
 // diagnose() (diagnose.hpp): per channel, the comparison with the model's Monte Carlo
 // realisations, then the detectors' candidates and their forward selection.
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/model_drift.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -212,7 +213,11 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
 }  // namespace detail
 
 Diagnosis diagnose(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& options) {
-  return diagnoseRun(record, model, options).d;
+  const auto net = detail::withoutModelDrift(record, model);
+  if (!net) return diagnoseRun(record, model, options).d;
+  Diagnosis d = diagnoseRun(net->record, net->model, options).d;
+  detail::stateModelDrift(d, net->drift);
+  return d;
 }
 
 }  // namespace sinsim::errormodels::diagnose

@@ -139,6 +139,9 @@ struct AxisDiagnosis {
   /// Every candidate considered: reported ones first in acceptance order, then the rest by score.
   std::vector<Finding> findings;
   double noiseScale = 1.0;  ///< variance factor s fitted with the reported findings
+  /// The model's own ramp slope on this channel [SI/s], taken out of the record and the model
+  /// before the comparison (model_drift.hpp); 0 when the model has none.
+  double modelDrift = 0.0;
   double chi2Selected = 0.0;  ///< Allan chi2 of the model with the reported findings (refitted)
   /// The longest tau range the model with its reported findings still misses (residual beyond
   /// 2.58 sigma on one side, >= 2 points, remaining chi2 above its 0.999 quantile): what no

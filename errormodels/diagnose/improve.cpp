@@ -9,6 +9,7 @@
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
+#include "errormodels/diagnose/model_drift.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
@@ -179,12 +180,18 @@ std::vector<std::string> improvedHeader(const ErrorModelSpec& model, const Recor
 Improvement improve(const Record& record, const ErrorModelSpec& model, const std::vector<AddRequest>& adds,
                     const DiagnoseOptions& options) {
   if (adds.empty()) throw InputError("nothing to add");
-  const Run run = diagnoseRun(record, model, options);
+  // The model's ramps out of record and model for the diagnosis and the sizing (model_drift.hpp);
+  // the edits go to the model as given, its ramps kept (a ramp found is the slope beyond them).
+  const auto net = withoutModelDrift(record, model);
+  const Record& netRecord = net ? net->record : record;
+  const ErrorModelSpec& netModel = net ? net->model : model;
+  const Run run = diagnoseRun(netRecord, netModel, options);
   Improvement imp;
   imp.before = run.d;
+  if (net) stateModelDrift(imp.before, net->drift);
   ModelEdits edits;
   std::vector<AxisChange> changes;
-  for (const auto& w : run.work) changes.push_back(improveChannel(w, record, model, adds, edits, imp.notes));
+  for (const auto& w : run.work) changes.push_back(improveChannel(w, netRecord, netModel, adds, edits, imp.notes));
   // The values as the written file will hold them, so the comparison after is of that file.
   imp.model = asWritten(editedModel(model, edits));
   imp.model.source = model.source + " (improved)";
@@ -195,7 +202,13 @@ Improvement improve(const Record& record, const ErrorModelSpec& model, const std
     throw InputError("the model improved from " + model.source + " is not valid (nothing written): " +
                      e.what());
   }
-  imp.after = diagnose(record, imp.model, options);
+  // After: the record as before (the given ramps out) against the improved model without the
+  // given ramps; what was added, an added ramp included, is in the model's realisations, as every
+  // added effect is (diagnose() would take an added ramp out too).
+  ErrorModelSpec afterModel = net ? asWritten(editedModel(net->model, edits)) : imp.model;
+  afterModel.source = imp.model.source;
+  imp.after = diagnoseRun(netRecord, afterModel, options).d;
+  if (net) stateModelDrift(imp.after, net->drift);
   for (auto& ch : changes) {
     AxisChange full = changeOf(imp.before.axis(ch.channel), imp.after.axis(ch.channel));
     full.added = ch.added;

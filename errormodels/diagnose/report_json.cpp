@@ -49,6 +49,7 @@ nlohmann::json axisJson(const AxisDiagnosis& a) {
   j["chi2"] = a.chi2;
   j["chi2_points"] = a.chi2Points;
   j["noise_scale"] = a.noiseScale;
+  if (a.modelDrift != 0.0) j["model_drift_si"] = a.modelDrift;  // absent: the model has no ramp
   j["fits"] = a.fits();
   j["chi2_selected"] = a.chi2Selected;
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained

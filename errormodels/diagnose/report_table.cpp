@@ -50,6 +50,9 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
       << " (x" << num(f.worstRatio, 3) << ");";
   }
   if (head) o << "\n";
+  if (a.modelDrift != 0.0)
+    o << "  " << a.channel << " drift: the model's ramp " << detail::quantity(a.modelDrift, detail::unitsFor(detail::channelIndex(a.channel)).slope)
+      << " was taken out of the record and the model before the comparison (a ramp found is the slope beyond it)\n";
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
   for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";

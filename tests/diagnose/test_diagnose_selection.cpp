@@ -1010,3 +1010,37 @@ TEST_CASE("a white noise far above the model's is named white and a small excess
     CHECK(reportedList(small.axis("gx")).empty());
   }
 }
+
+// A model's ramp is a known line: the diagnosis takes it out of the record and the model
+// (model_drift.hpp), so a drift beyond it is found as a ramp of the slope beyond, and one of the
+// other sign -- which the Allan variance cannot tell from the model's (R^2 tau^2 / 2) -- too.
+// Before, the ramp detector did not run where the model had a ramp: the steeper drift was named
+// `warmup`, the reversed one "fits". White 0.0573 deg/s/sqrt(Hz) + GM (0.0286 deg/s, 5 s) at
+// 100 Hz, 1200 s, the model's ramp 3000 deg/h^2, the record's 9000 or -3000 deg/h^2: the slope
+// beyond is +-6000 deg/h^2 (~6x the base ADEV at T/8) against a least-squares slope scatter of
+// ~100 deg/h^2 (sd; the GM's variance 12 * 2 sigma^2 tau / T^3): required within 400 deg/h^2, and
+// `--add ramp` halves the misfit with the two ramps summing to the record's drift within the same.
+TEST_CASE("a drift beyond the model's own ramp, or reversed, is found as a ramp", "[diagnose][selection]") {
+  const std::string base = "gyro:\n  x:\n    - {type: white, density: 0.0573 deg/s/sqrt(Hz)}\n"
+                           "    - {type: gauss_markov, sigma: 0.0286 deg/s, tau: 5 s}\n";
+  const auto model = errorModelFromString(base + "    - {type: ramp, slope: 3000 deg/h^2}\n", "base.yaml");
+  const double unit = M_PI / 180.0 / 3600.0 / 3600.0;  // deg/h^2 in rad/s^2
+  for (const double truth : {9000.0, -3000.0}) {
+    for (std::uint64_t seed = 1500; seed < 1503; ++seed) {
+      const auto r = simulate(base + "    - {type: ramp, slope: " + std::to_string(truth) + " deg/h^2}\n",
+                              120000, seed);
+      const auto imp = dg::improve(r, model, {dg::AddRequest::parse("ramp:gx")}, gxOnly(seed));
+      const auto& d = imp.before.axis("gx");
+      INFO("record's ramp " << truth << " deg/h^2, seed " << seed << ": reported " << reportedList(d)
+                            << "misfit " << d.misfit << " -> " << imp.after.axis("gx").misfit);
+      CHECK(d.modelDrift == Approx(3000.0 * unit).epsilon(1e-9));
+      REQUIRE(reportedList(d).rfind("ramp ", 0) == 0);
+      CHECK(d.findings[0].params.at("slope") == Approx((truth - 3000.0) * unit).margin(400.0 * unit));
+      CHECK(imp.after.axis("gx").misfit <= 0.5 * d.misfit);
+      double sum = 0;
+      for (const auto& e : imp.model.gyro.x)
+        if (e.type == "ramp") sum += e.find("slope")->values[0];
+      CHECK(sum == Approx(truth * unit).margin(400.0 * unit));
+    }
+  }
+}
