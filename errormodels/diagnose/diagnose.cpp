@@ -179,7 +179,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const double q = latticeStep(y);
     const double offset = q > 0 ? y.front() - q * std::nearbyint(y.front() / q) : 0.0;
     steps.push_back(q);
-    const bool visible = q * q / 12.0 > oneSampleAvarScatter(y, setup) && std::isfinite(offset);
+    const bool visible = latticeVisible(y, q, setup.rate) && std::isfinite(offset);
     seen.push_back(visible ? Lattice{q, offset} : Lattice{});
   }
   const auto mc = monteCarlo(m, record, channels, setup, o, seen);

@@ -1,7 +1,11 @@
 // The model's ramps taken out of the record and the model (model_drift.hpp).
 #include "errormodels/diagnose/model_drift.hpp"
 
+#include <utility>
+
 #include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/series_stats.hpp"
+#include "errormodels/stats/lattice.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -18,9 +22,17 @@ std::array<double, 6> modelDrifts(const ErrorModelSpec& model) {
 }
 
 std::optional<DriftFree> withoutModelDrift(const Record& record, const ErrorModelSpec& model) {
-  const auto drift = modelDrifts(model);
+  auto drift = modelDrifts(model);
+  std::array<double, 6> kept{};
   bool any = false;
-  for (int c = 0; c < 6; ++c) any = any || (drift[std::size_t(c)] != 0.0 && !channelData(record, c).empty());
+  for (int c = 0; c < 6; ++c) {
+    // A channel on a lattice the diagnosis sees keeps the model's ramp: less a line its values
+    // would leave the lattice, and their rounding would read as white noise.
+    const auto& y = channelData(record, c);
+    if (!y.empty() && drift[std::size_t(c)] != 0.0 && latticeVisible(y, latticeStep(y), record.rate_hz))
+      std::swap(kept[std::size_t(c)], drift[std::size_t(c)]);
+    any = any || (drift[std::size_t(c)] != 0.0 && !y.empty());
+  }
   if (!any) return std::nullopt;
   DriftFree out{record, model, drift};
   const double dt = 1.0 / record.rate_hz;
@@ -32,6 +44,13 @@ std::optional<DriftFree> withoutModelDrift(const Record& record, const ErrorMode
     for (EffectList l : {EffectList::all, EffectList::x, EffectList::y, EffectList::z})
       for (auto& e : out.model.sensor(sensor).list(l))
         if (e.type == "ramp") e.enabled = false;
+  for (int c = 0; c < 6; ++c)  // a kept ramp back on its own axis, after its other effects
+    if (kept[std::size_t(c)] != 0.0) {
+      const Dimension signal = c < 3 ? Dimension::angularRate() : Dimension::acceleration();
+      out.model.sensor(c < 3 ? Sensor::gyro : Sensor::accel)
+          .list(axisList(c % 3))
+          .push_back(EffectSpec::make("ramp", {ParamSpec::quantity("slope", kept[std::size_t(c)], signal / Dimension::time())}));
+    }
   return out;
 }
 

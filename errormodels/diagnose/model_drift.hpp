@@ -21,7 +21,9 @@ std::array<double, 6> modelDrifts(const ErrorModelSpec& model);
 /// A record and a model with the model's ramps taken out: channel c of the record less
 /// drift[c] (k + 1) dt (the ramp as the model's realisations hold it, t from 0 at the first
 /// sample's end; the offset is the record's level, which the comparison does not see), the
-/// model's ramps disabled; the record keeps its name. None when no diagnosed channel has a ramp.
+/// model's ramps disabled; the record keeps its name. A channel whose values lie on a lattice the
+/// diagnosis sees (latticeVisible) keeps its ramp in both (drift[c] = 0; the model's ramps of that
+/// axis summed into one after its other effects). None when no channel's ramp is taken out.
 struct DriftFree {
   Record record;
   ErrorModelSpec model;

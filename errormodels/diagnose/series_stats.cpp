@@ -109,6 +109,12 @@ double oneSampleAvarScatter(const std::vector<double>& y, const Setup& s) {
   return avar1.empty() ? 0.0 : std::sqrt(3.0 / double(y.size())) * avar1.front();
 }
 
+bool latticeVisible(const std::vector<double>& y, double q, double rate) {
+  Setup s;
+  s.rate = rate;
+  return q > 0 && q * q / 12.0 > oneSampleAvarScatter(y, s);
+}
+
 SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
   SeriesStats out;
   out.avar = allanVariance(y, s);
