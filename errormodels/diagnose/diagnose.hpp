@@ -123,6 +123,12 @@ struct LjungBox {
   double Q = 0.0, pValue = 1.0;
 };
 
+/// A warm-up of the model, A exp(-t/tau) [SI, s].
+struct ModelWarmup {
+  double amplitude = 0.0;
+  double tau = 0.0;
+};
+
 struct AxisDiagnosis {
   std::string channel;  ///< "gx"
   std::string unit;     ///< display unit of the signal ("deg/s" or "m/s^2")
@@ -142,6 +148,11 @@ struct AxisDiagnosis {
   /// The model's own ramp slope on this channel [SI/s], taken out of the record and the model
   /// before the comparison (model_drift.hpp); 0 when the model has none.
   double modelDrift = 0.0;
+  /// The model's own warm-ups on this channel, taken out in the same way; empty when none.
+  std::vector<ModelWarmup> modelWarmups;
+  /// Whether the model's own temperature polynomial on this channel was taken out likewise (on a
+  /// record with a temperature column).
+  bool modelTemperature = false;
   double chi2Selected = 0.0;  ///< Allan chi2 of the model with the reported findings (refitted)
   /// The longest tau range the model with its reported findings still misses (residual beyond
   /// 2.58 sigma on one side, >= 2 points, remaining chi2 above its 0.999 quantile): what no

@@ -1,12 +1,15 @@
-// The model's known drift: a `ramp` in the model is a deterministic line, R t, with no scatter.
-// The diagnosis takes it out of the record and out of the model before comparing them, so that
+// The model's known drift: a `ramp` (R t), a `warmup` (A exp(-t/tau)) and, on a record with a
+// temperature column, a `temperature` polynomial in the model are deterministic, with no scatter.
+// The diagnosis takes them out of the record and out of the model before comparing them, so that
 // what is compared is the rest, and a drift the record shows beyond the model's own (a slope off
-// by dR, or of the other sign: the Allan variance cannot tell R from -R) is found as a `ramp` of
-// slope dR, which `--add` writes beside the model's own (the slopes add).
+// by dR, a warm-up of another size, another temperature coefficient; or of the other sign: the
+// Allan variance cannot tell R from -R) is found as a `ramp`, `warmup` or `temperature` of what
+// is beyond, which `--add` writes beside the model's own (the two add).
 #pragma once
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/model_spec.hpp"
@@ -14,25 +17,38 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
-/// The summed slope of the enabled ramps on each channel gx..az [SI/s] (the `all` list's and the
-/// axis' own).
-std::array<double, 6> modelDrifts(const ErrorModelSpec& model);
+/// One channel's deterministic drift in the model (its enabled effects of the `all` list and the
+/// axis' own): the summed slope of its ramps [SI/s], its warm-ups, whether it has a temperature
+/// polynomial (counted only when `withTemperature`: the record has a temperature column).
+struct ChannelDrift {
+  double slope = 0.0;
+  std::vector<ModelWarmup> warmups;
+  bool temperature = false;
+  bool any() const { return slope != 0.0 || !warmups.empty() || temperature; }
+};
 
-/// A record and a model with the model's ramps taken out: channel c of the record less
-/// drift[c] (k + 1) dt (the ramp as the model's realisations hold it, t from 0 at the first
-/// sample's end; the offset is the record's level, which the comparison does not see), the
-/// model's ramps disabled; the record keeps its name. A channel whose values lie on a lattice the
-/// diagnosis sees (latticeVisible) keeps its ramp in both (drift[c] = 0; the model's ramps of that
-/// axis summed into one after its other effects). None when no channel's ramp is taken out.
+std::array<ChannelDrift, 6> modelDrifts(const ErrorModelSpec& model, bool withTemperature);
+
+/// A record and a model with the model's deterministic drift taken out: channel c of the record
+/// less that drift as the model's realisations hold it (the model's ramps, warm-ups and
+/// temperature polynomials alone, realised by simulateRecord on the record's samples and
+/// temperatures; the offset is the record's level, which the comparison does not see), those
+/// effects disabled in the model; the record keeps its name. A channel whose values lie on a
+/// lattice the diagnosis sees (latticeVisible) keeps them in both (drift[c] empty; the model's
+/// drift effects of that axis put back on it after its other effects): less a drift, its values
+/// would leave the lattice and their rounding would read as white noise. None when no channel's
+/// drift is taken out.
 struct DriftFree {
   Record record;
   ErrorModelSpec model;
-  std::array<double, 6> drift{};
+  std::array<ChannelDrift, 6> drift{};
 };
 std::optional<DriftFree> withoutModelDrift(const Record& record, const ErrorModelSpec& model);
 
-/// States on each axis of `d` the drift taken out (AxisDiagnosis::modelDrift) and, in a `ramp`
-/// finding's evidence, the record's whole drift (the model's and the finding's slopes summed).
-void stateModelDrift(Diagnosis& d, const std::array<double, 6>& drift);
+/// States on each axis of `d` the drift taken out (AxisDiagnosis::modelDrift, ::modelWarmups,
+/// ::modelTemperature) and, in a `ramp` finding's evidence, the record's whole drift (the model's
+/// and the finding's slopes summed); in a `warmup` or `temperature` finding's, that it is beyond
+/// the model's own.
+void stateModelDrift(Diagnosis& d, const std::array<ChannelDrift, 6>& drift);
 
 }  // namespace sinsim::errormodels::diagnose::detail

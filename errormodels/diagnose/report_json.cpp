@@ -50,6 +50,9 @@ nlohmann::json axisJson(const AxisDiagnosis& a) {
   j["chi2_points"] = a.chi2Points;
   j["noise_scale"] = a.noiseScale;
   if (a.modelDrift != 0.0) j["model_drift_si"] = a.modelDrift;  // absent: the model has no ramp
+  for (const ModelWarmup& w : a.modelWarmups)  // absent: the model has no warm-up
+    j["model_warmups_si"].push_back({{"amplitude", w.amplitude}, {"tau", w.tau}});
+  if (a.modelTemperature) j["model_temperature_taken_out"] = true;  // absent: none taken out
   j["fits"] = a.fits();
   j["chi2_selected"] = a.chi2Selected;
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained

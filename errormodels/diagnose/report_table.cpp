@@ -53,6 +53,11 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   if (a.modelDrift != 0.0)
     o << "  " << a.channel << " drift: the model's ramp " << detail::quantity(a.modelDrift, detail::unitsFor(detail::channelIndex(a.channel)).slope)
       << " was taken out of the record and the model before the comparison (a ramp found is the slope beyond it)\n";
+  for (const ModelWarmup& w : a.modelWarmups)
+    o << "  " << a.channel << " drift: the model's warm-up " << detail::quantity(w.amplitude, detail::unitsFor(detail::channelIndex(a.channel)).level)
+      << " (tau " << num(w.tau, 4) << " s) was taken out of the record and the model before the comparison (a warm-up found is what is beyond it)\n";
+  if (a.modelTemperature)
+    o << "  " << a.channel << " drift: the model's temperature polynomial, at the record's temperatures, was taken out of the record and the model before the comparison (a temperature found is what is beyond it)\n";
   for (const auto& f : a.findings)
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
   for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";
