@@ -7,6 +7,38 @@
 
 namespace sinsim::errormodels::fit {
 
+namespace {
+
+// J' C J of the sandwich with C(i, j) = phi^|i-j| (kappa + |i-j|) + phi^(h+k) (kappa + h + k),
+// h = first + i, k = first + j (Bartlett's covariance without its sigma^4 / N), in O(m): C is never
+// formed (m lags of a 1 kHz record are 10^5, and C would be 80 GB). The Toeplitz part by forward
+// and backward recursions, F_i = sum_{j<=i} phi^(i-j) a_j = phi F_{i-1} + a_i and
+// G_i = sum_{j<=i} (i-j) phi^(i-j) a_j = phi (G_{i-1} + F_{i-1}) (a_j the j-th row of J), and
+// their mirror images; the rest is of rank 3 in u = sum phi^h a and v = sum h phi^h a.
+Eigen::Matrix2d bartlettMiddle(const Eigen::MatrixXd& J, std::size_t first, double phi, double kappa) {
+  const Eigen::Index m = J.rows();
+  Eigen::MatrixXd F(m, 2), G(m, 2), B(m, 2), H(m, 2);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    F.row(i) = J.row(i) + (i ? Eigen::RowVector2d(phi * F.row(i - 1)) : Eigen::RowVector2d::Zero());
+    G.row(i) = i ? Eigen::RowVector2d(phi * (G.row(i - 1) + F.row(i - 1))) : Eigen::RowVector2d::Zero();
+  }
+  for (Eigen::Index i = m - 1; i >= 0; --i) {
+    B.row(i) = J.row(i) + (i + 1 < m ? Eigen::RowVector2d(phi * B.row(i + 1)) : Eigen::RowVector2d::Zero());
+    H.row(i) = i + 1 < m ? Eigen::RowVector2d(phi * (H.row(i + 1) + B.row(i + 1))) : Eigen::RowVector2d::Zero();
+  }
+  const Eigen::MatrixXd toeplitzJ = kappa * (F + B - J) + G + H;  // row i: sum_j C1(i, j) a_j
+  Eigen::Vector2d u = Eigen::Vector2d::Zero(), v = Eigen::Vector2d::Zero();
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const double h = static_cast<double>(first) + static_cast<double>(i);
+    const double w = std::pow(phi, h);
+    u += w * J.row(i).transpose();
+    v += h * w * J.row(i).transpose();
+  }
+  return J.transpose() * toeplitzJ + kappa * u * u.transpose() + u * v.transpose() + v * u.transpose();
+}
+
+}  // namespace
+
 GaussMarkovFit fitGaussMarkov(const std::vector<double>& acf, double lagStep,
                               const GaussMarkovFitOptions& options) {
   if (!(std::isfinite(lagStep) && lagStep > 0.0))
@@ -110,16 +142,7 @@ GaussMarkovFit fitGaussMarkov(const std::vector<double>& acf, double lagStep,
     const double N = static_cast<double>(options.recordLength);
     const double phi = std::exp(-lagStep / tau);
     const double kappa = (1.0 + phi * phi) / (1.0 - phi * phi);
-    Eigen::MatrixXd C(m, m);
-    for (Eigen::Index i = 0; i < m; ++i)
-      for (Eigen::Index j = 0; j < m; ++j) {
-        const double h = static_cast<double>(first) + static_cast<double>(i);
-        const double k = static_cast<double>(first) + static_cast<double>(j);
-        const double d = std::abs(h - k);
-        C(i, j) = s2 * s2 / N *
-                  (std::pow(phi, d) * (kappa + d) + std::pow(phi, h + k) * (kappa + h + k));
-      }
-    covTheta = JtJinv * (J.transpose() * C * J) * JtJinv;
+    covTheta = JtJinv * (s2 * s2 / N * bartlettMiddle(J, first, phi, kappa)) * JtJinv;
     fit.bartlettCovariance = true;
   } else {
     const double dof = std::max<double>(1.0, static_cast<double>(m) - 2.0);

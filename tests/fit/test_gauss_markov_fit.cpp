@@ -105,3 +105,51 @@ TEST_CASE("GM fit refuses unusable autocovariances", "[fit][gm][input]") {
   CHECK_THROWS_AS(fitGaussMarkov({1.0, 1.2, 1.5, 1.9}, 0.01), sinsim::InputError);  // no decay
   CHECK_THROWS_WITH(fitGaussMarkov({1.0, std::nan(""), 0.2}, 0.01), Catch::Contains("lag 1"));
 }
+
+// The Bartlett sandwich is computed without forming its m x m covariance (gauss_markov_fit.cpp,
+// bartlettMiddle): it must equal the dense (J'J)^-1 J' C J (J'J)^-1 built here from the header's
+// formula, on a fit whose lags start at 0 and at 1. And a fit over 10^5 lags -- an ACF that never
+// decays, as a random walk's over the 100 s of lags `fit --kind gm` computes at 1 kHz -- runs: the
+// dense C was 80 GB (std::bad_alloc, found by a blind round trip of `fit`, bench/fit_blind/).
+TEST_CASE("GM fit: the Bartlett covariance equals the dense sandwich; 10^5 lags run", "[fit][gm]") {
+  const double sigma = 0.05, tau = 0.5, dt = 0.01;
+  const std::size_t n = 30000;
+  const auto x = simulateGm(sigma, tau, dt, n, 77);
+  for (const bool skip : {false, true}) {
+    GaussMarkovFitOptions opt;
+    opt.recordLength = n;
+    opt.skipLagZero = skip;
+    const auto fit = fitGaussMarkov(demeanedAcf(x, 400), dt, opt);
+    REQUIRE(fit.bartlettCovariance);
+    const double s2 = fit.sigma * fit.sigma, phi = std::exp(-dt / fit.tau);
+    const double kappa = (1 + phi * phi) / (1 - phi * phi);
+    const auto m = Eigen::Index(fit.lastLag - fit.firstLag + 1);
+    Eigen::MatrixXd J(m, 2), C(m, m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const double h = double(fit.firstLag) + double(i), e = std::exp(-h * dt / fit.tau);
+      J(i, 0) = e;
+      J(i, 1) = s2 * e * h * dt / (fit.tau * fit.tau);
+      for (Eigen::Index j = 0; j < m; ++j) {
+        const double k = double(fit.firstLag) + double(j), d = std::abs(h - k);
+        C(i, j) = s2 * s2 / double(n) * (std::pow(phi, d) * (kappa + d) + std::pow(phi, h + k) * (kappa + h + k));
+      }
+    }
+    const Eigen::Matrix2d A = (J.transpose() * J).inverse();
+    Eigen::Matrix2d cov = A * (J.transpose() * C * J) * A;
+    Eigen::Matrix2d G = Eigen::Matrix2d::Identity();
+    G(0, 0) = 0.5 / fit.sigma;
+    cov = G * cov * G.transpose();
+    INFO("skip lag 0: " << skip << ", lags " << fit.firstLag << ".." << fit.lastLag);
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) CHECK(fit.covariance(r, c) == Approx(cov(r, c)).epsilon(1e-9));
+  }
+  // An ACF that never falls to e^-3 over 10^5 lags, as a random walk's sample ACF (1 - k / (2 L)):
+  // every lag is used.
+  std::vector<double> slow(100001);
+  for (std::size_t k = 0; k < slow.size(); ++k) slow[k] = 1.0 - double(k) / (2.0 * double(slow.size()));
+  GaussMarkovFitOptions opt;
+  opt.recordLength = 1000000;
+  const auto fit = fitGaussMarkov(slow, 1e-3, opt);
+  CHECK(fit.lastLag == 100000);
+  CHECK(std::isfinite(fit.tauStdError));
+}
