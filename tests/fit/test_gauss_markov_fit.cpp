@@ -111,7 +111,7 @@ TEST_CASE("GM fit refuses unusable autocovariances", "[fit][gm][input]") {
 // formula, on a fit whose lags start at 0 and at 1. And a fit over 10^5 lags -- an ACF that never
 // decays, as a random walk's over the 100 s of lags `fit --kind gm` computes at 1 kHz -- runs: the
 // dense C was 80 GB (std::bad_alloc, found by a blind round trip of `fit`, bench/fit_blind/).
-TEST_CASE("GM fit: the Bartlett covariance equals the dense sandwich; 10^5 lags run", "[fit][gm]") {
+TEST_CASE("GM fit: the Bartlett covariance equals the dense sandwich and 10^5 lags run", "[fit][gm]") {
   const double sigma = 0.05, tau = 0.5, dt = 0.01;
   const std::size_t n = 30000;
   const auto x = simulateGm(sigma, tau, dt, n, 77);
