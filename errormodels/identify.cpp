@@ -243,6 +243,14 @@ bool quantizationIsDithered(double Q, double lattice, double dt) {
   return !(lattice >= 0.5 * std::sqrt(12.0) * Q / dt);
 }
 
+/// The record's value lattice as the increment LSB of a fitted quantization Q [SI s]: step * dt
+/// where that is within 1.5x of the fit's LSB sqrt(12) Q (values on a lattice are rounded at its
+/// step: the lattice is the exact LSB, the Allan slope -1 only its estimate); 0 otherwise.
+double latticeLsb(double Q, double lattice, double dt) {
+  const double lsb = lattice * dt, fitted = std::sqrt(12.0) * Q;
+  return lsb > 0.0 && std::fabs(std::log(lsb / fitted)) < std::log(1.5) ? lsb : 0.0;
+}
+
 }  // namespace
 
 Identification identify(const Record& record, const IdentifyOptions& opt) {
@@ -505,7 +513,10 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.written.notes.push_back(s);
       }
       const double Q = writtenQuantization(ax.written);
-      ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, latticeStep(x), dt);
+      const double lattice = latticeStep(x);
+      ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);
+      if (ax.written.latent && Q > 0.0 && !ax.written.ditheredQuantization)
+        ax.written.latticeLsb = latticeLsb(Q, lattice, dt);
       axes[slot] = std::move(ax);
       ++done;
     });

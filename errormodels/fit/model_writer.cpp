@@ -200,7 +200,8 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
 }
 
 /// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec.
-void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal, bool dithered) {
+void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal, bool dithered,
+               double latticeLsb) {
   const double rate = 1.0 / f.sampleInterval;
   b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
          << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
@@ -230,7 +231,14 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   };
   const Dimension time = Dimension::time();
   const LatentModel& m = f.model;
-  if (m.quantization > 0.0) {
+  if (m.quantization > 0.0 && latticeLsb > 0.0) {
+    const double k = std::sqrt(12.0);
+    b.line << "quantization lsb: the record's value lattice step times the sample interval, exact (the Allan "
+              "fit gave " << q(k * m.quantization, u.increment) << " +- " << q(k * sd("quantization"), u.increment)
+           << ")";
+    b.endComment();
+    b.add(quantizationSpec(ParamSpec::quantity("lsb", latticeLsb, signal * time), false));
+  } else if (m.quantization > 0.0) {
     const double k = std::sqrt(12.0);
     b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
            << ln("quantization", k, u.increment) << ")";
@@ -333,7 +341,7 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
         {withSigma(ParamSpec::quantity("sigma", g.sigma, signal), {g.sigmaStdError}),
          withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
   }
-  if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization);
+  if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization, ax.latticeLsb);
   if (ax.allan) {
     b.line << "Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
            << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6) << " s, chi2 "

@@ -56,6 +56,11 @@ struct AxisFitResult {
   /// leave (quantizationIsDithered, identify.cpp), so its Allan slope -1 is quantization noise of a
   /// busy input; carried rounding at that LSB would realise a pulse train instead.
   bool ditheredQuantization = false;
+  /// The record's value lattice as an increment LSB [signal s]: its step (stats/lattice.hpp) times
+  /// the sample interval, where the composite fit's quantization is within 1.5x of it and not
+  /// dithered (latticeLsb, identify.cpp). Written as the lsb, exact, in place of the Allan fit's
+  /// (which strong rounding biases low: successive rounding errors are correlated); 0: none.
+  double latticeLsb = 0.0;
 };
 
 struct ModelProvenance {
