@@ -41,14 +41,14 @@ std::vector<EffectSpec> driftEffects(const ErrorModelSpec& model, int c, bool wi
   return out;
 }
 
-}  // namespace
-
 std::array<ChannelDrift, 6> modelDrifts(const ErrorModelSpec& model, bool withTemperature) {
   std::array<ChannelDrift, 6> drift{};
   for (int c = 0; c < 6; ++c)
     for (const auto& e : driftEffects(model, c, withTemperature)) addDrift(e, drift[std::size_t(c)]);
   return drift;
 }
+
+}  // namespace
 
 std::optional<DriftFree> withoutModelDrift(const Record& record, const ErrorModelSpec& model) {
   const bool withTemperature = !record.temperature.empty();

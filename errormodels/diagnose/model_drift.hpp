@@ -27,8 +27,6 @@ struct ChannelDrift {
   bool any() const { return slope != 0.0 || !warmups.empty() || temperature; }
 };
 
-std::array<ChannelDrift, 6> modelDrifts(const ErrorModelSpec& model, bool withTemperature);
-
 /// A record and a model with the model's deterministic drift taken out: channel c of the record
 /// less that drift as the model's realisations hold it (the model's ramps, warm-ups and
 /// temperature polynomials alone, realised by simulateRecord on the record's samples and

@@ -231,21 +231,22 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   };
   const Dimension time = Dimension::time();
   const LatentModel& m = f.model;
-  if (m.quantization > 0.0 && latticeLsb > 0.0) {
-    const double k = std::sqrt(12.0);
-    b.line << "quantization lsb: the record's value lattice step times the sample interval, exact (the Allan "
-              "fit gave " << q(k * m.quantization, u.increment) << " +- " << q(k * sd("quantization"), u.increment)
-           << ")";
-    b.endComment();
-    b.add(quantizationSpec(ParamSpec::quantity("lsb", latticeLsb, signal * time), false));
-  } else if (m.quantization > 0.0) {
-    const double k = std::sqrt(12.0);
-    b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
-           << ln("quantization", k, u.increment) << ")";
-    b.endComment();
-    b.add(quantizationSpec(withSigma(ParamSpec::quantity("lsb", k * m.quantization, signal * time),
-                                     {k * sd("quantization")}),
-                           dithered));
+  if (m.quantization > 0.0) {
+    const double k = std::sqrt(12.0);  // LSB of the quantization noise Q
+    if (latticeLsb > 0.0) {
+      b.line << "quantization lsb: the record's value lattice step times the sample interval, exact (the Allan "
+                "fit gave " << q(k * m.quantization, u.increment) << " +- " << q(k * sd("quantization"), u.increment)
+             << ")";
+      b.endComment();
+      b.add(quantizationSpec(ParamSpec::quantity("lsb", latticeLsb, signal * time), false));
+    } else {
+      b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
+             << ln("quantization", k, u.increment) << ")";
+      b.endComment();
+      b.add(quantizationSpec(withSigma(ParamSpec::quantity("lsb", k * m.quantization, signal * time),
+                                       {k * sd("quantization")}),
+                             dithered));
+    }
   }
   if (m.white > 0.0) {
     b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma" << ln("white", 1.0, u.density) << ")";
