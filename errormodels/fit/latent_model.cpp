@@ -13,9 +13,19 @@ namespace sinsim::errormodels::fit {
 
 namespace {
 
+/// The five Allan-term coefficients; a lattice quantization is left to its own form (latticeScale).
 std::array<double, kAllanTermCount> allanTheta(const LatentModel& mdl) {
   const auto sq = [](double v) { return v * v; };
-  return {sq(mdl.quantization), sq(mdl.white), sq(mdl.flicker), sq(mdl.randomWalk), sq(mdl.drift)};
+  const double q = mdl.lattice.active() ? 0.0 : sq(mdl.quantization);
+  return {q, sq(mdl.white), sq(mdl.flicker), sq(mdl.randomWalk), sq(mdl.drift)};
+}
+
+/// 12 Q^2 / D^2: the lattice rounding's forms (at Q = D / sqrt 12) scaled to the model's Q; 0
+/// without a lattice or a quantization.
+double latticeScale(const LatentModel& mdl) {
+  if (!mdl.lattice.active() || !(mdl.quantization > 0.0)) return 0.0;
+  const double r = mdl.quantization / mdl.lattice.step;
+  return 12.0 * r * r;
 }
 
 }  // namespace
@@ -89,6 +99,8 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
     avar[i] *= avar[i];
     for (const GmTerm& g : model.gm) avar[i] += gmDiscreteAllanVariance(g.sigma * g.sigma, g.tau, dt, m[i]);
   }
+  if (const double q = latticeScale(model); q > 0.0)
+    for (std::size_t i = 0; i < m.size(); ++i) avar[i] += q * latticeQuantizationAllanVariance(model.lattice, dt, m[i]);
   if (model.arVariance > 0.0) {
     const std::vector<double>& ar = arUnitAllanVariance(model.arPolynomial, m);
     for (std::size_t i = 0; i < m.size(); ++i) avar[i] += model.arVariance * ar[i];
@@ -100,6 +112,7 @@ double latentPsd(const LatentModel& model, double dt, double w) {
   auto th = allanTheta(model);
   th[4] = 0.0;  // the ramp is deterministic
   double S = allanTermsPsd(th, dt, w);
+  if (const double q = latticeScale(model); q > 0.0) S += q * latticeQuantizationPsd(model.lattice, dt, w);
   for (const GmTerm& g : model.gm) {
     // AR(1): sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2
     const double phi = std::exp(-dt / g.tau);

@@ -26,6 +26,11 @@
 // coefficient like the others; its Allan variance is ar::allanVariance (exact at the record's
 // interval), its PSD E / |A(e^{iw})|^2.
 //
+// Quantization on a value lattice (LatentModel::lattice active, fit/lattice_rounding.hpp): where
+// the true integral moves less than the LSB per sample the rounding errors are correlated; the
+// quantization term's Allan variance and PSD are then the rounding's exact forms, scaled by
+// 12 Q^2 / D^2 (1 at Q = D / sqrt(12), the lattice's own Q).
+//
 // Units: U is the channel's SI unit (rad/s, m/s^2). Q [U s], N [U sqrt(s)], B [U], K [U/sqrt(s)],
 // R [U/s], sigma [U], T [s].
 #pragma once
@@ -33,6 +38,8 @@
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "errormodels/fit/lattice_rounding.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -53,6 +60,9 @@ struct LatentModel {
   /// AR(p) term: [1, a1..ap] (empty: none) and its driving variance E [U^2] (0: absent).
   std::vector<double> arPolynomial;
   double arVariance = 0.0;
+  /// The lattice the quantization rounds to and the true integral's motion (inactive: the
+  /// classical white rounding error, 3 Q^2 / tau^2).
+  RoundingLattice lattice;
 
   /// "ar + gm + random_walk": the terms present, in the order quantization, white, ar, gm,
   /// flicker, random_walk, drift.

@@ -277,12 +277,13 @@ double whittleSlopeVariance(const WhittleBins& bins, const LatentModel& model) {
   return v / (dt * dt);
 }
 
-WhittleBins whittleBins(const std::vector<double>& x, double dt) {
+WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingLattice& lattice) {
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("Whittle: sample interval must be > 0");
   if (x.size() < 64) throw InputError("Whittle: need at least 64 samples, got " + std::to_string(x.size()));
   const Periodogram p = taperedPeriodogram(x, kTaperFraction, Detrend::Linear);
   WhittleBins b;
   b.dt = dt;
+  b.lattice = lattice;
   const std::size_t n = p.taper.size();
   b.slope = p.slope / dt;
   const SlopeKernel K = slopeKernelCached(p.taper);
@@ -292,6 +293,8 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt) {
   const double dw = 2.0 * kPi / double(n);
   LatentModel unit[4];
   unit[0].quantization = 1.0, unit[1].white = 1.0, unit[2].flicker = 1.0, unit[3].randomWalk = 1.0;
+  if (lattice.active()) unit[0].quantization = lattice.step / std::sqrt(12.0), unit[0].lattice = lattice;
+  const double unitQ2 = unit[0].quantization * unit[0].quantization;
   for (std::size_t j = 1; j <= last;) {
     const std::size_t width =
         j <= kSingleOrdinates ? 1 : std::max<std::size_t>(1, std::size_t(kBinWidth * double(j)));
@@ -311,10 +314,14 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt) {
       for (double w : nodes) col[t] += latentPsd(unit[t], dt, w);
       col[t] /= double(nodes.size());
     }
+    col[0] /= unitQ2;
     double factor = 1.0;
     if (cnt == 1 && j <= kExactOrdinates && j < last) {
       const ExactColumns& e = exactColumnsCached(p.taper)[j - 1];
-      col[0] = e.quantization / (dt * dt), col[1] = e.white / dt, col[3] = e.randomWalk * dt;
+      const double w = dw * double(j), s = std::sin(0.5 * w);
+      const double classical = 4.0 * s * s / (dt * dt);  // the classical quantization PSD at unit Q^2
+      const double lat = lattice.active() ? latticeQuantizationPsd(lattice, dt, w) / unitQ2 / classical : 1.0;
+      col[0] = lat * e.quantization / (dt * dt), col[1] = e.white / dt, col[3] = e.randomWalk * dt;
       factor = col[1] / (1.0 / dt);  // the white PSD is 1/dt at unit N^2
       col[2] *= factor;
     }
@@ -361,6 +368,7 @@ WhittleSetFit whittleFitSet(const WhittleBins& bins, double wMax, const LatentTe
     }
   }
   LatentModel& m = out.model;
+  m.lattice = bins.lattice;
   j = 0;
   const Eigen::VectorXd& th = best.profile.theta;
   auto next = [&]() { return std::sqrt(std::max(th(j++), 0.0)); };

@@ -54,12 +54,16 @@ struct WhittleBins {
   /// channels of one record length.
   std::shared_ptr<const std::vector<double>> slopeWeights;
   double slopeWhite = 0, slopeQuantization = 0, slopeWalk = 0, slopeFlicker = 0;
+  /// The quantization's lattice (LatentModel::lattice) its column and the fitted models use.
+  RoundingLattice lattice;
 };
 /// Fourier frequencies j = 1..kExactOrdinates get exact white, quantization and walk columns.
 inline constexpr std::size_t kExactOrdinates = 16;
 
-/// Throws InputError for fewer than 64 samples or non-finite samples. dt [s].
-WhittleBins whittleBins(const std::vector<double>& x, double dt);
+/// Throws InputError for fewer than 64 samples or non-finite samples. dt [s]. With an active
+/// lattice the quantization column is its rounding's PSD (at the exact low ordinates: theirs
+/// scaled by the lattice PSD over the classical one).
+WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingLattice& lattice = {});
 
 /// Whittle fit of one term set (no drift, no AR). start: the Allan fit of that set (its taus and
 /// variances start the search). Bins above wMax [rad/sample] are left out (the start of the Allan
