@@ -345,6 +345,9 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       }
       ax.mean = mean;
       ax.stddev = std::sqrt(var / static_cast<double>(n));
+      // The value lattice (0: none) and, for a quantization term, the lattice its rounding is on.
+      const double lattice = latticeStep(x);
+      const fit::RoundingLattice rounding{lattice * dt, 0.0, mean * dt};
       if (!(ax.stddev > 0.0))
         throw InputError(record.source + ": channel " + c.name +
                          " is constant: nothing to fit");
@@ -448,6 +451,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         fit::LatentFitOptions lo;
         lo.sampleInterval = dt;
         lo.scanStart = true;
+        lo.lattice = rounding;
         if (opt.kind == IdentifyKind::Gm)
           lo.minGmTauSamples = 2.0;
         if (opt.kind == IdentifyKind::Gm)
@@ -487,7 +491,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         break;
       }
       case IdentifyKind::Auto:
-        detail::chooseAuto(ax, x, pts, dt, os, opt);
+        detail::chooseAuto(ax, x, pts, dt, rounding, os, opt);
         for (const auto &d : ax.decision)
           ax.written.notes.push_back("auto: " + d);
         if (ax.arSlow)
@@ -513,7 +517,6 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.written.notes.push_back(s);
       }
       const double Q = writtenQuantization(ax.written);
-      const double lattice = latticeStep(x);
       ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);
       if (ax.written.latent && Q > 0.0 && !ax.written.ditheredQuantization)
         ax.written.latticeLsb = latticeLsb(Q, lattice, dt);

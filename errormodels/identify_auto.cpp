@@ -84,7 +84,8 @@ ArVerdict shortCorrelation(const fit::OrderSelection& screen, const fit::LatentF
 ///     random walk, flicker) fitted jointly beside it (fit/ar_slow_fit.hpp, as --kind ar+slow),
 ///     so that the AR does not hide the drift-relevant long tau.
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
-                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt) {
+                double dt, const fit::RoundingLattice& lattice, const fit::OrderSelectionOptions& os,
+                const IdentifyOptions& opt) {
   const std::size_t n = x.size();
   const RangedFit whole = fitTermsFrom(pts, dt, n, {true, true, true, true, true}, 0.0, 7);
   out.allanFit = whole.fit;
@@ -126,6 +127,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   // description alone could keep a flicker floor and drop the white noise above it).
   fit::LatentFitOptions lo;
   lo.sampleInterval = dt;
+  lo.lattice = lattice;
   fit::LatentFit latent = fit::fitLatentModel(x, lo);
   const ArVerdict verdict = shortCorrelation(screen, latent, dt, opt.autoMinPredictionGain);
   const bool shortCorr = verdict.ar;

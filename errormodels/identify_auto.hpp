@@ -13,7 +13,9 @@ namespace sinsim::errormodels::detail {
 
 /// Fills out.kind, out.written, out.allanFit / allanLongTau / composite and out.decision for the
 /// demeaned record x (sample interval dt [s]) from its usable Allan points, by the auto rule.
+/// lattice: the record's (fit::LatentFitOptions::lattice; step 0: none).
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
-                double dt, const fit::OrderSelectionOptions& os, const IdentifyOptions& opt);
+                double dt, const fit::RoundingLattice& lattice, const fit::OrderSelectionOptions& os,
+                const IdentifyOptions& opt);
 
 }  // namespace sinsim::errormodels::detail

@@ -106,12 +106,24 @@ struct Problem {
   /// The five non-GM Allan basis columns at the points (allanColumn), computed once: they do not
   /// depend on the GM taus the search varies.
   std::array<Eigen::VectorXd, kAllanTermCount> basis;
+  RoundingLattice lattice;           ///< of the quantization term (LatentFitOptions::lattice)
+  /// Where that lattice's rounding is correlated: its estimates' covariance beyond the Gaussian
+  /// one at the first roundingExcess.rows() points (latticeExcess), added to every Omega.
+  Eigen::MatrixXd roundingExcess;
+  bool latticeMotionRead = false;    ///< the lattice's motion read from the record (motionShape)
   std::vector<double> arPolynomial;  ///< of the AR term (LatentFitOptions::arPolynomial)
   Eigen::VectorXd arColumn;          ///< its Allan variance at unit driving variance
 };
 
-/// Column of a five-term Allan basis function (index in AllanTermKind order) at the points.
+/// Column of a five-term Allan basis function (index in AllanTermKind order) at the points; the
+/// quantization's at unit Q^2 on the problem's lattice where that is active.
 Eigen::VectorXd allanColumn(const Problem& p, std::size_t kind) {
+  if (kind == 0 && p.lattice.active()) {
+    LatentModel unit;
+    unit.quantization = 1.0, unit.lattice = p.lattice;
+    const std::vector<double> a = latentAllanVariance(unit, p.dt, p.m);
+    return Eigen::Map<const Eigen::VectorXd>(a.data(), Eigen::Index(a.size()));
+  }
   std::array<double, kAllanTermCount> th{};
   th[kind] = 1.0;
   const std::vector<double> a = allanModelAdev(th, p.tau);
@@ -202,6 +214,7 @@ SetFit fitSet(const Problem& p, const LatentTermSet& s) {
 
 LatentModel modelOf(const Problem& p, const SetFit& f) {
   LatentModel m;
+  m.lattice = p.lattice;
   Eigen::Index j = 0;
   auto next = [&]() { return std::sqrt(std::max(f.theta(j++), 0.0)); };
   if (f.set.quantization) m.quantization = next();
@@ -228,10 +241,13 @@ Eigen::MatrixXd diagonalWhitening(const Problem& p, const Eigen::VectorXd& level
   return w.asDiagonal();
 }
 
-/// Whitening from the covariance of the Allan estimates under `model` (GLS).
+/// Whitening from the covariance of the Allan estimates under `model` (GLS), with the lattice
+/// rounding's non-Gaussian excess where there is one.
 Eigen::MatrixXd modelWhitening(const Problem& p, const LatentModel& model) {
-  const Eigen::MatrixXd C =
+  Eigen::MatrixXd C =
       allanEstimateCovariance([&](double w) { return latentPsd(model, p.dt, w); }, p.m, p.N);
+  const Eigen::Index k = p.roundingExcess.rows();
+  if (k > 0) C.topLeftCorner(k, k) += p.roundingExcess;
   const Eigen::VectorXd sd = C.diagonal().cwiseMax(0.0).cwiseSqrt();
   if (!(sd.minCoeff() > 0.0)) throw NumericalError("latent fit: zero modelled Allan variance");
   const Eigen::MatrixXd R = correlationOfCovariance(C);
@@ -250,6 +266,51 @@ Eigen::VectorXd modelLevels(const Problem& p, const LatentModel& m) {
   return l;
 }
 
+
+/// The motion s read from the record's Allan variance at tau = dt (fitOnLattice) carries that
+/// estimate's error (variance var1) into the rounding's shape at every correlated point: J = d
+/// AVAR_e(m) / ds x sd(s), sd(s) = sqrt(var1) / |d AVAR(1) / ds| (AVAR(1) = s^2 / dt^2 +
+/// AVAR_e(1)); J J' is its covariance, the white noise's part being free in the fit.
+Eigen::VectorXd motionShape(const Problem& p, const std::vector<std::size_t>& m, double var1) {
+  const double s = p.lattice.motion, h = 1e-3 * s;
+  RoundingLattice up = p.lattice, down = p.lattice;
+  up.motion = s + h, down.motion = s - h;
+  auto slope = [&](std::size_t f) {
+    return (latticeQuantizationAllanVariance(up, p.dt, f) - latticeQuantizationAllanVariance(down, p.dt, f)) / (2.0 * h);
+  };
+  const double sdS = std::sqrt(std::max(var1, 0.0)) / std::fabs(2.0 * s / (p.dt * p.dt) + slope(1));
+  Eigen::VectorXd J(static_cast<Eigen::Index>(m.size()));
+  for (std::size_t i = 0; i < m.size(); ++i) J(Eigen::Index(i)) = slope(m[i]) * sdS;
+  return J;
+}
+
+/// The covariance the lattice rounding adds beyond the Gaussian (Isserlis) one at the points where
+/// it is correlated (exp(-2 pi^2 m s^2 / D^2) > 1e-3, m <= 2^18 / 10): Monte Carlo of white
+/// increments of the lattice's motion rounded on it (latticeAllanCovariance, 160 records: with
+/// fewer the small eigenvalues of that correlated block come out low) minus the Gaussian
+/// covariance of the same PSD (the model white + the lattice's own quantization); plus the
+/// motion's estimation error (motionShape) where the motion was read from the record.
+Eigen::MatrixXd latticeExcess(const Problem& p) {
+  const double r = p.lattice.motion / p.lattice.step;
+  std::vector<std::size_t> m;  // a prefix of p.m: the condition falls with m
+  for (std::size_t f : p.m) {
+    if (!(std::exp(-2.0 * kPi * kPi * double(f) * r * r) > 1e-3) || f * 10 > (std::size_t(1) << 18)) break;
+    m.push_back(f);
+  }
+  if (m.empty()) return {};
+  LatentModel q;
+  q.white = p.lattice.motion / std::sqrt(p.dt);
+  q.quantization = p.lattice.step / std::sqrt(12.0);
+  q.lattice = p.lattice;
+  const Eigen::MatrixXd gauss = allanEstimateCovariance([&](double w) { return latentPsd(q, p.dt, w); }, m, p.N);
+  const Eigen::MatrixXd mc = latticeAllanCovariance(p.lattice, p.dt, p.N, m, 160, 0x1a77ce);
+  Eigen::MatrixXd excess = mc - gauss;
+  if (p.latticeMotionRead && m.front() == 1) {
+    const Eigen::VectorXd J = motionShape(p, m, mc(0, 0));
+    excess += J * J.transpose();
+  }
+  return excess;
+}
 
 /// Best valid set under the current p.W (every set fitted); all fits returned, best first.
 std::vector<LatentCandidate> scoreAll(const Problem& p, const std::vector<LatentTermSet>& sets,
@@ -673,6 +734,8 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
   p.N = samples;
   if (!(options.minGmTauSamples > 0.0)) throw InputError("latent fit: minGmTauSamples must be > 0");
   p.minT = options.minGmTauSamples * dt;
+  if (options.lattice.active()) p.lattice = options.lattice;
+  p.latticeMotionRead = options.latticeMotionRead;
   std::vector<double> y;
   for (std::size_t i = 0; i < m.size(); ++i) {
     if (m[i] < 1 || (i > 0 && m[i] <= m[i - 1]))
@@ -692,6 +755,7 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
   // tau up (unchanged on a range from the first point, where that is half a sample).
   if (!p.tau.empty()) p.minT = std::max(p.minT, 0.5 * p.tau.front());
   for (std::size_t kind = 0; kind < kAllanTermCount; ++kind) p.basis[kind] = allanColumn(p, kind);
+  if (p.lattice.correlated()) p.roundingExcess = latticeExcess(p);
   const std::vector<LatentTermSet> sets =
       options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
   if (std::any_of(sets.begin(), sets.end(), [](const LatentTermSet& s) { return s.ar; })) {
@@ -829,11 +893,38 @@ LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleI
   return p;
 }
 
+namespace {
+
+LatentFit fitRecord(const std::vector<double>& x, const LatentAllanPoints& c, const LatentFitOptions& options) {
+  // Correlated lattice rounding is far from Gaussian (a sparse train of LSB steps): the power of
+  // the steps a record happens to hold varies by 1-2 % between records of 720 000 samples, where
+  // the periodogram's level is known to 0.1 %, so the Whittle and block likelihoods read that
+  // spread as structure (a GM of tau ~ 15 samples chosen in 9 of 80 blind quantization + white
+  // records); the few octave Allan points choose the set instead.
+  if (!options.whittleSelection || options.lattice.correlated())
+    return fitScanned(c.m, c.avar, x.size(), options, nullptr);
+  const WhittleBins bins = whittleBins(x, options.sampleInterval, options.lattice);
+  return fitScanned(c.m, c.avar, x.size(), options, &bins, &x);
+}
+
+/// LatentFitOptions::lattice with a step and no motion: the motion from the record's Allan
+/// variance at tau = dt (latticeMotionFromAllan: white increments rounded on the lattice), the
+/// rounding's exact form where that motion correlates it, else the classical one.
+LatentFit fitOnLattice(const std::vector<double>& x, const LatentAllanPoints& c, LatentFitOptions o) {
+  o.lattice.motion = 0.0;
+  if (!c.m.empty() && c.m.front() == 1)
+    o.lattice.motion = latticeMotionFromAllan(o.lattice, o.sampleInterval, c.avar.front());
+  if (!o.lattice.correlated()) o.lattice = {};
+  o.latticeMotionRead = o.lattice.active();
+  return fitRecord(x, c, o);
+}
+
+}  // namespace
+
 LatentFit fitLatentModel(const std::vector<double>& x, const LatentFitOptions& options) {
   const LatentAllanPoints c = latentAllanPoints(x, options.sampleInterval);
-  if (!options.whittleSelection) return fitScanned(c.m, c.avar, x.size(), options, nullptr);
-  const WhittleBins bins = whittleBins(x, options.sampleInterval);
-  return fitScanned(c.m, c.avar, x.size(), options, &bins, &x);
+  if (options.lattice.step > 0.0 && !options.lattice.active()) return fitOnLattice(x, c, options);
+  return fitRecord(x, c, options);
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -119,6 +119,16 @@ struct LatentFitOptions {
   /// likelihood of the record's block means with the periodogram above them (block_likelihood.hpp),
   /// and the set chosen by that score.
   bool blockSelection = true;
+  /// The record's value lattice for a quantization term (fit/lattice_rounding.hpp): step D = the
+  /// lattice step x dt, drift = the record's mean x dt. Active (a motion set): the quantization
+  /// column is the lattice rounding's exact Allan variance. Step set without a motion: the record
+  /// overload fitLatentModel(x, ...) takes s from the record's Allan variance at tau = dt
+  /// (fit::latticeMotionFromAllan) and uses the lattice where that s correlates the rounding
+  /// (below ~1 LSB per sample). Not used otherwise.
+  RoundingLattice lattice;
+  /// Whether lattice.motion was read from the record's Allan variance at tau = dt (set by the
+  /// record overload): its estimation error then enters the covariance of the rounding's points.
+  bool latticeMotionRead = false;
 };
 
 /// The score's penalty of a term set: penaltyPerTerm * terms + penaltyPerParameter * parameters.

@@ -238,6 +238,12 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
                 "fit gave " << q(k * m.quantization, u.increment) << " +- " << q(k * sd("quantization"), u.increment)
              << ")";
       b.endComment();
+      if (m.lattice.correlated()) {
+        b.line << "the true integral moves " << significant(m.lattice.motion / m.lattice.step, 3)
+               << " LSB per sample (white noise): successive roundings are correlated, fitted with their exact "
+                  "Allan variance (fit/lattice_rounding.hpp); the simulator's quantization rounds the same way";
+        b.endComment();
+      }
       b.add(quantizationSpec(ParamSpec::quantity("lsb", latticeLsb, signal * time), false));
     } else {
       b.line << "quantization lsb +- " << q(k * sd("quantization"), u.increment) << " (1 sigma"
