@@ -56,7 +56,8 @@ std::vector<std::string> wantedEffects(const AxisDiagnosis& d, const std::vector
   return wanted;
 }
 
-/// The wanted effects added one by one (each its best variant) with the level fixed; a note for
+/// The wanted effects added one by one with the level fixed (each as the variant the diagnosis
+/// reported, or, not reported, its variant of least Allan chi2); a note for
 /// each that has no candidate. The base noise level is then refitted only when the data ask for
 /// it: likelihood-ratio test of s = 1 against s free, chi2 difference > 9 (3 sigma, one
 /// parameter). A base fitted to the record usually has the right level, and the short-tau bands
@@ -78,10 +79,13 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
       sol = solveAllan(w.prob, set, start, true);
       continue;
     }
+    // A reported effect is written as the variant reported (its tau, frequency or shape), sized
+    // beside the others; only an effect the diagnosis did not report is the variant of least chi2.
+    const Candidate* reported = several.empty() ? nullptr : several.front();
     const Candidate* bestC = nullptr;
     AllanSolution bestS;
     for (const auto& c : w.cands) {
-      if (c.effect != e) continue;
+      if (c.effect != e || (reported && &c != reported)) continue;
       auto trial = set;
       trial.push_back(&c);
       auto start = sol.theta;
