@@ -38,6 +38,7 @@ from scipy.optimize import minimize
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate as g  # noqa: E402  (adev, octave_grid, flicker, gauss_markov: the benchmark's own)
+from challenge import yaml_effect  # noqa: E402  (the benchmark's model-file lines)
 
 
 SLOW = {"bias_instability": 1, "gauss_markov": 2, "random_walk": 1}  # parameters of each
@@ -102,7 +103,7 @@ def diagnose(sinsim, work, x, fs, white_density, first_round):
     """sinsim diagnose of gx against white noise of the stated density: per effect its best
     variant's score -- in the first round (--threshold 1000: nothing accepted, every score against
     the model as given) or as the diagnosis runs (the score when accepted, else the last round's)
-    -- the number of Allan points, and the effects reported."""
+    -- and its JSON axis (chi2_points, findings) and document (threshold, next_threshold)."""
     n = len(x)
     rng = np.random.default_rng(0)
     t = np.arange(n) / fs
@@ -110,21 +111,53 @@ def diagnose(sinsim, work, x, fs, white_density, first_round):
     rec, mod, out = (os.path.join(work, f) for f in ("r.csv", "r.yaml", "r.json"))
     np.savetxt(rec, np.column_stack([t] + cols), delimiter=",", header="t,gx,gy,gz,ax,ay,az",
                comments="", fmt="%.12g")
+    white = {"density": white_density}
     with open(mod, "w") as f:
-        for sensor, unit in (("gyro", "rad/s/sqrt(Hz)"), ("accel", "m/s^2/sqrt(Hz)")):
-            f.write(f"{sensor}:\n")
-            for ax in "xyz":
-                f.write(f"  {ax}:\n    - {{type: white, density: {white_density:.12g} {unit}}}\n")
+        for sensor in ("gyro", "accel"):
+            f.write(f"{sensor}:\n" + "".join(f"  {ax}:\n    - {yaml_effect('white', white, sensor)}\n" for ax in "xyz"))
     p = subprocess.run([sinsim, "diagnose", rec, "--model", mod, "--channels", "gx", "--json", out,
                         "--realisations", "16", "--threads", "2", "-o", os.path.join(work, "i.yaml")]
                        + (["--threshold", "1000"] if first_round else []), capture_output=True, text=True)
     if p.returncode != 0:
         raise RuntimeError(p.stderr)
-    a = json.load(open(out))["axes"][0]
+    d = json.load(open(out))
+    a = d["axes"][0]
     scores = {}
     for f in a["findings"]:
         scores[f["effect"]] = max(scores.get(f["effect"], 0.0), f["score"])
-    return scores, a["chi2_points"], [f["effect"] for f in a["findings"] if f.get("reported")]
+    return scores, a, d
+
+
+def score_record(a, effect, ratio, seed, study):
+    """One record of the cell (effect, ratio): both methods' scores per slow effect and names."""
+    fs, n, N, total, found, threshold = (study[k] for k in ("fs", "n", "N", "total", "found", "threshold"))
+    rng = np.random.default_rng([int(ratio * 10), seed, list(SLOW).index(effect)])
+    x = total * math.sqrt(fs) * rng.standard_normal(n) + missing_noise(rng, effect, n, fs, total, ratio)
+    scores, axis, _ = diagnose(a.sinsim, a.work, x, fs, N, first_round=not found)
+    reported = [f["effect"] for f in axis["findings"] if f.get("reported")]
+    slow = {e: scores.get(e, 0.0) for e in SLOW}
+    if found:  # the first slow effect reported beside the white, else none
+        named_a = next((e for e in reported if e in SLOW), None)
+    else:
+        named_a = max(slow, key=slow.get) if max(slow.values()) >= threshold else None
+    drops = whittle_drops(x, fs, study["tau_grid"], (total if found else N) ** 2 * fs, found, not a.raw_whittle)
+    pen = {e: d - math.log(axis["chi2_points"]) * SLOW[e] for e, d in drops.items()}
+    named_w = max(pen, key=pen.get)
+    if math.sqrt(max(0.0, pen[named_w])) < threshold:
+        named_w = None
+    return {"effect": effect if ratio > 0 else None, "ratio": ratio, "seed": seed, "allan": slow,
+            "allan_named": named_a, "reported": reported,
+            "whittle": {e: math.sqrt(max(0.0, v)) for e, v in pen.items()}, "whittle_named": named_w}
+
+
+def print_cell(effect, ratio, cell):
+    truth = effect if ratio > 0 else None
+    counts = []
+    for m in ("allan", "whittle"):
+        found = sum(c[m + "_named"] is not None for c in cell)
+        right = sum(c[m + "_named"] == truth for c in cell if truth)
+        counts.append(f"{found:3d} / {right:3d} of {len(cell)} / {np.median([c[m][effect] for c in cell]):6.2f}")
+    print(f"{truth or '(none: null)':17s} {ratio:5.1f}  {counts[0]}                    {counts[1]}", flush=True)
 
 
 def main():
@@ -149,49 +182,25 @@ def main():
         tau_grid.append(tc)
         tc *= math.sqrt(2)
     found = a.beside_white > 0
-    threshold = 4.5 if found else 5.5  # the diagnosis' next / first threshold
-    total = math.hypot(N, a.beside_white * N)
+    # the diagnosis' own thresholds (first / next), as its JSON states them on a null record
+    _, _, doc = diagnose(a.sinsim, a.work, N * math.sqrt(fs) * np.random.default_rng(1).standard_normal(n),
+                         fs, N, first_round=False)
+    threshold = doc["next_threshold"] if found else doc["threshold"]
+    study = {"fs": fs, "n": n, "N": N, "total": math.hypot(N, a.beside_white * N), "found": found,
+             "threshold": threshold, "tau_grid": tau_grid}
     print(f"{n} samples at {fs:g} Hz (T = {n / fs:g} s); model white {N:g} /sqrt(Hz)"
-          + (f", record's white {total / N:.2f}x that (found first)" if found else "")
-          + f"; {a.seeds} seeds per cell; threshold {threshold}")
+          + (f", record's white {study['total'] / N:.2f}x that (found first)" if found else "")
+          + f"; {a.seeds} seeds per cell; threshold {threshold:g}")
     print("truth             ratio  Allan: found / named right / median score   "
           "Whittle: found / named right / median score")
     rows = []
-    for effect in a.effects.split(","):
+    effects = a.effects.split(",")
+    for effect in effects:
         for ratio in (float(r) for r in a.ratios.split(",")):
-            if ratio == 0 and effect != a.effects.split(",")[0]:
+            if ratio == 0 and effect != effects[0]:
                 continue  # one null row
-            cell = []
-            for seed in range(a.seeds):
-                rng = np.random.default_rng([int(ratio * 10), seed, list(SLOW).index(effect)])
-                x = total * math.sqrt(fs) * rng.standard_normal(n) + missing_noise(rng, effect, n, fs, total, ratio)
-                scores, K, reported = diagnose(a.sinsim, a.work, x, fs, N, first_round=not found)
-                slow = {e: scores.get(e, 0.0) for e in SLOW}
-                if found:  # the first slow effect reported beside the white, else none
-                    named_a = next((e for e in reported if e in SLOW), None)
-                else:
-                    named_a = max(slow, key=slow.get) if max(slow.values()) >= threshold else None
-                drops = whittle_drops(x, fs, tau_grid, N * N * fs if not found else total * total * fs, found,
-                                      not a.raw_whittle)
-                pen = {e: d - math.log(K) * SLOW[e] for e, d in drops.items()}
-                named_w = max(pen, key=pen.get)
-                score_w = math.sqrt(max(0.0, pen[named_w]))
-                if score_w < threshold:
-                    named_w = None
-                cell.append({"effect": effect if ratio > 0 else None, "ratio": ratio, "seed": seed,
-                             "allan": slow, "allan_named": named_a, "reported": reported,
-                             "whittle": {e: math.sqrt(max(0.0, v)) for e, v in pen.items()},
-                             "whittle_named": named_w})
-            truth = effect if ratio > 0 else None
-            fa = sum(c["allan_named"] is not None for c in cell)
-            fw = sum(c["whittle_named"] is not None for c in cell)
-            ra = sum(c["allan_named"] == truth for c in cell if truth)
-            rw = sum(c["whittle_named"] == truth for c in cell if truth)
-            ma = np.median([c["allan"][effect] for c in cell])
-            mw = np.median([c["whittle"][effect] for c in cell])
-            label = truth or "(none: null)"
-            print(f"{label:17s} {ratio:5.1f}  {fa:3d} / {ra:3d} of {len(cell)} / {ma:6.2f}"
-                  f"                    {fw:3d} / {rw:3d} of {len(cell)} / {mw:6.2f}", flush=True)
+            cell = [score_record(a, effect, ratio, seed, study) for seed in range(a.seeds)]
+            print_cell(effect, ratio, cell)
             rows += cell
     with open(os.path.join(a.work, "power.json"), "w") as f:
         json.dump(rows, f, indent=1)
