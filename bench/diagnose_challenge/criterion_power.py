@@ -1,6 +1,6 @@
 """Does the diagnosis' Allan criterion waste the evidence a record holds for a missing slow noise?
 
-A study, not a test (docs/diagnose.md, "Thirty-third session"). On records of a known base --
+A study, not a test (docs/diagnose-log.md, "Thirty-third session"). On records of a known base --
 white noise of density N, the model the diagnosis is given -- plus one missing slow noise (a
 flicker by 1/f spectral shaping, a first-order Gauss-Markov of tau = T/60, or a random walk, made
 by generate.py's own functions; sized by the largest ratio of its Allan deviation to the white's

@@ -5,7 +5,7 @@ Draws the benchmark's records exactly as challenge.py does (same generator, seed
 those whose model file has a `ramp` on some channel, and runs `sinsim diagnose` on those channels
 only (the others do not depend on how a model's ramp is handled). Prints false alarms on the clean
 ones and, for the hidden channel, what was found; --compare OLD.json lists the channels whose
-findings differ from an earlier run's (e.g. another binary's). docs/diagnose.md, "Twenty-ninth
+findings differ from an earlier run's (e.g. another binary's). docs/diagnose-log.md, "Twenty-ninth
 session".
 
   /usr/bin/python3 bench/diagnose_challenge/drift_base_study.py --generator third --seed 2 \\

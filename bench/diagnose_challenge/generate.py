@@ -21,7 +21,7 @@ CATALOGUE = ["random_walk", "ramp", "warmup", "sinusoid", "quantization", "outli
 OUT_OF_CATALOGUE = ["telegraph", "bias_step"]
 # what a diagnosis may call an out-of-catalogue effect and still be right
 # (bias_jumps, the catalogue's name for a bias that steps or switches between two levels, since
-# the twenty-fifth session: docs/diagnose.md)
+# the twenty-fifth session: docs/diagnose-log.md)
 EQUIVALENT = {"telegraph": {"gauss_markov", "bias_jumps", "unexplained"},
               "bias_step": {"bias_jumps", "unexplained", "warmup", "ramp"}}
 

@@ -7,7 +7,7 @@ diagnosis's Welch segment: the largest power of two <= n / 8 and <= 4096), i.e. 
 test's third bin, its amplitude such that max over tau of its Allan deviation is SIZE x the
 base's (closed forms: a line A^2 sin^4(pi f tau) / (pi f tau)^2, the base's
 long_base.base_avar). NumPy/SciPy only, no sinsim code. Counts how often `sinsim diagnose` names
-sinusoid first (docs/diagnose.md, "lines below the Welch bins").
+sinusoid first (docs/diagnose-log.md, "lines below the Welch bins").
 
     /usr/bin/python3 bench/diagnose_challenge/long_line.py --sinsim build/sinsim \
         --seeds 16 --size 3 --rate 100 --duration 3600 --work /tmp/long_line

@@ -5,7 +5,7 @@ Each record: the white + GM base of long_base.py (the model handed to the diagno
 walk whose Allan deviation at T/8 is SIZE x the base's there (closed forms: walk K^2 tau / 3, the
 base's GM by its long-tau asymptote 2 sigma^2 T_gm / tau, white N^2 / tau; the sizes of
 docs/diagnose.md were measured so). NumPy/SciPy only, no sinsim code. Counts how often
-`sinsim diagnose` names random_walk first (docs/diagnose.md, "a long record's walk is no level step").
+`sinsim diagnose` names random_walk first (docs/diagnose-log.md, "a long record's walk is no level step").
 
     /usr/bin/python3 bench/diagnose_challenge/long_walk.py --sinsim build/sinsim \
         --seeds 12 --size 3 --rate 100 --duration 7200 --work /tmp/long_walk

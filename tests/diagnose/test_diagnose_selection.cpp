@@ -992,7 +992,7 @@ TEST_CASE("an AR beside white noise is not refitted when an effect is added", "[
 
 // On a channel whose Allan curve is white over the whole measured tau, a white noise the model
 // lacks raises the curve by one factor, which the fitted level s took whole: nothing was reported
-// (the independent generator's white + GM + walk channels at 1600 Hz, 4-6x; docs/diagnose.md,
+// (the independent generator's white + GM + walk channels at 1600 Hz, 4-6x; docs/diagnose-log.md,
 // "Twenty-fourth session"). The level's prior (allan_chi2.hpp, kLevelLnSd: the model's level known
 // to 1.5x in Allan variance) makes a 4x white noise (Allan variance 16x: (ln 16 / ln 1.5)^2 = 46.8,
 // less one parameter's ln K) a finding, and leaves a 1.5x one (2.25x: 4.0) the model's level.
@@ -1141,7 +1141,7 @@ TEST_CASE("a thermal drift beyond the model's own, or reversed, is found as temp
 // in record and model (modelDrift 0), and a model that is the truth fits. White 0.001
 // deg/s/sqrt(Hz) (0.01 deg/s per sample) rounded to 0.05 deg/s, a ramp of 9000 deg/h^2. A model's
 // warm-up stays there too (no modelWarmups); whether a truth model with a warm-up fits there is not
-// asserted: a settling rounded with so little noise leaves level steps (docs/diagnose.md,
+// asserted: a settling rounded with so little noise leaves level steps (docs/diagnose-log.md,
 // "Thirtieth session").
 TEST_CASE("a model's ramp and warm-up stay in a record on a visible lattice", "[diagnose][selection]") {
   const std::string truth = "gyro:\n  x:\n    - {type: white, density: 0.001 deg/s/sqrt(Hz)}\n"
