@@ -322,10 +322,13 @@ def report(rows):
 
 def in_subset(row, subset):
     """--subset: ooc = one out-of-catalogue effect, two = two catalogue effects, weak = one
-    catalogue effect at 1.5x, strong = one at >= 3x (the cases of four floors, to iterate on a
-    benchmark slice without its other records)."""
+    catalogue effect at 1.5x, strong = one at >= 3x other than quantization, quantization = one
+    quantization (the cases of five rows, to iterate on a benchmark slice without its other
+    records)."""
     hid = [h["effect"] for h in row["hidden"]]
     gm = gen_module(row)
+    if subset == "quantization":
+        return hid == ["quantization"]
     if subset == "ooc":
         return len(hid) == 1 and hid[0] in gm.OUT_OF_CATALOGUE
     if subset == "weak" and gm is not g:  # alt: sizes are continuous, weak = below 3x
@@ -390,11 +393,10 @@ def main():
     ap.add_argument("--pool", choices=sorted(POOLS), default="all", help="where hidden effects are drawn from")
     ap.add_argument("--hidden-only", action="store_true",
                     help="diagnose only the hidden channel (studies: no clean-channel counts)")
-    ap.add_argument("--subset", choices=["ooc", "two", "weak", "strong"], default=None,
+    ap.add_argument("--subset", choices=["ooc", "two", "weak", "strong", "quantization"], default=None,
                     help="diagnose only the records with one out-of-catalogue effect (ooc), two "
-                         "catalogue effects (two), one at 1.5x (weak) or one at >= 3x (strong), on "
-                         "their hidden channel; "
-                         "the same draws")
+                         "catalogue effects (two), one at 1.5x (weak), one at >= 3x (strong) or one "
+                         "quantization, on their hidden channel; the same draws")
     ap.add_argument("--add", action="store_true",
                     help="also add the correct effect where it came first: misfit after / before")
     ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",

@@ -182,7 +182,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const bool visible = latticeVisible(y, q, setup.rate) && std::isfinite(offset);
     seen.push_back(visible ? Lattice{q, offset} : Lattice{});
   }
-  const auto mc = monteCarlo(m, record, channels, setup, o, seen);
+  const auto mc = monteCarlo(m, record, channels, setup, o, inputLevels(model, m, record, o), seen);
   Run run;
   run.d.data = record.source;
   run.d.model = model.source;

@@ -51,32 +51,84 @@ std::vector<double> channelMeans(const Record& record) {
   return ideal;
 }
 
+/// The population sd of x.
+double sampleSd(const std::vector<double>& x) {
+  double m = 0, ss = 0;
+  for (double v : x) m += v / double(x.size());
+  for (double v : x) ss += (v - m) * (v - m) / double(x.size());
+  return std::sqrt(ss);
+}
+
 /// The realisation x moved to the input level at which its rounding onto l averages the record's
 /// mean `recordMean` (levelOfRoundedMean at x's own sd), then rounded: on a lattice coarser than
 /// the noise, how often the rounded value flips depends on where the level sits in its cell, and
 /// the record's mean says where (its own rounded mean, not the input's).
 std::vector<double>& roundedAtRecordLevel(std::vector<double>& x, const Lattice& l, double recordMean) {
-  double m = 0, ss = 0;
+  double m = 0;
   for (double v : x) m += v / double(x.size());
-  for (double v : x) ss += (v - m) * (v - m) / double(x.size());
-  const double sd = std::sqrt(ss);
+  const double sd = sampleSd(x);
   const double mu = sd > 0 ? l.offset + levelOfRoundedMean(recordMean - l.offset, sd, l.q) : recordMean;
   for (double& v : x) v = l.offset + l.q * std::nearbyint((v - m + mu - l.offset) / l.q);
   return x;
 }
 
+/// The rate step [SI] on which channel c's model rounds each sample (its enabled quantization
+/// that neither carries nor dithers: rate LSB, or increment LSB / dt), 0 when it has none (or
+/// more than one rounding: then none is moved).
+double sampleRoundingStep(const ErrorModelSpec& spec, int c, double rate) {
+  const SensorSpec& s = spec.sensor(isGyro(c) ? Sensor::gyro : Sensor::accel);
+  const Dimension signal = isGyro(c) ? Dimension::angularRate() : Dimension::acceleration();
+  double step = 0;
+  int count = 0;
+  for (const auto* list : {&s.all, &s.list(axisList(c % 3))})
+    for (const auto& e : *list) {
+      if (!e.enabled || e.type != "quantization") continue;
+      ++count;
+      const ParamSpec* lsb = e.find("lsb");
+      const ParamSpec* carry = e.find("carry");
+      const ParamSpec* dithered = e.find("dithered");
+      if (!lsb || lsb->values.size() != 1 || lsb->dims.size() != 1) continue;
+      const bool isRate = lsb->dims[0] == signal;
+      if ((carry ? carry->flag : !isRate) || (dithered && dithered->flag)) continue;
+      step = isRate ? lsb->values[0] : lsb->values[0] * rate;
+    }
+  return count == 1 ? step : 0.0;
+}
+
 }  // namespace
+
+std::vector<double> inputLevels(const ErrorModelSpec& spec, const ImuErrorModel& model,
+                                const Record& record, const DiagnoseOptions& o) {
+  std::vector<double> input = channelMeans(record);
+  std::vector<int> rounded;
+  std::vector<double> steps(6, 0.0);
+  for (int c = 0; c < 6; ++c) {
+    steps[std::size_t(c)] = channelData(record, c).empty() ? 0.0 : sampleRoundingStep(spec, c, record.rate_hz);
+    if (std::isfinite(steps[std::size_t(c)]) && steps[std::size_t(c)] > 0) rounded.push_back(c);
+  }
+  if (rounded.empty()) return input;
+  const auto raw = model.filtered([](const std::string& n) { return n.find(".quantization") == std::string::npos; });
+  std::array<std::vector<double>, 6> buf;
+  simulate(raw, record.rate_hz, record.rows, input, record.temperature, o.seed, 0, rounded, buf);
+  for (int c : rounded) {
+    const double sd = sampleSd(buf[std::size_t(c)]), q = steps[std::size_t(c)];
+    if (sd > 0 && std::isfinite(sd)) input[std::size_t(c)] = levelOfRoundedMean(input[std::size_t(c)], sd, q);
+  }
+  return input;
+}
 
 McResult monteCarlo(const ImuErrorModel& model, const Record& record,
                     const std::vector<int>& channels, const Setup& setup,
-                    const DiagnoseOptions& o, const std::vector<Lattice>& lattices) {
+                    const DiagnoseOptions& o, const std::vector<double>& input,
+                    const std::vector<Lattice>& lattices) {
+  if (input.size() != 6) throw InputError("monteCarlo: 6 input levels expected");
   const std::vector<double> ideal = channelMeans(record);
   const std::size_t R = o.realisations;
   McResult res;
   res.perChannel.assign(channels.size(), std::vector<SeriesStats>(R));
   parallelFor<std::array<std::vector<double>, 6>>(R, o.threads, [&](std::size_t r, auto& buf) {
     progress::checkpoint("simulating the model", r, R);
-    simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r, channels, buf);
+    simulate(model, record.rate_hz, record.rows, input, record.temperature, o.seed, r, channels, buf);
     for (std::size_t i = 0; i < channels.size(); ++i) {
       auto& x = buf[channels[i]];
       res.perChannel[i][r] = seriesStats(x, setup);
