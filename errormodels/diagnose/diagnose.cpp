@@ -182,7 +182,8 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const bool visible = latticeVisible(y, q, setup.rate) && std::isfinite(offset);
     seen.push_back(visible ? Lattice{q, offset} : Lattice{});
   }
-  const auto mc = monteCarlo(m, record, channels, setup, o, inputLevels(model, m, record, o), seen);
+  const auto mc = monteCarlo(m, record, channels, setup, o,
+                             modelRoundings(model, m, record, o, channels, seen), seen);
   Run run;
   run.d.data = record.source;
   run.d.model = model.source;

@@ -95,42 +95,62 @@ double sampleRoundingStep(const ErrorModelSpec& spec, int c, double rate) {
   return count == 1 ? step : 0.0;
 }
 
+/// The model without its quantization effects (the other effects draw the same numbers:
+/// ImuErrorModel::filtered keeps the streams).
+ImuErrorModel withoutQuantization(const ImuErrorModel& model) {
+  return model.filtered([](const std::string& n) { return n.find(".quantization") == std::string::npos; });
+}
+
 }  // namespace
 
-std::vector<double> inputLevels(const ErrorModelSpec& spec, const ImuErrorModel& model,
-                                const Record& record, const DiagnoseOptions& o) {
-  std::vector<double> input = channelMeans(record);
+std::vector<Lattice> modelRoundings(const ErrorModelSpec& spec, const ImuErrorModel& model,
+                                   const Record& record, const DiagnoseOptions& o,
+                                   const std::vector<int>& channels,
+                                   const std::vector<Lattice>& recordLattices) {
+  std::vector<Lattice> out(channels.size());
   std::vector<int> rounded;
-  std::vector<double> steps(6, 0.0);
-  for (int c = 0; c < 6; ++c) {
-    steps[std::size_t(c)] = channelData(record, c).empty() ? 0.0 : sampleRoundingStep(spec, c, record.rate_hz);
-    if (std::isfinite(steps[std::size_t(c)]) && steps[std::size_t(c)] > 0) rounded.push_back(c);
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const double q = sampleRoundingStep(spec, channels[i], record.rate_hz);
+    if (!(std::isfinite(q) && q > 0)) continue;
+    // The record's own offset where it sits on the model's lattice; else the model's (0).
+    const bool same = i < recordLattices.size() && std::abs(recordLattices[i].q - q) <= 1e-9 * q;
+    out[i] = Lattice{q, same ? recordLattices[i].offset : 0.0};
+    rounded.push_back(channels[i]);
   }
-  if (rounded.empty()) return input;
-  const auto raw = model.filtered([](const std::string& n) { return n.find(".quantization") == std::string::npos; });
+  if (rounded.empty()) return out;
   std::array<std::vector<double>, 6> buf;
-  simulate(raw, record.rate_hz, record.rows, input, record.temperature, o.seed, 0, rounded, buf);
-  for (int c : rounded) {
-    const double sd = sampleSd(buf[std::size_t(c)]), q = steps[std::size_t(c)];
-    if (sd > 0 && std::isfinite(sd)) input[std::size_t(c)] = levelOfRoundedMean(input[std::size_t(c)], sd, q);
+  simulate(withoutQuantization(model), record.rate_hz, record.rows, channelMeans(record),
+           record.temperature, o.seed, 0, rounded, buf);
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    if (!(out[i].q > 0)) continue;
+    const double sd = sampleSd(buf[std::size_t(channels[i])]);
+    if (!(sd < out[i].q)) out[i] = Lattice{};  // a fine step: the model's own rounding, as given
   }
-  return input;
+  return out;
 }
 
 McResult monteCarlo(const ImuErrorModel& model, const Record& record,
                     const std::vector<int>& channels, const Setup& setup,
-                    const DiagnoseOptions& o, const std::vector<double>& input,
+                    const DiagnoseOptions& o, const std::vector<Lattice>& modelRounding,
                     const std::vector<Lattice>& lattices) {
-  if (input.size() != 6) throw InputError("monteCarlo: 6 input levels expected");
   const std::vector<double> ideal = channelMeans(record);
   const std::size_t R = o.realisations;
+  // Channels whose coarse rounding the diagnosis takes over: realised without it (the same
+  // streams), each realisation moved to the record's level and rounded there.
+  std::vector<int> own, taken;
+  for (std::size_t i = 0; i < channels.size(); ++i)
+    (i < modelRounding.size() && modelRounding[i].q > 0 ? taken : own).push_back(channels[i]);
+  const ImuErrorModel raw = taken.empty() ? model : withoutQuantization(model);
   McResult res;
   res.perChannel.assign(channels.size(), std::vector<SeriesStats>(R));
   parallelFor<std::array<std::vector<double>, 6>>(R, o.threads, [&](std::size_t r, auto& buf) {
     progress::checkpoint("simulating the model", r, R);
-    simulate(model, record.rate_hz, record.rows, input, record.temperature, o.seed, r, channels, buf);
+    if (!own.empty()) simulate(model, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r, own, buf);
+    if (!taken.empty()) simulate(raw, record.rate_hz, record.rows, ideal, record.temperature, o.seed, r, taken, buf);
     for (std::size_t i = 0; i < channels.size(); ++i) {
       auto& x = buf[channels[i]];
+      if (i < modelRounding.size() && modelRounding[i].q > 0)
+        roundedAtRecordLevel(x, modelRounding[i], ideal[channels[i]]);
       res.perChannel[i][r] = seriesStats(x, setup);
       if (i < lattices.size() && lattices[i].q > 0) {
         res.perChannel[i][r].roundedAvar = allanVariance(roundedAtRecordLevel(x, lattices[i], ideal[channels[i]]), setup);

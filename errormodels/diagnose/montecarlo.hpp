@@ -21,22 +21,26 @@ struct McResult {
 struct Lattice {
   double q = 0, offset = 0;
 };
-/// The ideal (input) signal of the realisations per channel [rad/s x3, m/s^2 x3]: the record's
-/// mean, except on a channel whose model rounds each sample (an enabled quantization that neither
-/// carries nor dithers) on a step coarser than the model's unrounded one-sample sd: there the level
-/// whose rounded mean is the record's (levelOfRoundedMean). The record's mean is a rounded mean;
-/// input at it, the model's rounding would sit elsewhere in its cell than the sensor's did and flip
-/// between levels at another rate. The sd is that of realisation 0 of the model without its
-/// quantization (the same streams: ImuErrorModel::filtered), on o.seed.
-std::vector<double> inputLevels(const ErrorModelSpec& spec, const ImuErrorModel& model,
-                                const Record& record, const DiagnoseOptions& o);
+/// Per channel slot, the coarse rounding of the model that the diagnosis takes over (q = 0:
+/// none): an enabled quantization that neither carries nor dithers, the channel's only one, whose
+/// step q exceeds the model's unrounded one-sample sd (realisation 0 of the model without its
+/// quantization, on o.seed); the offset is the record's lattice's (recordLattices, per slot) where
+/// the record sits on that step, else 0. On such a lattice where the level sits in its cell sets
+/// how often the value flips, and the record's mean — a rounded mean — says where the sensor's sat;
+/// a realisation's own level (the ideal plus its turn-on bias, scale factor, ...) does not.
+std::vector<Lattice> modelRoundings(const ErrorModelSpec& spec, const ImuErrorModel& model,
+                                   const Record& record, const DiagnoseOptions& o,
+                                   const std::vector<int>& channels,
+                                   const std::vector<Lattice>& recordLattices);
 
-/// R = o.realisations realisations on o.threads worker threads at the input levels `input`
-/// (inputLevels). Where a channel slot's lattice has q > 0, each realisation is also rounded onto
+/// R = o.realisations realisations on o.threads worker threads; ideal = the record's means. A
+/// channel slot with modelRounding[i].q > 0 is realised without its quantization, moved to the
+/// level whose rounded mean is the record's (levelOfRoundedMean at the realisation's own sd) and
+/// rounded there. Where a channel slot's lattice has q > 0, each realisation is also rounded onto
 /// it at the record's mean (SeriesStats::roundedAvar).
 McResult monteCarlo(const ImuErrorModel& model, const Record& record,
                     const std::vector<int>& channels, const Setup& setup,
-                    const DiagnoseOptions& o, const std::vector<double>& input,
+                    const DiagnoseOptions& o, const std::vector<Lattice>& modelRounding,
                     const std::vector<Lattice>& lattices = {});
 
 /// Realisation of the model at rate [Hz] and length n, ideal [rad/s x3, m/s^2 x3] held constant,

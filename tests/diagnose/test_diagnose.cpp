@@ -160,23 +160,31 @@ TEST_CASE("quantization on a lattice coarser than the noise is added without low
 // at 0.75 deg/s, rounded to 2.5 deg/s, reads 2.5 in 16 % of the samples (P(Z > 1)) and averages
 // 0.40 deg/s. Realised at that average — the record's mean, a rounded mean — the model reads 2.5
 // in 4.5 % (P(Z > 1.7)): its variance 3.5x lower, far outside the band of its own kind of record.
-// The realisations are made at the level whose rounded mean is the record's (the independent
-// generator's r0446 az, 4.7 LSB per sd: misfit 0.044 -> 0.088 after --add quantization before).
+// With a turn-on bias in the model (sd 5 deg/s, 2 LSB) each realisation's level falls elsewhere in
+// its cell: flips from none to half the samples, a band too wide to say anything. Each realisation
+// is rounded at the level whose rounded mean is the record's (the independent generator's r0446
+// az, 4.7 LSB per sd: misfit 0.044 -> 0.088 after --add quantization before; the third
+// generator's r0221 ay, with a turn-on bias: 0.139 -> 0.154).
 TEST_CASE("a model that rounds each sample coarsely is realised where the sensor's level sat in its cell", "[diagnose]") {
-  const std::string truth = "gyro:\n  x:\n    - {type: white, density: 0.05 deg/s/sqrt(Hz)}\n"
-                            "    - {type: quantization, lsb: 2.5 deg/s}\n";
+  const std::string white = "gyro:\n  x:\n    - {type: white, density: 0.05 deg/s/sqrt(Hz)}\n";
+  const std::string lattice = "    - {type: quantization, lsb: 2.5 deg/s}\n";
   const double level = 0.75 * M_PI / 180.0;  // [rad/s]
-  for (std::uint64_t seed : {151, 152}) {
-    const auto model = errorModelFromString(truth, "truth.yaml");
-    const auto r = dg::simulateRecord(model, kRate, kSamples, seed, 0, {level, 0, 0, 0, 0, 0});
-    const auto d = dg::diagnose(r, model, options()).axis("gx");
-    print(d);
-    for (const auto& f : d.findings) {
-      INFO(f.effect << " score " << f.score);
-      CHECK_FALSE(f.reported);
+  for (const std::string& truth : {white + lattice, white + "    - {type: bias, sigma: 5 deg/s}\n" + lattice}) {
+    for (std::uint64_t seed : {151, 152}) {
+      const auto model = errorModelFromString(truth, "truth.yaml");
+      const auto r = dg::simulateRecord(model, kRate, kSamples, seed, 0, {level, 0, 0, 0, 0, 0});
+      const auto d = dg::diagnose(r, model, options()).axis("gx");
+      print(d);
+      for (const auto& f : d.findings) {
+        INFO(f.effect << " score " << f.score);
+        CHECK_FALSE(f.reported);
+      }
+      CHECK(d.misfit < 0.05);
+      CHECK(d.fractionOutside <= 0.10);
+      // A band that says something: at one sample a record this long pins the ADEV to a few %.
+      INFO("band at one sample " << d.adev.lo.front() << " .. " << d.adev.hi.front());
+      CHECK(d.adev.hi.front() < 1.2 * d.adev.lo.front());
     }
-    CHECK(d.misfit < 0.05);
-    CHECK(d.fractionOutside <= 0.10);
   }
 }
 
