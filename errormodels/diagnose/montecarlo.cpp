@@ -11,6 +11,7 @@
 #include "common/types.hpp"
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/rounding.hpp"
+#include "errormodels/effects/quantization.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -51,12 +52,15 @@ std::vector<double> channelMeans(const Record& record) {
   return ideal;
 }
 
-/// The population sd of x.
-double sampleSd(const std::vector<double>& x) {
+/// The mean and population sd of x.
+struct MeanSd {
+  double mean = 0, sd = 0;
+};
+MeanSd meanSd(const std::vector<double>& x) {
   double m = 0, ss = 0;
   for (double v : x) m += v / double(x.size());
   for (double v : x) ss += (v - m) * (v - m) / double(x.size());
-  return std::sqrt(ss);
+  return {m, std::sqrt(ss)};
 }
 
 /// The realisation x moved to the input level at which its rounding onto l averages the record's
@@ -64,9 +68,7 @@ double sampleSd(const std::vector<double>& x) {
 /// the noise, how often the rounded value flips depends on where the level sits in its cell, and
 /// the record's mean says where (its own rounded mean, not the input's).
 std::vector<double>& roundedAtRecordLevel(std::vector<double>& x, const Lattice& l, double recordMean) {
-  double m = 0;
-  for (double v : x) m += v / double(x.size());
-  const double sd = sampleSd(x);
+  const auto [m, sd] = meanSd(x);
   const double mu = sd > 0 ? l.offset + levelOfRoundedMean(recordMean - l.offset, sd, l.q) : recordMean;
   for (double& v : x) v = l.offset + l.q * std::nearbyint((v - m + mu - l.offset) / l.q);
   return x;
@@ -84,13 +86,8 @@ double sampleRoundingStep(const ErrorModelSpec& spec, int c, double rate) {
     for (const auto& e : *list) {
       if (!e.enabled || e.type != "quantization") continue;
       ++count;
-      const ParamSpec* lsb = e.find("lsb");
-      const ParamSpec* carry = e.find("carry");
-      const ParamSpec* dithered = e.find("dithered");
-      if (!lsb || lsb->values.size() != 1 || lsb->dims.size() != 1) continue;
-      const bool isRate = lsb->dims[0] == signal;
-      if ((carry ? carry->flag : !isRate) || (dithered && dithered->flag)) continue;
-      step = isRate ? lsb->values[0] : lsb->values[0] * rate;
+      const QuantizationRule rule = quantizationRule(e, signal);  // the spec passed fromSpec
+      if (rule.roundsEachSample()) step = rule.rateStep(rate);
     }
   return count == 1 ? step : 0.0;
 }
@@ -123,7 +120,7 @@ std::vector<Lattice> modelRoundings(const ErrorModelSpec& spec, const ImuErrorMo
            record.temperature, o.seed, 0, rounded, buf);
   for (std::size_t i = 0; i < channels.size(); ++i) {
     if (!(out[i].q > 0)) continue;
-    const double sd = sampleSd(buf[std::size_t(channels[i])]);
+    const double sd = meanSd(buf[std::size_t(channels[i])]).sd;
     if (!(sd < out[i].q)) out[i] = Lattice{};  // a fine step: the model's own rounding, as given
   }
   return out;

@@ -19,6 +19,8 @@
 // normal stream. On a static record with an LSB coarser than the noise the remainder of real
 // rounding is neither uniform nor independent (the output is a pulse train on the lattice), which
 // `dithered` does not model: leave it off there.
+#include "errormodels/effects/quantization.hpp"
+
 #include "errormodels/effect.hpp"
 #include "errormodels/stats/special.hpp"
 
@@ -96,14 +98,22 @@ const std::vector<ParamSchema>& paramsOf_quantization() {
   return p;
 }
 
-std::unique_ptr<Effect> buildEffect_quantization(const EffectSpec& spec, const EffectSite& site,
-                                                 SpecProblems&) {
+QuantizationRule quantizationRule(const EffectSpec& spec, const Dimension& signal) {
   const ParamSpec& lsb = *spec.find("lsb");
-  const bool isRate = lsb.dims[0] == site.signal();
   const ParamSpec* carry = spec.find("carry");
   const ParamSpec* dithered = spec.find("dithered");
-  return std::make_unique<Quantization>(lsb.values[0], isRate, carry ? carry->flag : !isRate,
-                                        dithered && dithered->flag);
+  QuantizationRule r;
+  r.lsb = lsb.values[0];
+  r.isRate = lsb.dims[0] == signal;
+  r.carry = carry ? carry->flag : !r.isRate;
+  r.dithered = dithered && dithered->flag;
+  return r;
+}
+
+std::unique_ptr<Effect> buildEffect_quantization(const EffectSpec& spec, const EffectSite& site,
+                                                 SpecProblems&) {
+  const QuantizationRule r = quantizationRule(spec, site.signal());
+  return std::make_unique<Quantization>(r.lsb, r.isRate, r.carry, r.dithered);
 }
 
 }  // namespace sinsim::errormodels
