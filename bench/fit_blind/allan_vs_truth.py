@@ -8,7 +8,7 @@ on its angle LSB (uniform start phase, the integral rounded and differenced, as 
 them) and prints, at octave m, the record's overlapping Allan variance over the simulations' mean
 and its z score against their spread: a record far outside (|z| > 3 over several m) holds
 structure its truth does not, and a fit that adds a term there reads the data, not a method error
-(docs/fitting.md, "Quantization below one LSB per sample"). Independent of sinsim's code.
+(docs/fitting-log.md, "Quantization below one LSB per sample"). Independent of sinsim's code.
 """
 import json
 import sys

@@ -154,7 +154,7 @@ struct LatentParameter {
   /// k stdError and logCenter + [-k logLower, k logUpper]: neither first-order interval is
   /// calibrated at these record lengths, and each missed on one side where the other did not -- a
   /// slow GM's T and a weak walk beside a GM come out low (the ln interval's longer upper side),
-  /// the faster of two GMs' T high (docs/fitting.md, "Profile-likelihood intervals for the GM
+  /// the faster of two GMs' T high (docs/fitting-log.md, "Profile-likelihood intervals for the GM
   /// taus", "The amplitudes' interval in ln").
   bool logScale = false;
   double logCenter = 0.0;                 ///< ln(value)

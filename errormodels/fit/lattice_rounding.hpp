@@ -73,7 +73,7 @@ double latticeQuantizationPsd(const RoundingLattice& L, double dt, double w);
 /// of min(n, 2^18) samples (seeded, deterministic), the covariance scaled by that length over n.
 /// Correlated rounding is far from Gaussian: at 0.13 LSB per sample the estimates at tau = dt
 /// scatter 2.7x (in sd) what the Gaussian (Isserlis) covariance of the same PSD says, and those
-/// at dt..16 dt move together (docs/fitting.md, "Quantization below one LSB per sample").
+/// at dt..16 dt move together (docs/fitting-log.md, "Quantization below one LSB per sample").
 Eigen::MatrixXd latticeAllanCovariance(const RoundingLattice& L, double dt, std::size_t n,
                                        const std::vector<std::size_t>& m, int realisations,
                                        std::uint64_t seed);

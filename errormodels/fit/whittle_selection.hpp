@@ -1,6 +1,6 @@
 // Term-set selection of the composite latent fit by a Whittle likelihood (Whittle 1953) of the
 // record's tapered periodogram. The octave Allan variance sees a random walk only through its last 2-3
-// points (11-25 EDF each; docs/fitting.md, "detectability"); the periodogram keeps every Fourier
+// points (11-25 EDF each; docs/fitting-log.md, "detectability"); the periodogram keeps every Fourier
 // frequency down to 1 / (N dt), where the walk lives.
 //
 // Method:
