@@ -16,7 +16,9 @@ import yaml
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate as gen  # noqa: E402
 
-SINSIM = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "sinsim")
+# the binary: $SINSIM_BIN, else the repository's build/sinsim
+SINSIM = os.environ.get("SINSIM_BIN") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                                      "build", "sinsim")
 
 # ---------------------------------------------------------------- units -> SI
 BASE = {"rad": 1.0, "deg": math.pi / 180, "mrad": 1e-3, "urad": 1e-6, "arcsec": math.pi / 180 / 3600,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <optional>
 
@@ -113,6 +112,7 @@ struct Problem {
   bool latticeMotionRead = false;    ///< the lattice's motion read from the record (motionShape)
   std::vector<double> arPolynomial;  ///< of the AR term (LatentFitOptions::arPolynomial)
   Eigen::VectorXd arColumn;          ///< its Allan variance at unit driving variance
+  bool gmAveraged = false;           ///< GM terms as averaged samples (GmTerm::averaged)
 };
 
 /// Column of a five-term Allan basis function (index in AllanTermKind order) at the points; the
@@ -151,7 +151,8 @@ Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vect
   if (s.white) X.col(j++) = p.basis[1];
   if (s.ar) X.col(j++) = p.arColumn;
   for (double t : T) {
-    for (Eigen::Index i = 0; i < n; ++i) X(i, j) = gmDiscreteAllanVariance(1.0, t, p.dt, p.m[std::size_t(i)]);
+    const GmTerm unit{1.0, t, p.gmAveraged};
+    for (Eigen::Index i = 0; i < n; ++i) X(i, j) = gmAllanVariance(unit, p.dt, p.m[std::size_t(i)]);
     ++j;
   }
   if (s.flicker) X.col(j++) = p.basis[2];
@@ -223,7 +224,7 @@ LatentModel modelOf(const Problem& p, const SetFit& f) {
     m.arPolynomial = p.arPolynomial;
     m.arVariance = f.theta(j++);
   }
-  for (double t : f.T) m.gm.push_back({next(), t});
+  for (double t : f.T) m.gm.push_back({next(), t, p.gmAveraged});
   if (f.set.flicker) m.flicker = next();
   if (f.set.randomWalk) m.randomWalk = next();
   if (f.set.drift) m.drift = next();
@@ -418,9 +419,16 @@ struct ParameterTable {
   double birgeScale = 1.0;
 };
 
-ParameterTable parameterTable(const Problem& p, const SetFit& f) {
-  struct Par { std::string name; double p; bool amplitude; };
-  std::vector<Par> pars;
+/// A set fit's parameters by name: p = ln of a variance coefficient (amplitude) or of a GM's T.
+struct LogParameter {
+  std::string name;
+  double p;
+  bool amplitude;
+  double value() const { return amplitude ? std::exp(0.5 * p) : std::exp(p); }
+};
+
+std::vector<LogParameter> logParameters(const SetFit& f) {
+  std::vector<LogParameter> pars;
   Eigen::Index j = 0;
   auto var = [&](const std::string& name) { pars.push_back({name, std::log(f.theta(j++)), true}); };
   if (f.set.quantization) var("quantization");
@@ -434,6 +442,12 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   if (f.set.flicker) var("flicker");
   if (f.set.randomWalk) var("random_walk");
   if (f.set.drift) var("drift");
+  return pars;
+}
+
+ParameterTable parameterTable(const Problem& p, const SetFit& f) {
+  using Par = LogParameter;
+  const std::vector<Par> pars = logParameters(f);
 
   auto modelAt = [&](const std::vector<double>& pv) {
     std::vector<double> T;
@@ -464,7 +478,7 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
   for (Eigen::Index c = 0; c < k; ++c) {
     const Par& q = pars[std::size_t(c)];
     const double sdp = std::sqrt(std::max(t.logCovariance(c, c), 0.0));
-    const double value = q.amplitude ? std::exp(0.5 * q.p) : std::exp(q.p);
+    const double value = q.value();
     t.parameters.push_back({q.name, value, q.amplitude ? 0.5 * value * sdp : value * sdp});
     LatentParameter& par = t.parameters.back();
     par.logScale = true;
@@ -476,6 +490,47 @@ ParameterTable parameterTable(const Problem& p, const SetFit& f) {
     }
   }
   return t;
+}
+
+/// The set `best` (fitted under p.W) refitted under the same whitening with one term in its other
+/// discretisation: its GMs averaged over each interval (`gm`) or its flicker sampled (else); each
+/// parameter's change, 0 where the set lacks that term (LatentParameter::gmConventionShift,
+/// flickerConventionShift).
+std::vector<double> discretisationShifts(const Problem& p, const SetFit& best, const std::vector<LatentParameter>& parameters,
+                                         bool gm) {
+  std::vector<double> shift(parameters.size(), 0.0);
+  if (gm ? best.set.gm == 0 : !best.set.flicker) return shift;
+  Problem q = p;
+  if (gm) {
+    q.gmAveraged = true;
+  } else {
+    for (Eigen::Index i = 0; i < q.basis[2].size(); ++i)
+      q.basis[2](i) = flickerSampledAllanVariance(1.0, p.m[std::size_t(i)]);
+  }
+  const std::vector<LogParameter> other = logParameters(fitSet(q, best.set));
+  for (std::size_t k = 0; k < parameters.size(); ++k)
+    for (const LogParameter& a : other)
+      if (a.name == parameters[k].name && std::isfinite(a.p) && parameters[k].value > 0.0)
+        shift[k] = a.value() - parameters[k].value;
+  return shift;
+}
+
+/// The record cannot tell a GM sampled from one averaged over each interval, nor a flicker
+/// averaged from one sampled (latent_fit.hpp, LatentParameter::gmConventionShift): each
+/// parameter's change under the other discretisation widens its 1-sigma and its ln interval, in
+/// quadrature.
+void includeDiscretisation(const Problem& p, const SetFit& best, std::vector<LatentParameter>& parameters) {
+  const std::vector<double> gm = discretisationShifts(p, best, parameters, true);
+  const std::vector<double> flicker = discretisationShifts(p, best, parameters, false);
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    LatentParameter& par = parameters[k];
+    par.gmConventionShift = gm[k], par.flickerConventionShift = flicker[k];
+    const double shift = std::hypot(gm[k], flicker[k]);
+    if (!(shift > 0.0)) continue;
+    par.stdError = std::hypot(par.stdError, shift);
+    const double dl = shift / par.value;  // in ln, to first order
+    par.logLower = std::hypot(par.logLower, dl), par.logUpper = std::hypot(par.logUpper, dl);
+  }
 }
 
 /// Sets further than this above the best score are left out of the averaging: their weight is
@@ -505,7 +560,9 @@ std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std
     double worst = 0.0;
     for (std::size_t k = 0; k < mine.size(); ++k) worst = std::max(worst, std::fabs(mine[k] / omegaAvar[k] - 1.0));
     if (!(worst <= 0.05)) own.W = modelWhitening(p, cands[i].model);
-    entries.push_back({std::exp(-0.5 * delta), parameterTable(own, fits[i]).parameters});
+    std::vector<LatentParameter> parameters = parameterTable(own, fits[i]).parameters;
+    includeDiscretisation(own, fits[i], parameters);
+    entries.push_back({std::exp(-0.5 * delta), std::move(parameters)});
     total += entries.back().weight;
   }
   std::vector<std::string> names;
@@ -547,6 +604,7 @@ std::vector<LatentAveragedParameter> averageOverSets(const Problem& p, const std
 void describe(const Problem& p, const SetFit& f, LatentFit& out) {
   const LatentModel& m = out.model;
   ParameterTable t = parameterTable(p, f);
+  includeDiscretisation(p, f, t.parameters);
   out.parameters = std::move(t.parameters);
   out.logCovariance = std::move(t.logCovariance);
   out.birgeScale = t.birgeScale;

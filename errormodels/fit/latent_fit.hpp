@@ -145,7 +145,9 @@ inline double walkForGmCost(const LatentFitOptions& options) {
 struct LatentParameter {
   std::string name;  ///< "white", "quantization", "gm1.sigma", "gm1.tau", "random_walk", ...
   double value = 0.0;
-  double stdError = 0.0;  ///< the delta method's 1-sigma (Gauss-Newton covariance of the log parameters)
+  /// the delta method's 1-sigma (Gauss-Newton covariance of the log parameters), with the
+  /// discretisation shifts below in quadrature
+  double stdError = 0.0;
   /// Every parameter also has an interval in ln(value). A GM tau's is the profile likelihood: the
   /// Allan chi^2 minimised over every other parameter rises by the Birge scale (Delta chi^2 = 1,
   /// one parameter) at logCenter - logLower and logCenter + logUpper. An amplitude's is the delta
@@ -159,6 +161,18 @@ struct LatentParameter {
   bool logScale = false;
   double logCenter = 0.0;                 ///< ln(value)
   double logLower = 0.0, logUpper = 0.0;  ///< 1-sigma distances below and above logCenter
+  /// The same set fitted with its GMs averaged over each sample interval (GmTerm::averaged, the
+  /// continuous GM an integrating sensor outputs) instead of sampled: this parameter's value there
+  /// minus `value` (0 without a GM). To first order the two differ at short tau by a 1/tau term,
+  /// the shape of white noise, so they fit equally well and the record cannot tell which it holds:
+  /// the shift is a 1-sigma of its own, in stdError and in the ln interval (each side; shift /
+  /// value there), in quadrature.
+  double gmConventionShift = 0.0;
+  /// Likewise with the flicker sampled at each instant (digital 1/f noise up to Nyquist,
+  /// flickerSampledAllanVariance: 1.19x the floor at tau = dt, decaying within a few samples)
+  /// instead of averaged (the fit's floor): this parameter's value there minus `value` (0 without
+  /// a flicker term); in stdError and the ln interval the same way (both shifts in quadrature).
+  double flickerConventionShift = 0.0;
   /// Whether `truth` lies inside the k-sigma interval (for a tau the union above).
   bool covers(double truth, double k) const;
 };

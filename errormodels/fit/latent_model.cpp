@@ -68,7 +68,66 @@ double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m) {
   return s2 * bracket / (md * md * omp * omp);
 }
 
+double gmAveragedAllanVariance(double s2, double T, double dt, std::size_t m) {
+  if (m == 0 || !(T > 0.0) || !(dt > 0.0))
+    throw InputError("GM Allan variance: need m >= 1, tau > 0 and dt > 0");
+  const double x = static_cast<double>(m) * dt / T;
+  // 2/x [1 - (3 - 4 e^-x + e^-2x) / (2x)] loses ~1e-16 / x^3 relative to cancellation: below
+  // x = 0.1 its Taylor series sum_{n>=3} (4 (-1)^n - (-2)^n) / n! x^(n-2) = 2x/3 - x^2/2 + 7x^3/30
+  // - ..., to n = 18 (the next term < 1e-17 relative).
+  if (x < 0.1) {
+    double sum = 0.0, fact = 2.0, xp = 1.0;  // fact = n!, xp = x^(n-2)
+    for (int n = 3; n <= 18; ++n) {
+      fact *= n, xp *= x;
+      const double sign = n % 2 ? -1.0 : 1.0;  // (-1)^n
+      sum += (4.0 * sign - sign * std::ldexp(1.0, n)) / fact * xp;
+    }
+    return s2 * sum;
+  }
+  const double e1 = std::exp(-x);
+  return s2 * 2.0 / x * (1.0 - (3.0 - 4.0 * e1 + e1 * e1) / (2.0 * x));
+}
+
+double gmAllanVariance(const GmTerm& g, double dt, std::size_t m) {
+  const double s2 = g.sigma * g.sigma;
+  return g.averaged ? gmAveragedAllanVariance(s2, g.tau, dt, m) : gmDiscreteAllanVariance(s2, g.tau, dt, m);
+}
+
+double flickerSampledAllanVariance(double B2, std::size_t m) {
+  if (m == 0) throw InputError("flicker Allan variance: need m >= 1");
+  if (m > 4096) return 2.0 * std::log(2.0) / kPi * B2;
+  static const double x8[] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
+                              0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
+  static const double w8[] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,
+                              0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+  const double md = static_cast<double>(m);
+  const std::size_t panels = 4 * m;  // width 1/(8m): a quarter of the numerator's period 1/m
+  const double h = 0.5 / static_cast<double>(panels);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < panels; ++k)
+    for (int i = 0; i < 8; ++i) {
+      const double x = (static_cast<double>(k) + 0.5 + 0.5 * x8[i]) * h;
+      const double a = std::sin(kPi * md * x), b = std::sin(kPi * x);
+      sum += w8[i] * 0.5 * h * 2.0 * a * a * a * a / (md * md * x * b * b);
+    }
+  return B2 / kPi * sum;
+}
+
 namespace {
+
+/// PSD [U^2 per rad/sample] of a GM term's samples at w, in its convention: the AR(1)'s
+/// sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2, or for the averaged samples (autocovariance c0, then
+/// c1 phi^(k-1)) c0 + 2 c1 (cos w - phi) / |1 - phi e^{-iw}|^2.
+double gmPsd(const GmTerm& g, double dt, double w) {
+  const double s2 = g.sigma * g.sigma, u = dt / g.tau, phi = std::exp(-u);
+  const double den = 1.0 - 2.0 * phi * std::cos(w) + phi * phi;
+  if (!g.averaged) return s2 * (1.0 - phi * phi) / den;
+  // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
+  const double c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
+  const double omp = -std::expm1(-u) / u;  // (1 - phi) / u
+  const double c1 = s2 * omp * omp;
+  return c0 + 2.0 * c1 * (std::cos(w) - phi) / den;
+}
 
 /// The AR term's Allan variance per unit driving variance at the factors m (linear in E). A fit
 /// evaluates it for one fixed polynomial many times, each an autocovariance recursion to 2 max(m)
@@ -97,7 +156,7 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
   std::vector<double> avar = allanModelAdev(allanTheta(model), tau);
   for (std::size_t i = 0; i < m.size(); ++i) {
     avar[i] *= avar[i];
-    for (const GmTerm& g : model.gm) avar[i] += gmDiscreteAllanVariance(g.sigma * g.sigma, g.tau, dt, m[i]);
+    for (const GmTerm& g : model.gm) avar[i] += gmAllanVariance(g, dt, m[i]);
   }
   if (const double q = latticeScale(model); q > 0.0)
     for (std::size_t i = 0; i < m.size(); ++i) avar[i] += q * latticeQuantizationAllanVariance(model.lattice, dt, m[i]);
@@ -113,11 +172,7 @@ double latentPsd(const LatentModel& model, double dt, double w) {
   th[4] = 0.0;  // the ramp is deterministic
   double S = allanTermsPsd(th, dt, w);
   if (const double q = latticeScale(model); q > 0.0) S += q * latticeQuantizationPsd(model.lattice, dt, w);
-  for (const GmTerm& g : model.gm) {
-    // AR(1): sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2
-    const double phi = std::exp(-dt / g.tau);
-    S += g.sigma * g.sigma * (1.0 - phi * phi) / (1.0 - 2.0 * phi * std::cos(w) + phi * phi);
-  }
+  for (const GmTerm& g : model.gm) S += gmPsd(g, dt, w);
   if (model.arVariance > 0.0) {
     // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k: Horner in u = e^{-iw} (one sincos per call)
     const std::complex<double> u = std::polar(1.0, -w);

@@ -20,6 +20,12 @@
 // (m = 1: sigma^2 (1 - phi); dt -> 0 with m dt = tau: the continuous IEEE 952 C form
 // 2 sigma^2 T / tau [1 - T (3 - 4 e^{-tau/T} + e^{-2 tau/T}) / (2 tau)]). The fitted GM is written
 // with `rate:` = the record's rate, so the simulator draws exactly this AR(1).
+// An **averaged** GM (GmTerm::averaged) is the continuous GM as an integrating or decimating sensor
+// outputs it: each sample the mean over its interval. Averages of m such samples are averages over
+// tau = m dt of the continuous process, so its Allan variance is the continuous form above at every
+// m, exactly; its samples have autocovariance c0 = 2 sigma^2 (u - 1 + e^{-u}) / u^2 (u = dt / T) and
+// c_k = sigma^2 (1 - phi)^2 phi^(k-1) / u^2 for k >= 1 (an ARMA(1,1)). Written without `rate:`, it is
+// the simulator's continuous GM (errormodels/effects/gm_process.hpp draws exactly these averages).
 //
 // An AR(p) term (sinsim fit --kind ar+slow, fit/ar_slow_fit.hpp): the polynomial
 // A(z) = 1 + a1 z^-1 + ... + ap z^-p of a Burg fit held fixed, its driving variance E a variance
@@ -45,8 +51,9 @@ namespace sinsim::errormodels::fit {
 
 /// A first-order Gauss-Markov term.
 struct GmTerm {
-  double sigma = 0.0;  ///< [U] stationary standard deviation
-  double tau = 0.0;    ///< [s] correlation time
+  double sigma = 0.0;     ///< [U] stationary standard deviation
+  double tau = 0.0;       ///< [s] correlation time
+  bool averaged = false;  ///< each sample the mean over its interval (else the AR(1) sampled)
 };
 
 /// The composite model; a term is absent when its coefficient is 0 (no GM: empty list).
@@ -72,6 +79,25 @@ struct LatentModel {
 /// Allan variance [U^2] of the discrete GM (AR(1)) with variance s2 [U^2], correlation time T [s],
 /// sampled at dt [s], at tau = m dt. Throws InputError for m = 0 or non-positive T, dt.
 double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m);
+
+/// Allan variance [U^2] of the averaged GM (GmTerm::averaged): the continuous GM of variance s2
+/// [U^2] and correlation time T [s] averaged over tau = m dt. Throws InputError for m = 0 or
+/// non-positive T, dt.
+double gmAveragedAllanVariance(double s2, double T, double dt, std::size_t m);
+
+/// The GM term's Allan variance at tau = m dt in its convention (discrete or averaged).
+double gmAllanVariance(const GmTerm& g, double dt, std::size_t m);
+
+/// Allan variance [U^2] of flicker noise **sampled** at each instant rather than averaged over
+/// the interval: the digital 1/f noise of spectral synthesis, one-sided PSD B^2 / (pi f) up to the
+/// Nyquist frequency, whose means of m samples see the discrete Allan filter:
+///   AVAR(m) = (B^2 / pi) int_0^{1/2} 2 sin^4(pi m x) / (m^2 x sin^2(pi x)) dx     (x = f dt)
+/// (Gauss-Legendre on panels of 1/(8m); 1.189 x the floor at m = 1, i.e. (gamma + ln pi - Ci(pi))
+/// / (2 ln 2); the floor (2 ln 2 / pi) B^2 beyond m = 4096, where the two differ by < 1e-7).
+/// The fit's flicker term is the floor at every m (the averaged process); this one is the other
+/// discretisation its 1-sigma allows for (LatentParameter::flickerConventionShift). Throws
+/// InputError for m = 0.
+double flickerSampledAllanVariance(double B2, std::size_t m);
 
 /// Allan variance [U^2] of the composite model at tau = m dt for each m (>= 1).
 std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
