@@ -669,7 +669,7 @@ std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& can
 /// `order`. One rule for both likelihood choices: `score` is the block or the Whittle score, a
 /// -2 log L plus latentPenalty. (Not the Allan choice: its points stop at N dt / 10, where a GM
 /// whose hump lies in the last octaves and a walk differ by a point or two; there the rule turned
-/// real GMs into walks, docs/fitting.md.)
+/// real GMs into walks, docs/fitting-log.md, "The walk-for-GM rule in the Whittle choice too".)
 template <class Score>
 std::vector<std::size_t> withoutWalkLikeGms(const std::vector<LatentCandidate>& cands,
                                             const std::vector<std::size_t>& order, const LatentFitOptions& penalty,
