@@ -113,6 +113,10 @@ struct Problem {
   std::vector<double> arPolynomial;  ///< of the AR term (LatentFitOptions::arPolynomial)
   Eigen::VectorXd arColumn;          ///< its Allan variance at unit driving variance
   bool gmAveraged = false;           ///< GM terms as averaged samples (GmTerm::averaged)
+  /// The flicker column with the flicker sampled at each instant (flickerSampledAllanVariance at
+  /// unit B^2), computed once where a candidate set has flicker: the other discretisation of
+  /// basis[2] (discretisationShifts).
+  Eigen::VectorXd flickerSampledColumn;
 };
 
 /// Column of a five-term Allan basis function (index in AllanTermKind order) at the points; the
@@ -501,12 +505,8 @@ std::vector<double> discretisationShifts(const Problem& p, const SetFit& best, c
   std::vector<double> shift(parameters.size(), 0.0);
   if (gm ? best.set.gm == 0 : !best.set.flicker) return shift;
   Problem q = p;
-  if (gm) {
-    q.gmAveraged = true;
-  } else {
-    for (Eigen::Index i = 0; i < q.basis[2].size(); ++i)
-      q.basis[2](i) = flickerSampledAllanVariance(1.0, p.m[std::size_t(i)]);
-  }
+  if (gm) q.gmAveraged = true;
+  else q.basis[2] = p.flickerSampledColumn;
   const std::vector<LogParameter> other = logParameters(fitSet(q, best.set));
   for (std::size_t k = 0; k < parameters.size(); ++k)
     for (const LogParameter& a : other)
@@ -816,6 +816,11 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
   if (p.lattice.correlated()) p.roundingExcess = latticeExcess(p);
   const std::vector<LatentTermSet> sets =
       options.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : options.candidates;
+  if (std::any_of(sets.begin(), sets.end(), [](const LatentTermSet& s) { return s.flicker; })) {
+    p.flickerSampledColumn.resize(Eigen::Index(p.m.size()));
+    for (std::size_t i = 0; i < p.m.size(); ++i)
+      p.flickerSampledColumn(Eigen::Index(i)) = flickerSampledAllanVariance(1.0, p.m[i]);
+  }
   if (std::any_of(sets.begin(), sets.end(), [](const LatentTermSet& s) { return s.ar; })) {
     if (options.arPolynomial.size() < 2 || options.arPolynomial.front() != 1.0)
       throw InputError("latent fit: a set with an AR term needs its polynomial [1, a1..ap] (p >= 1)");

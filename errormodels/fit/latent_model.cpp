@@ -95,7 +95,10 @@ double gmAllanVariance(const GmTerm& g, double dt, std::size_t m) {
 
 double flickerSampledAllanVariance(double B2, std::size_t m) {
   if (m == 0) throw InputError("flicker Allan variance: need m >= 1");
-  if (m > 4096) return 2.0 * std::log(2.0) / kPi * B2;
+  if (m > 4096) {  // the averaged flicker's floor, fit::allanModelAdev's (its one home; any tau)
+    const double floor = allanModelAdev({0.0, 0.0, B2, 0.0, 0.0}, {1.0}).front();
+    return floor * floor;
+  }
   static const double x8[] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
                               0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
   static const double w8[] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873, 0.3626837833783620,

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "common/error.hpp"
 #include "common/units.hpp"
@@ -258,18 +259,17 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     // LatentParameter::gmConventionShift, flickerConventionShift: the other discretisations, which
     // the record fits alike (above the 1-sigma line, which stays next to its effect)
     const LatentParameter& white = f.parameter("white");
-    if (std::fabs(white.gmConventionShift) > 1e-3 * m.white) {
-      b.line << "white would be " << q(m.white + white.gmConventionShift, u.density)
-             << " with the GM averaged over each sample interval (an integrating sensor) instead of sampled "
-                "as written: the record fits both alike; the difference is in the 1 sigma";
-      b.endComment();
-    }
-    if (std::fabs(white.flickerConventionShift) > 1e-3 * m.white) {
-      b.line << "white would be " << q(m.white + white.flickerConventionShift, u.density)
-             << " with the flicker sampled at each instant (digital 1/f noise) instead of averaged over each "
-                "interval: the record fits both alike; the difference is in the 1 sigma";
-      b.endComment();
-    }
+    const std::pair<double, const char*> others[] = {
+        {white.gmConventionShift, "the GM averaged over each sample interval (an integrating sensor) instead of "
+                                  "sampled as written"},
+        {white.flickerConventionShift, "the flicker sampled at each instant (digital 1/f noise) instead of "
+                                       "averaged over each interval"}};
+    for (const auto& [shift, how] : others)
+      if (std::fabs(shift) > 1e-3 * m.white) {
+        b.line << "white would be " << q(m.white + shift, u.density) << " with " << how
+               << ": the record fits both alike; the difference is in the 1 sigma";
+        b.endComment();
+      }
     b.line << "white +- " << q(sd("white"), u.density) << " (1 sigma" << ln("white", 1.0, u.density) << ")";
     b.endComment();
     b.add(EffectSpec::make("white", {withSigma(ParamSpec::quantity("density", m.white,
