@@ -159,7 +159,7 @@ double pairIntegral(const std::function<double(double)>& psd, const FactorNodes&
 }  // namespace
 
 double allanTermsPsd(const std::array<double, kAllanTermCount>& th, double dt, double w) {
-  const double s2 = std::sin(0.5 * w) * std::sin(0.5 * w);
+  const double s = std::sin(0.5 * w), s2 = s * s;
   return th[0] * 4.0 * s2 / (dt * dt) + th[1] / dt + th[2] / w + th[3] * dt / (4.0 * s2);
 }
 

@@ -138,13 +138,14 @@ BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps)
       logF = std::log(F);
       for (std::size_t i = 0; i < n; ++i) g[i] = (f[i] * Ph[i] + c[i]) / F;
       double change = 0.0, scale = 1e-300;
+      // P stays symmetric: the upper triangle updated, mirrored to the lower.
       for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t k = i; k < n; ++k) {
           double& pik = P[i * n + k];
           const double v = f[i] * f[k] * pik - F * g[i] * g[k] + (i == k ? q[i] : 0.0);
           change = std::max(change, std::fabs(v - pik));
           if (i == k) scale = std::max(scale, std::fabs(v));
-          pik = v;
+          pik = P[k * n + i] = v;
         }
       // Steady: the covariance moved by < 1e-11 of the largest variance in a step.
       steady = j > 0 && change <= 1e-11 * scale;

@@ -118,20 +118,6 @@ double flickerSampledAllanVariance(double B2, std::size_t m) {
 
 namespace {
 
-/// PSD [U^2 per rad/sample] of a GM term's samples at w, in its convention: the AR(1)'s
-/// sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2, or for the averaged samples (autocovariance c0, then
-/// c1 phi^(k-1)) c0 + 2 c1 (cos w - phi) / |1 - phi e^{-iw}|^2.
-double gmPsd(const GmTerm& g, double dt, double w) {
-  const double s2 = g.sigma * g.sigma, u = dt / g.tau, phi = std::exp(-u);
-  const double den = 1.0 - 2.0 * phi * std::cos(w) + phi * phi;
-  if (!g.averaged) return s2 * (1.0 - phi * phi) / den;
-  // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
-  const double c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
-  const double omp = -std::expm1(-u) / u;  // (1 - phi) / u
-  const double c1 = s2 * omp * omp;
-  return c0 + 2.0 * c1 * (std::cos(w) - phi) / den;
-}
-
 /// The AR term's Allan variance per unit driving variance at the factors m (linear in E). A fit
 /// evaluates it for one fixed polynomial many times, each an autocovariance recursion to 2 max(m)
 /// lags, so the last one is kept per thread.
@@ -170,18 +156,46 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
   return avar;
 }
 
-double latentPsd(const LatentModel& model, double dt, double w) {
-  auto th = allanTheta(model);
-  th[4] = 0.0;  // the ramp is deterministic
-  double S = allanTermsPsd(th, dt, w);
-  if (const double q = latticeScale(model); q > 0.0) S += q * latticeQuantizationPsd(model.lattice, dt, w);
-  for (const GmTerm& g : model.gm) S += gmPsd(g, dt, w);
-  if (model.arVariance > 0.0) {
+double latentPsd(const LatentModel& model, double dt, double w) { return LatentSpectrum(model, dt)(w); }
+
+// A GM term's PSD at w in its convention: the AR(1)'s sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2,
+// or for the averaged samples (autocovariance c0, then c1 phi^(k-1))
+// c0 + 2 c1 (cos w - phi) / |1 - phi e^{-iw}|^2.
+LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
+    : dt_(dt), theta_(allanTheta(model)), latticeScale_(latticeScale(model)), lattice_(model.lattice),
+      arPolynomial_(model.arPolynomial), arVariance_(model.arVariance) {
+  theta_[4] = 0.0;  // the ramp is deterministic
+  anyAllanTerm_ = theta_[0] != 0.0 || theta_[1] != 0.0 || theta_[2] != 0.0 || theta_[3] != 0.0;
+  for (const GmTerm& g : model.gm) {
+    Gm t{};
+    const double s2 = g.sigma * g.sigma, u = dt / g.tau;
+    t.averaged = g.averaged;
+    t.phi = std::exp(-u), t.twoPhi = 2.0 * t.phi, t.phi2 = t.phi * t.phi;
+    t.num = s2 * (1.0 - t.phi2);
+    // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
+    t.c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
+    const double omp = -std::expm1(-u) / u;  // (1 - phi) / u
+    t.twoC1 = 2.0 * (s2 * omp * omp);
+    gm_.push_back(t);
+  }
+}
+
+double LatentSpectrum::operator()(double w) const {
+  double S = anyAllanTerm_ ? allanTermsPsd(theta_, dt_, w) : 0.0;
+  if (latticeScale_ > 0.0) S += latticeScale_ * latticeQuantizationPsd(lattice_, dt_, w);
+  if (!gm_.empty()) {
+    const double cw = std::cos(w);
+    for (const Gm& g : gm_) {
+      const double den = 1.0 - g.twoPhi * cw + g.phi2;
+      S += g.averaged ? g.c0 + g.twoC1 * (cw - g.phi) / den : g.num / den;
+    }
+  }
+  if (arVariance_ > 0.0) {
     // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k: Horner in u = e^{-iw} (one sincos per call)
     const std::complex<double> u = std::polar(1.0, -w);
     std::complex<double> A = 0.0;
-    for (std::size_t k = model.arPolynomial.size(); k-- > 0;) A = A * u + model.arPolynomial[k];
-    S += model.arVariance / std::norm(A);
+    for (std::size_t k = arPolynomial_.size(); k-- > 0;) A = A * u + arPolynomial_[k];
+    S += arVariance_ / std::norm(A);
   }
   return S;
 }
@@ -189,9 +203,10 @@ double latentPsd(const LatentModel& model, double dt, double w) {
 double latentInnovationVariance(const LatentModel& model, double dt) {
   constexpr int kNodes = 1 << 15;
   const double h = kPi / kNodes;
+  const LatentSpectrum psd(model, dt);
   double sumLog = 0.0;
   for (int i = 0; i < kNodes; ++i) {
-    const double S = latentPsd(model, dt, (i + 0.5) * h);
+    const double S = psd((i + 0.5) * h);
     if (!(S > 0.0) || !std::isfinite(S))
       throw InputError("latentInnovationVariance: the model " + model.termNames() + " has no random term");
     sumLog += std::log(S);

@@ -41,10 +41,12 @@
 // R [U/s], sigma [U], T [s].
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/lattice_rounding.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -107,6 +109,32 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
 /// (normalised so that (1/pi) int_0^pi = the sample variance); the drift is deterministic and
 /// adds nothing. For the covariance of Allan-variance estimates (fit::allanEstimateCovariance).
 double latentPsd(const LatentModel& model, double dt, double w);
+
+/// latentPsd as a function of w alone, with what does not depend on w (the five terms'
+/// coefficients, the lattice's scale, each GM's phi and lag covariances, one cos w for all GMs)
+/// computed once: for the thousands of frequencies of a covariance or a Whittle column. The same
+/// arithmetic as latentPsd, so the same values to the bit.
+class LatentSpectrum {
+ public:
+  LatentSpectrum(const LatentModel& model, double dt);
+  double operator()(double w) const;
+
+ private:
+  struct Gm {
+    bool averaged;
+    double phi, twoPhi, phi2;  // phi = e^{-dt/T}, 2 phi, phi^2
+    double num;                // sampled: sigma^2 (1 - phi^2)
+    double c0, twoC1;          // averaged: c0, 2 c1
+  };
+  double dt_;
+  std::array<double, kAllanTermCount> theta_;  // fit::allanTermsPsd's (the ramp's 0)
+  bool anyAllanTerm_;
+  double latticeScale_;
+  RoundingLattice lattice_;
+  std::vector<Gm> gm_;
+  std::vector<double> arPolynomial_;
+  double arVariance_;
+};
 
 /// One-step prediction error variance [U^2] of the model's random terms sampled at dt: the
 /// variance left when the whole past predicts the next sample (Kolmogorov-Szego:

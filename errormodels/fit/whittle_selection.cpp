@@ -40,9 +40,10 @@ Eigen::MatrixXd design(const WhittleBins& b, std::size_t nb, const LatentTermSet
   for (double t : T) {
     LatentModel g;
     g.gm.push_back({1.0, t});
+    const LatentSpectrum psd(g, b.dt);
     for (std::size_t i = 0; i < nb; ++i) {
       double sum = 0.0;
-      for (double w : b.nodes[i]) sum += latentPsd(g, b.dt, w);
+      for (double w : b.nodes[i]) sum += psd(w);
       X(Eigen::Index(i), c) = b.lowFactor[i] * sum / double(b.nodes[i].size());
     }
     ++c;
@@ -295,6 +296,7 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingL
   unit[0].quantization = 1.0, unit[1].white = 1.0, unit[2].flicker = 1.0, unit[3].randomWalk = 1.0;
   if (lattice.active()) unit[0].quantization = lattice.step / std::sqrt(12.0), unit[0].lattice = lattice;
   const double unitQ2 = unit[0].quantization * unit[0].quantization;
+  const LatentSpectrum unitPsd[4] = {{unit[0], dt}, {unit[1], dt}, {unit[2], dt}, {unit[3], dt}};
   for (std::size_t j = 1; j <= last;) {
     const std::size_t width =
         j <= kSingleOrdinates ? 1 : std::max<std::size_t>(1, std::size_t(kBinWidth * double(j)));
@@ -311,7 +313,7 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingL
       nodes.push_back(dw * (double(j) + (double(q) + 0.5) * double(cnt) / double(m) - 0.5));
     double col[4] = {0, 0, 0, 0};
     for (int t = 0; t < 4; ++t) {
-      for (double w : nodes) col[t] += latentPsd(unit[t], dt, w);
+      for (double w : nodes) col[t] += unitPsd[t](w);
       col[t] /= double(nodes.size());
     }
     col[0] /= unitQ2;
