@@ -88,25 +88,30 @@ struct FactorNodes {
   std::vector<double> tw, tS, ts;          // Simpson nodes in ln w on [c, pi] (empty when c = pi)
 };
 
-FactorNodes factorNodes(const std::function<double(double)>& psd, std::size_t mf) {
+// psd(w, s), s = sin(w / 2) (allanEstimateCovariance's second form)
+using PsdOfWs = std::function<double(double, double)>;
+
+FactorNodes factorNodes(const PsdOfWs& psd, std::size_t mf) {
   FactorNodes f;
   const double m = static_cast<double>(mf);
   f.c = std::min(kPi, 40.0 * kPi / m);
   const double h = f.c / kExactIntervals;
   for (int i = 0; i <= kExactIntervals; ++i) {
     const double w = i == kExactIntervals ? f.c : 0.0 + i * h;
+    const double s = std::sin(0.5 * w);
     f.w.push_back(w);
-    f.S.push_back(w <= 0.0 ? 0.0 : psd(w));
-    f.s.push_back(std::sin(0.5 * w));
+    f.S.push_back(w <= 0.0 ? 0.0 : psd(w, s));
+    f.s.push_back(s);
     f.sin4m.push_back(sin4(0.5 * m * w));
   }
   if (f.c < kPi) {
     const double la = std::log(f.c), lb = std::log(kPi), hl = (lb - la) / kTailIntervals;
     for (int i = 0; i <= kTailIntervals; ++i) {
       const double w = std::exp(i == 0 ? la : i == kTailIntervals ? lb : la + i * hl);
+      const double s = std::sin(0.5 * w);
       f.tw.push_back(w);
-      f.tS.push_back(psd(w));
-      f.ts.push_back(std::sin(0.5 * w));
+      f.tS.push_back(psd(w, s));
+      f.ts.push_back(s);
     }
   }
   return f;
@@ -130,7 +135,7 @@ double tailIntegral(const FactorNodes& t, double a, double b) {
   }, kTailIntervals, hl);
 }
 
-double pairIntegral(const std::function<double(double)>& psd, const FactorNodes& lo, const FactorNodes& hi,
+double pairIntegral(const PsdOfWs& psd, const FactorNodes& lo, const FactorNodes& hi,
                     std::size_t ma, std::size_t mb) {
   const double a = static_cast<double>(ma), b = static_cast<double>(mb);
   const double cb = hi.c, ca = lo.c;
@@ -147,8 +152,8 @@ double pairIntegral(const std::function<double(double)>& psd, const FactorNodes&
       // sin^4(b w/2) -> 3/8; sin^4(a w/2) exact up to ca, then 3/8 as well.
       const double h = (ca - cb) / kExactIntervals;
       I += 0.375 * simpsonNodes([&](int i) {
-        const double w = i == 0 ? cb : i == kExactIntervals ? ca : cb + i * h;
-        return envelopeOf(psd(w), std::sin(0.5 * w), a, b) * sin4(0.5 * a * w);
+        const double w = i == 0 ? cb : i == kExactIntervals ? ca : cb + i * h, s = std::sin(0.5 * w);
+        return envelopeOf(psd(w, s), s, a, b) * sin4(0.5 * a * w);
       }, kExactIntervals, h);
       I += 0.375 * 0.375 * tailIntegral(lo, a, b);
     }
@@ -159,7 +164,11 @@ double pairIntegral(const std::function<double(double)>& psd, const FactorNodes&
 }  // namespace
 
 double allanTermsPsd(const std::array<double, kAllanTermCount>& th, double dt, double w) {
-  const double s = std::sin(0.5 * w), s2 = s * s;
+  return allanTermsPsd(th, dt, w, std::sin(0.5 * w));
+}
+
+double allanTermsPsd(const std::array<double, kAllanTermCount>& th, double dt, double w, double s) {
+  const double s2 = s * s;
   return th[0] * 4.0 * s2 / (dt * dt) + th[1] / dt + th[2] / w + th[3] * dt / (4.0 * s2);
 }
 
@@ -167,10 +176,15 @@ Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount
                                         const std::vector<std::size_t>& m, double dt,
                                         std::size_t M) {
   if (!(std::isfinite(dt) && dt > 0.0)) throw InputError("Allan covariance: dt must be > 0");
-  return allanEstimateCovariance([&](double w) { return allanTermsPsd(theta, dt, w); }, m, M);
+  return allanEstimateCovariance([&](double w, double s) { return allanTermsPsd(theta, dt, w, s); }, m, M);
 }
 
 Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double)>& psd,
+                                        const std::vector<std::size_t>& m, std::size_t M) {
+  return allanEstimateCovariance([&](double w, double) { return psd(w); }, m, M);
+}
+
+Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double w, double s)>& psd,
                                         const std::vector<std::size_t>& m, std::size_t M) {
   const auto n = static_cast<Eigen::Index>(m.size());
   for (std::size_t f : m)

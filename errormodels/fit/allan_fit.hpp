@@ -113,12 +113,18 @@ Eigen::MatrixXd allanEstimateCovariance(const std::array<double, kAllanTermCount
 /// white sequence of variance s^2 has psd = s^2). Used by the latent-process fit (GM terms).
 Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double)>& psd,
                                         const std::vector<std::size_t>& m, std::size_t M);
+/// The same with psd(w, s) given s = sin(w / 2) as well, which the quadrature has at every node
+/// (a PSD written in s, as fit::LatentSpectrum is, need not compute it again).
+Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double w, double s)>& psd,
+                                        const std::vector<std::size_t>& m, std::size_t M);
 /// Correlation matrix of a covariance C, projected onto the positive-definite correlation
 /// matrices (eigenvalues floored at 1e-3, unit diagonal restored) when the quadrature made it
 /// indefinite (see allanEstimateCorrelation).
 Eigen::MatrixXd correlationOfCovariance(const Eigen::MatrixXd& C);
 /// The five-term model's discrete PSD [U^2 per rad/sample] at w in (0, pi] (see above).
 double allanTermsPsd(const std::array<double, kAllanTermCount>& theta, double dt, double w);
+/// The same given s = sin(w / 2).
+double allanTermsPsd(const std::array<double, kAllanTermCount>& theta, double dt, double w, double s);
 
 /// Allan deviation [U] of the five-term model theta = (Q^2, N^2, B^2, K^2, R^2) at tau [s].
 std::vector<double> allanModelAdev(const std::array<double, kAllanTermCount>& theta,

@@ -249,7 +249,8 @@ Eigen::MatrixXd diagonalWhitening(const Problem& p, const Eigen::VectorXd& level
 /// Whitening from the covariance of the Allan estimates under `model` (GLS), with the lattice
 /// rounding's non-Gaussian excess where there is one.
 Eigen::MatrixXd modelWhitening(const Problem& p, const LatentModel& model) {
-  Eigen::MatrixXd C = allanEstimateCovariance(LatentSpectrum(model, p.dt), p.m, p.N);
+  const LatentSpectrum psd(model, p.dt);
+  Eigen::MatrixXd C = allanEstimateCovariance([&](double w, double s) { return psd(w, s); }, p.m, p.N);
   const Eigen::Index k = p.roundingExcess.rows();
   if (k > 0) C.topLeftCorner(k, k) += p.roundingExcess;
   const Eigen::VectorXd sd = C.diagonal().cwiseMax(0.0).cwiseSqrt();
@@ -306,7 +307,8 @@ Eigen::MatrixXd latticeExcess(const Problem& p) {
   q.white = p.lattice.motion / std::sqrt(p.dt);
   q.quantization = p.lattice.step / std::sqrt(12.0);
   q.lattice = p.lattice;
-  const Eigen::MatrixXd gauss = allanEstimateCovariance(LatentSpectrum(q, p.dt), m, p.N);
+  const LatentSpectrum psd(q, p.dt);
+  const Eigen::MatrixXd gauss = allanEstimateCovariance([&](double w, double s) { return psd(w, s); }, m, p.N);
   const Eigen::MatrixXd mc = latticeAllanCovariance(p.lattice, p.dt, p.N, m, 160, 0x1a77ce);
   Eigen::MatrixXd excess = mc - gauss;
   if (p.latticeMotionRead && m.front() == 1) {

@@ -160,7 +160,8 @@ double latentPsd(const LatentModel& model, double dt, double w) { return LatentS
 
 // A GM term's PSD at w in its convention: the AR(1)'s sigma^2 (1 - phi^2) / |1 - phi e^{-iw}|^2,
 // or for the averaged samples (autocovariance c0, then c1 phi^(k-1))
-// c0 + 2 c1 (cos w - phi) / |1 - phi e^{-iw}|^2.
+// c0 + 2 c1 (cos w - phi) / |1 - phi e^{-iw}|^2; with s = sin(w/2), cos w = 1 - 2 s^2, so
+// |1 - phi e^{-iw}|^2 = (1 - phi)^2 + 4 phi s^2 and cos w - phi = (1 - phi) - 2 s^2.
 LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
     : dt_(dt), theta_(allanTheta(model)), latticeScale_(latticeScale(model)), lattice_(model.lattice),
       arPolynomial_(model.arPolynomial), arVariance_(model.arVariance) {
@@ -169,9 +170,10 @@ LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
   for (const GmTerm& g : model.gm) {
     Gm t{};
     const double s2 = g.sigma * g.sigma, u = dt / g.tau;
+    const double phi = std::exp(-u);
     t.averaged = g.averaged;
-    t.phi = std::exp(-u), t.twoPhi = 2.0 * t.phi, t.phi2 = t.phi * t.phi;
-    t.num = s2 * (1.0 - t.phi2);
+    t.omPhi = -std::expm1(-u), t.omPhi2 = t.omPhi * t.omPhi, t.fourPhi = 4.0 * phi;
+    t.num = s2 * t.omPhi * (1.0 + phi);
     // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
     t.c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
     const double omp = -std::expm1(-u) / u;  // (1 - phi) / u
@@ -180,15 +182,15 @@ LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
   }
 }
 
-double LatentSpectrum::operator()(double w) const {
-  double S = anyAllanTerm_ ? allanTermsPsd(theta_, dt_, w) : 0.0;
+double LatentSpectrum::operator()(double w) const { return (*this)(w, std::sin(0.5 * w)); }
+
+double LatentSpectrum::operator()(double w, double s) const {
+  const double s2 = s * s;
+  double S = anyAllanTerm_ ? allanTermsPsd(theta_, dt_, w, s) : 0.0;
   if (latticeScale_ > 0.0) S += latticeScale_ * latticeQuantizationPsd(lattice_, dt_, w);
-  if (!gm_.empty()) {
-    const double cw = std::cos(w);
-    for (const Gm& g : gm_) {
-      const double den = 1.0 - g.twoPhi * cw + g.phi2;
-      S += g.averaged ? g.c0 + g.twoC1 * (cw - g.phi) / den : g.num / den;
-    }
+  for (const Gm& g : gm_) {
+    const double den = g.omPhi2 + g.fourPhi * s2;
+    S += g.averaged ? g.c0 + g.twoC1 * (g.omPhi - 2.0 * s2) / den : g.num / den;
   }
   if (arVariance_ > 0.0) {
     // E / |A(e^{iw})|^2, A(z) = sum_k a_k z^-k: Horner in u = e^{-iw} (one sincos per call)

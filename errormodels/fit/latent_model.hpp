@@ -111,20 +111,25 @@ std::vector<double> latentAllanVariance(const LatentModel& model, double dt,
 double latentPsd(const LatentModel& model, double dt, double w);
 
 /// latentPsd as a function of w alone, with what does not depend on w (the five terms'
-/// coefficients, the lattice's scale, each GM's phi and lag covariances, one cos w for all GMs)
-/// computed once: for the thousands of frequencies of a covariance or a Whittle column. The same
-/// arithmetic as latentPsd, so the same values to the bit.
+/// coefficients, the lattice's scale, each GM's phi and lag covariances) computed once: for the
+/// thousands of frequencies of a covariance or a Whittle column. Written in s = sin(w/2), which
+/// a quadrature may already have (the second form): a GM's |1 - phi e^{-iw}|^2 is
+/// (1 - phi)^2 + 4 phi s^2, free of the cancellation of 1 - 2 phi cos w + phi^2 at a slow GM's
+/// low frequencies (phi -> 1, w -> 0).
 class LatentSpectrum {
  public:
   LatentSpectrum(const LatentModel& model, double dt);
   double operator()(double w) const;
+  double operator()(double w, double s) const;  ///< s = sin(w / 2)
 
  private:
   struct Gm {
     bool averaged;
-    double phi, twoPhi, phi2;  // phi = e^{-dt/T}, 2 phi, phi^2
-    double num;                // sampled: sigma^2 (1 - phi^2)
-    double c0, twoC1;          // averaged: c0, 2 c1
+    double omPhi;      // 1 - phi, phi = e^{-dt/T}
+    double omPhi2;     // (1 - phi)^2
+    double fourPhi;    // 4 phi
+    double num;        // sampled: sigma^2 (1 - phi^2)
+    double c0, twoC1;  // averaged: c0, 2 c1
   };
   double dt_;
   std::array<double, kAllanTermCount> theta_;  // fit::allanTermsPsd's (the ramp's 0)

@@ -281,3 +281,17 @@ TEST_CASE("one-step prediction variance of the terms: white, GM, white + GM (ARM
   CHECK(latentInnovationVariance(walk, dt) > a);
   CHECK_THROWS_AS(latentInnovationVariance(LatentModel{}, dt), sinsim::InputError);
 }
+
+TEST_CASE("a slow GM's spectrum at its lowest frequencies keeps its digits", "[fit][latent]") {
+  // T = 1e6 dt: |1 - phi e^{-iw}|^2 is ~1e-12 at w -> 0, where 1 - 2 phi cos w + phi^2 keeps only
+  // ~4 digits. Truth from the autocovariance sums: the sampled GM's sum_k sigma^2 phi^|k| =
+  // sigma^2 coth(u/2), the averaged samples' the continuous PSD at 0 over dt, 2 sigma^2 / u
+  // (u = dt / T); at w = 1e-12 the frequency's own term is 1e-12 of these.
+  const double dt = 0.01, T = 1e4, sigma = 2.0, u = dt / T, w = 1e-12;
+  LatentModel sampled, averaged;
+  sampled.gm = {{sigma, T}};
+  averaged.gm = {{sigma, T, true}};
+  CHECK(LatentSpectrum(sampled, dt)(w) == Approx(sigma * sigma / std::tanh(0.5 * u)).epsilon(1e-10));
+  CHECK(LatentSpectrum(averaged, dt)(w) == Approx(2.0 * sigma * sigma / u).epsilon(1e-10));
+  CHECK(latentPsd(sampled, dt, w) == LatentSpectrum(sampled, dt)(w, std::sin(0.5 * w)));
+}
