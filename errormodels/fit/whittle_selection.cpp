@@ -43,7 +43,7 @@ Eigen::MatrixXd design(const WhittleBins& b, std::size_t nb, const LatentTermSet
     const LatentSpectrum psd(g, b.dt);
     for (std::size_t i = 0; i < nb; ++i) {
       double sum = 0.0;
-      for (double w : b.nodes[i]) sum += psd(w);
+      for (std::size_t k = 0; k < b.nodes[i].size(); ++k) sum += psd(b.nodes[i][k], b.nodeSin[i][k]);
       X(Eigen::Index(i), c) = b.lowFactor[i] * sum / double(b.nodes[i].size());
     }
     ++c;
@@ -307,13 +307,14 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingL
     b.count.push_back(double(cnt) / p.varianceInflation);
     b.level.push_back(sum / double(cnt));
     b.wHigh.push_back(p.w[hi - 1]);
-    std::vector<double> nodes;
+    std::vector<double> nodes, sines;
     const std::size_t m = std::min(cnt, kNodes);
     for (std::size_t q = 0; q < m; ++q)
       nodes.push_back(dw * (double(j) + (double(q) + 0.5) * double(cnt) / double(m) - 0.5));
+    for (double w : nodes) sines.push_back(std::sin(0.5 * w));
     double col[4] = {0, 0, 0, 0};
     for (int t = 0; t < 4; ++t) {
-      for (double w : nodes) col[t] += unitPsd[t](w);
+      for (std::size_t k = 0; k < nodes.size(); ++k) col[t] += unitPsd[t](nodes[k], sines[k]);
       col[t] /= double(nodes.size());
     }
     col[0] /= unitQ2;
@@ -328,6 +329,7 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingL
       col[2] *= factor;
     }
     b.nodes.push_back(nodes);
+    b.nodeSin.push_back(sines);
     b.lowFactor.push_back(factor);
     b.quantization.push_back(col[0]);
     b.white.push_back(col[1]);

@@ -45,6 +45,7 @@ struct WhittleBins {
   std::vector<double> level;              ///< I_b: mean periodogram [U^2 per rad/sample]
   std::vector<double> wHigh;              ///< [rad/sample] highest frequency in the bin
   std::vector<std::vector<double>> nodes; ///< [rad/sample] frequencies a PSD is averaged over
+  std::vector<std::vector<double>> nodeSin; ///< sin(w / 2) at each node (fit::LatentSpectrum's s)
   std::vector<double> lowFactor;          ///< E I / PSD of white noise in the bin (1 above the exact ordinates)
   /// E I_b at unit variance of quantization, white, flicker, random walk (Q^2, N^2, B^2, K^2 = 1).
   std::vector<double> quantization, white, flicker, randomWalk;
