@@ -277,7 +277,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
   if (opt.axes.empty()) {
     for (int c = 0; c < int(kRecordChannels.size()); ++c)
       if (!channelData(record, c).empty()) chans.push_back(c);
-    if (chans.empty()) throw InputError(record.source + ": no gx/gy/gz/ax/ay/az column to fit");
+    if (chans.empty())
+      throw InputError(record.source + ": no gx/gy/gz/ax/ay/az column to fit; " + sensorColumnsHint(record));
   } else {
     for (const auto& name : opt.axes) {
       const std::optional<int> c = findChannel(name);

@@ -211,7 +211,8 @@ std::vector<ChannelStats> analyzeRecord(const errormodels::Record& rec, const An
     if (rec.hasGyro(k)) add(gnames[k], rec.gyro[k], "rad/s");
   for (int k = 0; k < 3; ++k)
     if (rec.hasAccel(k)) add(anames[k], rec.accel[k], "m/s^2");
-  if (stats.empty()) throw InputError(rec.source + ": no gx/gy/gz/ax/ay/az column to analyse");
+  if (stats.empty())
+    throw InputError(rec.source + ": no gx/gy/gz/ax/ay/az column to analyse; " + errormodels::sensorColumnsHint(rec));
   return stats;
 }
 

@@ -101,7 +101,8 @@ MeasuredSetup measuredSetup(errormodels::Record record, const MeasuredOptions& o
   errormodels::Record& rec = m.record;
   for (int ax = 0; ax < 3; ++ax)
     if (!rec.hasGyro(ax) || !rec.hasAccel(ax))
-      throw InputError(rec.source + ": the record needs the columns gx, gy, gz, ax, ay, az");
+      throw InputError(rec.source + ": the record needs the columns gx, gy, gz, ax, ay, az; " +
+                       errormodels::sensorColumnsHint(rec));
   const double rate = rec.rate_hz;
   if (o.skip != 0.0) {  // drop a warm-up: the navigation starts after it
     const auto k = std::size_t(std::llround(std::max(0.0, o.skip) * rate));

@@ -87,7 +87,8 @@ std::vector<int> channelsToDiagnose(const Record& record, const DiagnoseOptions&
       channels.push_back(c);
     }
   }
-  if (channels.empty()) throw InputError(record.source + ": no gyro or accelerometer channel");
+  if (channels.empty())
+    throw InputError(record.source + ": no gx/gy/gz/ax/ay/az column to diagnose; " + sensorColumnsHint(record));
   return channels;
 }
 

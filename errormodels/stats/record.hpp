@@ -93,6 +93,12 @@ struct Record {
 /// not increase, and (unless allowed) irregular or gapped time stamps.
 Record loadRecord(const std::string& path, const RecordOptions& options = {});
 
+/// What to do when `record` lacks sensor columns a command needs, to end its error message: the
+/// file's unrecognised columns and a column mapping of them to try, e.g. "the file's other
+/// columns: gyro_x, gyro_y, gyro_z; name the sensor columns gx gy gz ax ay az in the header (a unit
+/// in brackets: gx[deg/s]) or map them: --columns \"gx=gyro_x,gy=gyro_y,gz=gyro_z\"".
+std::string sensorColumnsHint(const Record& record);
+
 /// The same parser on text already in memory; `source` names it in messages.
 Record parseRecord(std::string_view text, const std::string& source,
                    const RecordOptions& options = {});

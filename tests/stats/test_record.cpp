@@ -257,3 +257,33 @@ TEST_CASE("record: the ADIS16405 run 1 file", "[record][real]") {
   CHECK(mean(r.accel[2]) / kG == Approx(-1.016).margin(0.002));
   CHECK(r.aux.empty());
 }
+
+TEST_CASE("a record without sensor columns: the hint lists its columns and a mapping that reads them",
+          "[record]") {
+  const std::string text = "gyro_x,gyro_y,gyro_z,acc_x,acc_y,acc_z\n1,2,3,4,5,6\n1,2,3,4,5,6\n";
+  RecordOptions o;
+  o.rate_hz = 100.0;
+  const Record r = parseRecord(text, "imu.csv", o);
+  CHECK_FALSE(r.hasGyro(0));
+  const std::string hint = sensorColumnsHint(r);
+  CHECK(hint.find("other columns: gyro_x, gyro_y, gyro_z, acc_x, acc_y, acc_z") != std::string::npos);
+  // The suggested mapping, given back as --columns, reads the six channels in the file's order.
+  const std::size_t at = hint.find("--columns \"");
+  REQUIRE(at != std::string::npos);
+  const std::size_t from = at + 11, to = hint.find('"', from);
+  o.columns = parseColumnMapping(hint.substr(from, to - from));
+  const Record mapped = parseRecord(text, "imu.csv", o);
+  for (int k = 0; k < 3; ++k) {
+    REQUIRE(mapped.hasGyro(k));
+    REQUIRE(mapped.hasAccel(k));
+    CHECK(mapped.gyro[k][0] == Approx(1.0 + k));
+    CHECK(mapped.accel[k][0] == Approx(4.0 + k));
+  }
+  // Seven columns (a time stamp first): a template, not a guess.
+  RecordOptions plain;
+  plain.rate_hz = 100.0;
+  const std::string seven = sensorColumnsHint(parseRecord("stamp,wx,wy,wz,fx,fy,fz\n0,1,2,3,4,5,6\n", "imu.csv", plain));
+  CHECK(seven.find("other columns: stamp, wx, wy, wz, fx, fy, fz") != std::string::npos);
+  CHECK(seven.find("--columns \"gx=NAME,gy=NAME,gz=NAME,ax=NAME,ay=NAME,az=NAME\"") != std::string::npos);
+  CHECK(seven.find("gx=stamp") == std::string::npos);
+}
