@@ -1,6 +1,7 @@
 #include "errormodels/fit/nnls.hpp"
 
 #include <limits>
+#include <vector>
 
 #include "common/error.hpp"
 
@@ -8,16 +9,22 @@ namespace sinsim::errormodels::fit {
 
 namespace {
 
-// Least squares on the columns flagged in `passive`; other entries 0.
+// Least squares on the columns flagged in `passive`; other entries 0. The fits call this tens of
+// thousands of times on matrices of ~20 x 6: the column block and its QR are kept per thread, so
+// that only a change of shape allocates (the same arithmetic as a fresh decomposition).
 Eigen::VectorXd solvePassive(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                              const Eigen::Array<bool, Eigen::Dynamic, 1>& passive) {
   const Eigen::Index n = A.cols();
-  std::vector<Eigen::Index> idx;
+  thread_local std::vector<Eigen::Index> idx;
+  thread_local Eigen::MatrixXd Ap;
+  thread_local Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr;
+  idx.clear();
   for (Eigen::Index j = 0; j < n; ++j)
     if (passive(j)) idx.push_back(j);
-  Eigen::MatrixXd Ap(A.rows(), static_cast<Eigen::Index>(idx.size()));
+  Ap.resize(A.rows(), static_cast<Eigen::Index>(idx.size()));
   for (std::size_t k = 0; k < idx.size(); ++k) Ap.col(static_cast<Eigen::Index>(k)) = A.col(idx[k]);
-  const Eigen::VectorXd zp = Ap.colPivHouseholderQr().solve(b);
+  qr.compute(Ap);
+  const Eigen::VectorXd zp = qr.solve(b);
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   for (std::size_t k = 0; k < idx.size(); ++k) z(idx[k]) = zp(static_cast<Eigen::Index>(k));
   return z;
