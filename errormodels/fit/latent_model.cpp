@@ -176,7 +176,7 @@ LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
     t.num = s2 * t.omPhi * (1.0 + phi);
     // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
     t.c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
-    const double omp = -std::expm1(-u) / u;  // (1 - phi) / u
+    const double omp = t.omPhi / u;  // (1 - phi) / u
     t.twoC1 = 2.0 * (s2 * omp * omp);
     gm_.push_back(t);
   }
