@@ -14,4 +14,11 @@ const std::vector<double>& channelData(const Record& r, int c) {
   return ch.sensor == Sensor::gyro ? r.gyro[ch.axis] : r.accel[ch.axis];
 }
 
+std::string otherChannels(const Record& r, int c, const char* sep) {
+  std::string out;
+  for (int k = 0; k < int(kRecordChannels.size()); ++k)
+    if (k != c && !channelData(r, k).empty()) out += (out.empty() ? "" : sep) + std::string(kRecordChannels[k].name);
+  return out;
+}
+
 }  // namespace sinsim::errormodels

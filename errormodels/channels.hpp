@@ -33,5 +33,8 @@ inline constexpr const char* kChannelList = "gx, gy, gz, ax, ay, az";
 std::optional<int> findChannel(const std::string& name);
 /// The samples of channel c (0..5) of a record [SI]; empty when the record lacks the column.
 const std::vector<double>& channelData(const Record& r, int c);
+/// The record's channels other than c that hold data, joined by `sep` ("gx,gy,ax"): the hint
+/// that leaves channel c out (`--axes`, `--channels`).
+std::string otherChannels(const Record& r, int c, const char* sep);
 
 }  // namespace sinsim::errormodels

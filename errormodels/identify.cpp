@@ -350,8 +350,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       const double lattice = latticeStep(x);
       const fit::RoundingLattice rounding{lattice * dt, 0.0, mean * dt};
       if (!(ax.stddev > 0.0))
-        throw InputError(record.source + ": channel " + c.name +
-                         " is constant: nothing to fit");
+        throw InputError(record.source + ": channel " + c.name + " is constant: nothing to fit; leave it out: --axes " +
+                         otherChannels(record, ci, ","));
 
       AllanOptions ao;
       ao.grid = TauGrid::Octave;

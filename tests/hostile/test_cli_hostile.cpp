@@ -184,3 +184,28 @@ TEST_CASE("sinsim analyze: a record beyond the memory left is refused by name, n
   CHECK_FALSE(fs::exists(json));
 }
 #endif
+
+TEST_CASE("sinsim fit and diagnose: a dead channel among live ones is named with the option that leaves it out") {
+  const fs::path d = tempDir("dead");
+  std::string csv = "gx,gy,gz\n";
+  for (int k = 0; k < 4000; ++k)
+    csv += std::to_string((k * 7919 % 1000) / 1000.0) + "," + std::to_string((k * 104729 % 997) / 997.0) + ",0\n";
+  writeText(d / "dead.csv", csv);
+  const fs::path model = d / "m.yaml";
+  CHECK(runSinsim("fit " + (d / "dead.csv").string() + " --rate 100 --kind ar -o " + model.string(), d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("channel gz is constant: nothing to fit; leave it out: --axes gx,gy"));
+  CHECK_FALSE(fs::exists(model));
+  // The hint, followed, fits the live channels; the diagnosis names the dead one the same way.
+  REQUIRE(runSinsim("fit " + (d / "dead.csv").string() + " --rate 100 --kind ar --axes gx,gy -q -o " + model.string(),
+                    d / "err") == 0);
+  const fs::path improved = d / "m.improved.yaml";
+  CHECK(runSinsim("diagnose " + (d / "dead.csv").string() + " --rate 100 --realisations 8 --model " + model.string() +
+                      " -o " + improved.string(),
+                  d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("channel gz is constant: nothing to diagnose; leave it out: --channels gx gy"));
+  CHECK_FALSE(fs::exists(improved));
+  // Columns under other names: listed, with a mapping that reads them.
+  writeText(d / "named.csv", "gyro_x,gyro_y\n0.1,0.2\n0.3,0.1\n");
+  CHECK(runSinsim("fit " + (d / "named.csv").string() + " --rate 100 -o " + model.string(), d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("the file's other columns: gyro_x, gyro_y;"));
+}
