@@ -65,11 +65,13 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   const double added = roundingAddedVariance(channelData(ctx.record, ctx.channel), q);  // [SI^2]
   const double share = added / ctx.var;
   // On a lattice coarser than the noise the rounding removes variance (most samples round to one
-  // value): said so, not as a negative share added.
+  // value): said so, as the unrounded input's variance against the record's.
   const std::string ev = "values on a lattice of " + quantity(q, u.level) + " (" +
-                         "differences are integer multiples of it); rounding " +
-                         (share >= 0.0 ? "adds " : "removes ") + num(100 * std::fabs(share), 3) +
-                         " % of the sample variance at the shortest scales";
+                         "differences are integer multiples of it); " +
+                         (share >= 0.0 ? "rounding adds " + num(100 * share, 3) + " % of the sample variance"
+                                       : "rounding removes variance: the unrounded input's would be " +
+                                             num(1.0 - share, 3) + "x the record's") +
+                         " at the shortest scales";
   Candidate rateLsb;
   rateLsb.effect = "quantization";
   rateLsb.freeSize = false;
