@@ -131,8 +131,9 @@ TEST_CASE("sinsim diagnose: a failure deep in the statistics names the record") 
 }
 
 TEST_CASE("sinsim diagnose: a channel the statistics cannot use is named with its record") {
-  // gx varies, gy is one value: the failure deep inside (burg on a constant series) must say
-  // which record and which channel, not only what failed.
+  // gx varies, gy is one value: the failure must say which record and which channel, not only
+  // what failed (it was burg's, deep inside, on the constant series; now the channel list is
+  // checked first and says how to leave the channel out).
   const fs::path d = tempDir("diagnose-channel");
   std::string text = "gx,gy\n";
   for (int k = 0; k < 2000; ++k)
@@ -142,7 +143,8 @@ TEST_CASE("sinsim diagnose: a channel the statistics cannot use is named with it
   CHECK(runSinsim("diagnose " + (d / "flat.csv").string() + " --rate 100 --threads 1 --model " +
                       (d / "m.yaml").string(),
                   d / "err") == 1);
-  CHECK_THAT(slurp(d / "err"), Contains((d / "flat.csv").string() + ": channel gy: "));
+  CHECK_THAT(slurp(d / "err"), Contains((d / "flat.csv").string() + ": channel gy is constant"));
+  CHECK_THAT(slurp(d / "err"), Contains("leave it out: --channels gx"));
   CHECK_THAT(slurp(d / "err"), !Contains("internal error"));
 }
 
