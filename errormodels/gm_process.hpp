@@ -22,22 +22,33 @@ namespace sinsim::errormodels {
 /// Allan variance [unit²] of a first-order GM process with variance s2 [unit²] and correlation
 /// time T [s] at averaging time tau [s] (IEEE Std 952-1997 Annex C, C.2.4 with q_c = 2 s2 / T):
 ///   AVAR = (q_c T² / tau) [1 - (T / 2 tau)(3 - 4 e^{-tau/T} + e^{-2 tau/T})].
-/// Below tau/T = 1e-4 the bracket cancels to ~1e-8, so its series is used: with x = tau/T,
-/// 3 - 4e^{-x} + e^{-2x} = 2x - 2x³/3 + O(x⁴), hence AVAR = 2 s2 x / 3 + O(x²). Peak of the
+/// With x = tau/T the bracket loses ~1e-16 / x³ relative to cancellation, so below x = 0.1 its
+/// Taylor series is used: AVAR / s2 = sum_{n>=3} (4 (-1)^n - (-2)^n) / n! x^(n-2)
+/// = 2x/3 - x²/2 + 7x³/30 - ..., to n = 18 (the next term < 1e-17 relative). Peak of the
 /// deviation: 0.618 sqrt(s2) at tau = 1.89 T; AVAR -> 2 s2 T / tau for tau >> T.
 inline double gaussMarkovAllanVariance(double s2, double T, double tau) {
   const double x = tau / T;
-  if (x < 1e-4) return 2.0 * s2 * x / 3.0;
-  return 2.0 * s2 * T / tau * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x));
+  if (x < 0.1) {
+    double sum = 0.0, fact = 2.0, xp = 1.0;  // fact = n!, xp = x^(n-2)
+    for (int n = 3; n <= 18; ++n) {
+      fact *= n, xp *= x;
+      const double sign = n % 2 ? -1.0 : 1.0;  // (-1)^n
+      sum += (4.0 * sign - sign * std::ldexp(1.0, n)) / fact * xp;
+    }
+    return s2 * sum;
+  }
+  const double e1 = std::exp(-x);
+  return s2 * 2.0 / x * (1.0 - (3.0 - 4.0 * e1 + e1 * e1) / (2.0 * x));
 }
 
 /// Autocovariance [unit²] at lags 0..maxLag of the interval averages over dt [s] of a GM process
 /// (variance s2, time T): lag 0 (2 s2 T²/dt²)(dt/T - 1 + e^(-dt/T)), lag k >= 1
 /// (s2 T²/dt²)(1 - e^(-dt/T))² e^(-(k-1) dt/T). Added into r (size maxLag + 1).
+/// (x - 1 + e^-x = x²/2 - x³/6 + x⁴/24 - ... cancels below x = 1e-4: its series there.)
 inline void addGaussMarkovIntervalAcov(double s2, double T, double dt, std::vector<double>& r) {
   const double x = dt / T, c2 = s2 / (x * x);
   const double om = -std::expm1(-x);
-  r[0] += 2.0 * c2 * (x - om);
+  r[0] += x < 1e-4 ? s2 * (1.0 - x / 3.0 + x * x / 12.0) : 2.0 * c2 * (x - om);
   const double step = std::exp(-x);
   double decay = 1.0;
   for (std::size_t k = 1; k < r.size(); ++k) {

@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
+#include "errormodels/gm_process.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -71,21 +72,7 @@ double gmDiscreteAllanVariance(double s2, double T, double dt, std::size_t m) {
 double gmAveragedAllanVariance(double s2, double T, double dt, std::size_t m) {
   if (m == 0 || !(T > 0.0) || !(dt > 0.0))
     throw InputError("GM Allan variance: need m >= 1, tau > 0 and dt > 0");
-  const double x = static_cast<double>(m) * dt / T;
-  // 2/x [1 - (3 - 4 e^-x + e^-2x) / (2x)] loses ~1e-16 / x^3 relative to cancellation: below
-  // x = 0.1 its Taylor series sum_{n>=3} (4 (-1)^n - (-2)^n) / n! x^(n-2) = 2x/3 - x^2/2 + 7x^3/30
-  // - ..., to n = 18 (the next term < 1e-17 relative).
-  if (x < 0.1) {
-    double sum = 0.0, fact = 2.0, xp = 1.0;  // fact = n!, xp = x^(n-2)
-    for (int n = 3; n <= 18; ++n) {
-      fact *= n, xp *= x;
-      const double sign = n % 2 ? -1.0 : 1.0;  // (-1)^n
-      sum += (4.0 * sign - sign * std::ldexp(1.0, n)) / fact * xp;
-    }
-    return s2 * sum;
-  }
-  const double e1 = std::exp(-x);
-  return s2 * 2.0 / x * (1.0 - (3.0 - 4.0 * e1 + e1 * e1) / (2.0 * x));
+  return gaussMarkovAllanVariance(s2, T, static_cast<double>(m) * dt);  // the continuous form's home
 }
 
 double gmAllanVariance(const GmTerm& g, double dt, std::size_t m) {
@@ -174,10 +161,11 @@ LatentSpectrum::LatentSpectrum(const LatentModel& model, double dt)
     t.averaged = g.averaged;
     t.omPhi = -std::expm1(-u), t.omPhi2 = t.omPhi * t.omPhi, t.fourPhi = 4.0 * phi;
     t.num = s2 * t.omPhi * (1.0 + phi);
-    // u - 1 + e^-u = u^2/2 - u^3/6 + u^4/24 - ..., cancelling below u = 1e-4
-    t.c0 = u < 1e-4 ? s2 * (1.0 - u / 3.0 + u * u / 12.0) : 2.0 * s2 * (u + std::expm1(-u)) / (u * u);
-    const double omp = t.omPhi / u;  // (1 - phi) / u
-    t.twoC1 = 2.0 * (s2 * omp * omp);
+    if (g.averaged) {  // c0, c1: the averaged samples' autocovariance (its one home)
+      std::vector<double> c(2, 0.0);
+      addGaussMarkovIntervalAcov(s2, g.tau, dt, c);
+      t.c0 = c[0], t.twoC1 = 2.0 * c[1];
+    }
     gm_.push_back(t);
   }
 }

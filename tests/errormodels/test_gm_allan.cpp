@@ -1,7 +1,8 @@
 // The Gauss-Markov Allan variance (errormodels/gm_process.hpp, the one home) against published
 // properties: the deviation peaks at 0.618 sigma at tau = 1.89 T (the values quoted with the
 // IEEE Std 952-1997 Annex C form), tends to 2 s2 T / tau for tau >> T and to 2 s2 tau / (3 T)
-// for tau << T (Taylor series of the closed form), continuously across the series switch.
+// for tau << T (Taylor series of the closed form, which it uses below tau = 0.1 T), continuously
+// across that switch.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -24,14 +25,14 @@ TEST_CASE("Gauss-Markov Allan variance: peak, both asymptotes, series seam", "[g
   // tau >> T: 2 s2 T / tau (1 - 3 T / (2 tau)) to first order; at tau = 1e4 T the relative
   // correction is 1.5e-4, so 2e-4 separates it from a wrong factor.
   CHECK(gaussMarkovAllanVariance(s2, T, 1e4 * T) == Approx(2 * s2 / 1e4).epsilon(2e-4));
-  // tau << T: AVAR = 2 s2 x / 3 (1 - 3x/4 + O(x^2)). At the switch x = 1e-4 the series drops
-  // the 3x/4 = 7.5e-5 term, and the closed form loses digits: 3 - 4e^-x + e^-2x = 2x is formed
-  // from O(1) terms (~1e-15 absolute), divided by 2x and subtracted from 1 to leave x^2/3, a
-  // relative error of ~1e-15 / (2x) / (x^2/3) = 1.5e-3. So the two sides agree within 3e-3; at
-  // x = 1e-3 the error is 1.5e-6 and the dropped term 7.5e-4, within 1e-3.
-  const double below = gaussMarkovAllanVariance(s2, T, 0.999999e-4 * T);
-  const double above = gaussMarkovAllanVariance(s2, T, 1.000001e-4 * T);
-  CHECK(below == Approx(2 * s2 * 0.999999e-4 / 3).epsilon(1e-12));
-  CHECK(above == Approx(below).epsilon(3e-3));
+  // tau << T: AVAR / s2 = 2x/3 - x^2/2 + 7x^3/30 - x^4/12 + ... (the closed form's Taylor series;
+  // the function switches to it below x = 0.1, where the closed form loses ~1e-16 / x^3). At
+  // x = 1e-4 three terms leave x^4/12 / (2x/3) = 1.3e-13 relative; across the switch the two forms
+  // meet to the closed form's rounding there (~1e-13).
+  const double x = 1e-4;
+  CHECK(gaussMarkovAllanVariance(s2, T, x * T) == Approx(s2 * (2 * x / 3 - x * x / 2 + 7 * x * x * x / 30)).epsilon(1e-12));
+  const double below = gaussMarkovAllanVariance(s2, T, 0.1 * (1 - 1e-15) * T);
+  const double above = gaussMarkovAllanVariance(s2, T, 0.1 * T);
+  CHECK(above == Approx(below).epsilon(1e-12));
   CHECK(gaussMarkovAllanVariance(s2, T, 1e-3 * T) == Approx(2 * s2 * 1e-3 / 3).epsilon(1e-3));
 }
