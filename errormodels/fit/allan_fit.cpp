@@ -198,7 +198,7 @@ Eigen::MatrixXd allanEstimateCovariance(const std::function<double(double w, dou
       const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
       const bool iHi = m[ui] >= m[uj];
       const std::size_t lo = iHi ? uj : ui, hi = iHi ? ui : uj;
-      const double L = static_cast<double>(M - 2 * m[hi]);
+      const double L = static_cast<double>(M - 2 * m[lo]);  // the shorter filter's term count (header)
       C(i, j) = C(j, i) = 2.0 / L * pairIntegral(psd, nodes[lo], nodes[hi], m[lo], m[hi]);
     }
   return C;
