@@ -413,14 +413,13 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
 }
 
 std::string sensorColumnsHint(const Record& record) {
-  static const char* const kNames[] = {"gx", "gy", "gz", "ax", "ay", "az"};
   const std::size_t n = record.aux.size();
   std::string listed, mapping;
   for (std::size_t i = 0; i < n && i < 8; ++i) listed += (i ? ", " : "") + record.aux[i].name;
   if (n > 8) listed += ", ... (" + std::to_string(n) + " in all)";
   // Six unrecognised columns are mapped in their order; any other count gets a template.
   for (std::size_t i = 0; i < 6; ++i)
-    mapping += std::string(i ? "," : "") + kNames[i] + "=" + (n == 6 ? record.aux[i].name : std::string("NAME"));
+    mapping += std::string(i ? "," : "") + kSensorColumns[i] + "=" + (n == 6 ? record.aux[i].name : std::string("NAME"));
   std::string hint = "name the sensor columns gx gy gz ax ay az in the header (a unit in brackets: gx[deg/s])";
   if (listed.empty()) return hint;
   return "the file's other columns: " + listed + "; " + hint + " or map them: --columns \"" + mapping + "\"" +

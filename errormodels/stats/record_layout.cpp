@@ -11,8 +11,8 @@ namespace sinsim::errormodels {
 namespace {
 
 bool knownQuantity(const std::string& q) {
-  static const char* const names[] = {"t", "gx", "gy", "gz", "ax", "ay", "az", "temp"};
-  return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return q == n; });
+  return q == "t" || q == "temp" ||
+         std::any_of(kSensorColumns.begin(), kSensorColumns.end(), [&](const char* n) { return q == n; });
 }
 
 }  // namespace

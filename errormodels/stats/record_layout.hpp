@@ -10,12 +10,17 @@
 // by number the file has no header line.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace sinsim::errormodels {
+
+/// The six sensor columns a record may hold, in channel order (errormodels/channels.hpp's
+/// kRecordChannels gives each its sensor and axis).
+inline constexpr std::array<const char*, 6> kSensorColumns{"gx", "gy", "gz", "ax", "ay", "az"};
 
 /// The field separator of a record: one character, or runs of blanks.
 struct Separator {

@@ -250,9 +250,9 @@ TEST_CASE("the long-tau Allan estimates of a random walk correlate as Monte Carl
   // The last octaves of m <= M/10, where a walk dominates: 3000 records of M = 8192 samples, white +
   // random walk (the walk 30x the white at m = 819). An estimate's cross-covariance with a longer
   // filter's counts the shorter filter's terms (L = M - 2 min(m_i, m_j)); counting the longer's made
-  // the last pair's correlation 1.06x too large and the matrix of a longer end indefinite. The
-  // Monte Carlo correlation's standard error is (1 - r^2) / sqrt(3000) < 0.01: bound 0.03; the old
-  // count misses it by >= 0.05.
+  // these correlations 1.06-1.19x too large and the matrix of a longer end indefinite. The Monte
+  // Carlo correlation's standard error is (1 - r^2) / sqrt(3000) < 0.01: bound 0.03; the old count
+  // misses it by >= 0.05.
   const std::size_t M = 8192, runs = 3000;
   const std::vector<std::size_t> m = {205, 410, 819};
   const double dt = 0.01, N = 1e-3, K = 1e-2;
