@@ -60,6 +60,7 @@ int runAnalyze(const AnalyzeArgs& a) {
     std::cout << " ->" << (a.json_out.empty() ? "" : " " + a.json_out)
               << (a.html_out.empty() ? "" : " " + a.html_out);
   std::cout << "\n" << sim::analysisSummary(stats);
+  for (const std::string& w : sim::analysisWarnings(stats)) std::cerr << "analyze: warning: " << w << "\n";
   return 0;
 }
 

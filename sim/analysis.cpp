@@ -1,8 +1,10 @@
 #include "sim/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +42,7 @@ ChannelStats channelStats(const std::string& name, const std::vector<double>& y,
   var /= static_cast<double>(y.size());
   c.mean = mean;
   c.sd = std::sqrt(var);
+  c.constant = std::adjacent_find(y.begin(), y.end(), std::not_equal_to<>()) == y.end();
 
   // The paper's pipeline denoises before the ACF; the PSD is of the same (possibly denoised)
   // signal. Allan is always of the raw record: denoising would remove the very white noise
@@ -93,6 +96,7 @@ json channelJson(const ChannelStats& c, bool full) {
   json j;
   j["mean"] = c.mean;
   j["std"] = c.sd;
+  if (c.constant) j["constant"] = true;
   if (c.denoised) {
     const errormodels::DenoiseResult& d = *c.denoised;
     j["denoise"] = {{"wavelet", "db5"}, {"boundary", "symmetric"}, {"level", d.level},

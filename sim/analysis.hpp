@@ -31,6 +31,8 @@ struct ChannelStats {
   std::string name;     // gx, ..., az
   std::string unit_si;  // rad/s or m/s^2
   double mean = 0.0, sd = 0.0;
+  /// Every sample has the same value (a dead or unconnected sensor): its statistics are zeros.
+  bool constant = false;
   std::optional<errormodels::DenoiseResult> denoised;
   errormodels::Autocorrelation acf;
   errormodels::PowerSpectrum psd;
@@ -63,8 +65,12 @@ DatasheetUnits datasheetUnits(bool gyro);
 
 /// A terminal table: per channel mean and sd, the white-noise density read at the shortest tau
 /// and the Allan minimum as a bias-instability B, in datasheet units (deg/h, deg/sqrt(h), ug,
-/// m/s/sqrt(h)).
+/// m/s/sqrt(h)). A constant channel reads "-" for the noise terms, with a note below the table.
 std::string analysisSummary(const std::vector<ChannelStats>& stats);
+
+/// One warning per constant channel ("channel gz is constant (0 rad/s at every sample): a dead
+/// or unconnected sensor? ..."); empty when every channel varies.
+std::vector<std::string> analysisWarnings(const std::vector<ChannelStats>& stats);
 
 /// Writes the analysis: JSON (SI; ACF and PSD log-spaced unless fullJson) to jsonPath and/or the HTML report to htmlPath
 /// (empty: not written), each whole or not at all.

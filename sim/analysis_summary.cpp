@@ -39,7 +39,7 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
     const DatasheetUnits u = datasheetUnits(c.name[0] == 'g');
     const NoiseTerms t = readNoiseTerms(c.allan);
     std::string N = "-", B = "-";
-    if (c.allan.size() > 0) {
+    if (c.allan.size() > 0 && !c.constant) {
       std::snprintf(line, sizeof line, "%.4g %s", t.N * u.density, u.densityUnit.c_str());
       N = line;
       std::snprintf(line, sizeof line, "%.4g %s at %.3g s", t.B * u.level, u.levelUnit.c_str(), t.tauB);
@@ -53,6 +53,20 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
     std::snprintf(line, sizeof line, "%-8s %-15s %-15s %-22s %s\n", c.name.c_str(), mean, sd,
                   N.c_str(), B.c_str());
     out += line;
+  }
+  for (const ChannelStats& c : stats)
+    if (c.constant) out += c.name + ": constant at every sample, no noise to read (a dead sensor?)\n";
+  return out;
+}
+
+std::vector<std::string> analysisWarnings(const std::vector<ChannelStats>& stats) {
+  std::vector<std::string> out;
+  char value[64];
+  for (const ChannelStats& c : stats) {
+    if (!c.constant) continue;
+    std::snprintf(value, sizeof value, "%.9g %s", c.mean, c.unit_si.c_str());
+    out.push_back("channel " + c.name + " is constant (" + value +
+                  " at every sample): a dead or unconnected sensor? Its sd, PSD and Allan deviation are zero");
   }
   return out;
 }

@@ -206,6 +206,17 @@ TEST_CASE("sinsim fit and diagnose: a dead channel among live ones is named with
                   d / "err") == 1);
   CHECK_THAT(slurp(d / "err"), Contains("channel gz is constant: nothing to diagnose; leave it out: --channels gx gy"));
   CHECK_FALSE(fs::exists(improved));
+  // analyze describes what is there, the dead channel included, and says it is dead: the table
+  // shows no noise terms for it (not zeros read as a perfect sensor), stderr and the JSON say why.
+  const fs::path json = d / "a.json";
+  const std::string analyze = std::string(SINSIM_BINARY_DIR) + "/sinsim analyze " + (d / "dead.csv").string() +
+                              " --rate 100 --json " + json.string() + " > " + (d / "out").string() + " 2> " +
+                              (d / "warn").string();
+  REQUIRE(std::system(analyze.c_str()) == 0);
+  CHECK_THAT(slurp(d / "warn"), Contains("analyze: warning: channel gz is constant (0 rad/s at every sample)"));
+  CHECK_THAT(slurp(d / "warn"), !Contains("channel gx") && !Contains("channel gy"));
+  CHECK_THAT(slurp(d / "out"), Contains("gz: constant at every sample"));
+  CHECK_THAT(slurp(json), Contains("\"constant\": true"));
   // Columns under other names: listed, with a mapping that reads them.
   writeText(d / "named.csv", "gyro_x,gyro_y\n0.1,0.2\n0.3,0.1\n");
   CHECK(runSinsim("fit " + (d / "named.csv").string() + " --rate 100 -o " + model.string(), d / "err") == 1);
