@@ -33,6 +33,7 @@ py::dict channelDict(const sim::ChannelStats& c) {
   d["unit"] = c.unit_si;
   d["mean"] = c.mean;
   d["sd"] = c.sd;
+  d["constant"] = c.constant;  // every sample the same value: a dead sensor
   d["acf"] = py::dict(py::arg("lag") = array(c.acf.lag), py::arg("r") = array(c.acf.r));
   d["psd"] = py::dict(py::arg("f") = array(c.psd.f), py::arg("psd") = array(c.psd.psd));
   d["allan"] = py::dict(py::arg("tau") = array(c.allan.tau), py::arg("adev") = array(c.allan.dev),

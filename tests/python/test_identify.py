@@ -66,6 +66,7 @@ def test_analyze_allan_of_white_noise(record):
     assert np.count_nonzero(short) >= 8
     assert np.allclose(gx["adev"][short], DENSITY / np.sqrt(gx["tau"][short]), rtol=0.15)
     assert a["gx"]["sd"] == pytest.approx(DENSITY * math.sqrt(RATE), rel=5 / math.sqrt(2 * N))
+    assert a["gx"]["constant"] is False  # a live channel; a dead one: tests/hostile (CLI)
 
 
 def test_model_write_read_round_trip_and_edits(record, tmp_path):
