@@ -4,11 +4,10 @@
 #include <complex>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/once_cache.hpp"
 #include "errormodels/fit/golden_section.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/stats/spectrum.hpp"
@@ -174,21 +173,17 @@ ExactColumns exactColumns(const std::vector<double>& h, double w, double dt) {
 }
 
 /// exactColumns at dt = 1 for j = 1..kExactOrdinates of a record of n samples, cached: they depend
-/// on n only (the taper and the line), so the channels of one record share them. White scales as
-/// 1/dt, quantization as 1/dt^2, the walk as dt. (Never evicted: a process sees a few lengths.)
+/// on n only (the taper and the line), so the channels of one record share them, computed once even
+/// when two threads' channels ask at the same moment (OnceCache). White scales as 1/dt,
+/// quantization as 1/dt^2, the walk as dt. (Never evicted: a process sees a few lengths.)
 const std::vector<ExactColumns>& exactColumnsCached(const std::vector<double>& h) {
-  static std::mutex mutex;
-  static std::map<std::size_t, std::vector<ExactColumns>> cache;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(h.size());
-    if (it != cache.end()) return it->second;
-  }
-  std::vector<ExactColumns> cols;
-  for (std::size_t j = 1; j <= kExactOrdinates; ++j)
-    cols.push_back(exactColumns(h, 2.0 * kPi * double(j) / double(h.size()), 1.0));
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(h.size(), std::move(cols)).first->second;
+  static OnceCache<std::size_t, std::vector<ExactColumns>> cache;
+  return cache.get(h.size(), [&] {
+    std::vector<ExactColumns> cols;
+    for (std::size_t j = 1; j <= kExactOrdinates; ++j)
+      cols.push_back(exactColumns(h, 2.0 * kPi * double(j) / double(h.size()), 1.0));
+    return cols;
+  });
 }
 
 /// The slope's weights g and the per-unit variances of the fixed terms (whittleSlopeVariance) at
@@ -197,14 +192,7 @@ struct SlopeKernel {
   std::shared_ptr<std::vector<double>> g;
   double white = 0, quantization = 0, walk = 0, flicker = 0;
 };
-SlopeKernel slopeKernelCached(const std::vector<double>& h) {
-  static std::mutex mutex;
-  static std::map<std::size_t, SlopeKernel> cache;
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(h.size());
-    if (it != cache.end()) return it->second;
-  }
+SlopeKernel slopeKernel(const std::vector<double>& h) {
   const std::size_t n = h.size();
   double s0 = 0, s1 = 0, s2 = 0;
   for (std::size_t k = 0; k < n; ++k) s0 += h[k], s1 += h[k] * double(k), s2 += h[k] * double(k) * double(k);
@@ -227,8 +215,11 @@ SlopeKernel slopeKernelCached(const std::vector<double>& h) {
     const double w = 2.0 * kPi * double(k) / double(M);
     K.flicker += (k == M / 2 ? 1.0 : 2.0) * G2[k] / w / double(M);  // S(w) = 1 / |w| at B^2 = 1
   }
-  std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(n, std::move(K)).first->second;
+  return K;
+}
+const SlopeKernel& slopeKernelCached(const std::vector<double>& h) {
+  static OnceCache<std::size_t, SlopeKernel> cache;
+  return cache.get(h.size(), [&] { return slopeKernel(h); });
 }
 
 }  // namespace
@@ -287,7 +278,7 @@ WhittleBins whittleBins(const std::vector<double>& x, double dt, const RoundingL
   b.lattice = lattice;
   const std::size_t n = p.taper.size();
   b.slope = p.slope / dt;
-  const SlopeKernel K = slopeKernelCached(p.taper);
+  const SlopeKernel& K = slopeKernelCached(p.taper);
   b.slopeWeights = K.g;
   b.slopeWhite = K.white, b.slopeQuantization = K.quantization, b.slopeWalk = K.walk, b.slopeFlicker = K.flicker;
   const std::size_t last = (n % 2 == 0) ? n / 2 - 1 : n / 2;  // Nyquist left out
