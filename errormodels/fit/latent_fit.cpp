@@ -529,8 +529,11 @@ void includeDiscretisation(const Problem& p, const SetFit& best, std::vector<Lat
     const double shift = std::hypot(gm[k], flicker[k]);
     if (!(shift > 0.0)) continue;
     par.stdError = std::hypot(par.stdError, shift);
-    const double dl = shift / par.value;  // in ln, to first order
-    par.logLower = std::hypot(par.logLower, dl), par.logUpper = std::hypot(par.logUpper, dl);
+    // In ln the change is ln(v_other / v) (v_other = v + shift > 0), not shift / v: a tau the
+    // other convention moves 100-fold (a GM the record hardly bounds) is ln 100 = 4.6 wider in ln,
+    // where the first-order shift / v = 99 had stated a 1-sigma interval of e^-99..e^99 times it.
+    const double dl = std::hypot(std::log1p(gm[k] / par.value), std::log1p(flicker[k] / par.value));
+    if (std::isfinite(dl)) par.logLower = std::hypot(par.logLower, dl), par.logUpper = std::hypot(par.logUpper, dl);
   }
 }
 
