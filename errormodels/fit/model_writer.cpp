@@ -167,10 +167,17 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
   }
 }
 
+/// Beyond this ln half-width (a factor e^20 = 5e8 either way) an interval says only that the
+/// record does not bound the parameter: an unidentified term's Wald interval in ln (a rarely
+/// included second GM's sigma, ln half-width 1e5) would print as "0..inf".
+constexpr double kUnboundedLogWidth = 20.0;
+
 /// A parameter's ln-space 1-sigma interval exp(logCenter - logLower)..exp(logCenter + logUpper)
-/// (LatentParameter::logScale), each end formatted by `at`.
+/// (LatentParameter::logScale), each end formatted by `at`; "not bounded by the record" past
+/// kUnboundedLogWidth on either side.
 template <class P, class At>
 std::string lnRange(const P& p, At at) {
+  if (!(p.logLower <= kUnboundedLogWidth && p.logUpper <= kUnboundedLogWidth)) return "not bounded by the record";
   return at(std::exp(p.logCenter - p.logLower)) + ".." + at(std::exp(p.logCenter + p.logUpper));
 }
 
@@ -292,7 +299,7 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     const LatentParameter& tau = f.parameter(n + ".tau");
     b.line << n << ": sigma +- " << q(sd(n + ".sigma"), u.level) << " (1 sigma" << ln(n + ".sigma", 1.0, u.level)
            << "), tau +- " << num(tau.stdError, 4) << " s (1 sigma; profile-likelihood 1-sigma interval "
-           << lnRange(tau, [](double v) { return num(v, 4); }) << " s)";
+           << lnRange(tau, [](double v) { return num(v, 4) + " s"; }) << ")";
     b.endComment();
     b.add(EffectSpec::make(
         "gauss_markov",

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <random>
 
 #include <yaml-cpp/yaml.h>
 
@@ -144,4 +145,30 @@ TEST_CASE("Model writer refuses bad entries and never leaves a half-written file
   writeModelFile(ok, {twice}, {});
   CHECK(YAML::LoadFile(ok)["gyro"]["x"].IsSequence());
   std::remove(ok.c_str());
+}
+
+TEST_CASE("Model writer: an ln interval the record does not bound is said so, not printed as 0..inf",
+          "[fit][writer]") {
+  // A latent fit of white noise (the fitted set: white), with two selection-aware entries added
+  // by hand: a rarely included GM's sigma whose Wald interval in ln has half-width 1e5 (as a
+  // second GM's had on a white + weak GM + walk record) and a tau bounded to 2..8 s.
+  std::mt19937_64 rng(41);
+  std::normal_distribution<double> g;
+  std::vector<double> x(20000);
+  for (auto& v : x) v = 1e-3 * g(rng);
+  LatentFitOptions o;
+  o.sampleInterval = 0.01;
+  AxisFitResult r;
+  r.axis = "x";
+  r.latent = fitLatentModel(x, o);
+  LatentAveragedParameter wide{"gm2.sigma", 0.005, 1e-4, 1e-3, true, std::log(1e-4), 1e5, 1e5};
+  LatentAveragedParameter tau{"gm2.tau", 0.005, 4.0, 2.0, true, std::log(4.0), std::log(2.0), std::log(2.0)};
+  r.latent->averaged.push_back(wide);
+  r.latent->averaged.push_back(tau);
+  const std::string text = modelYaml({r}, {});
+  INFO(text);
+  CHECK(text.find("gm2.sigma") != std::string::npos);
+  CHECK(text.find("(ln-space 1-sigma not bounded by the record)") != std::string::npos);
+  CHECK(text.find("(profile 1-sigma 2 s..8 s)") != std::string::npos);
+  CHECK(text.find("inf") == std::string::npos);
 }
