@@ -59,6 +59,9 @@ def qty(s):
 NUM = r"[-+0-9.eE]+"
 UNC = re.compile(r"(\w+) \+- (" + NUM + r") (\S+)(?: \(lsb\))? \(1 sigma; (?:ln-space|profile-likelihood "
                  r"1-sigma interval) (" + NUM + r") ?([^ .]*)\.\.(" + NUM + r") ?([^ ,;]*?)\)(?=,|$)")
+# an interval the record does not bound (model_writer.cpp, wider than e^20 either way)
+UNBOUNDED = re.compile(r"(\w+) \+- (" + NUM + r") (\S+)(?: \(lsb\))? \(1 sigma; (?:ln-space|profile-likelihood "
+                       r"1-sigma interval) not bounded by the record\)(?=,|$)")
 NAME_MAP = {"white": "density", "random_walk": "K", "flicker": "B", "lsb": "lsb", "sigma": "sigma",
             "tau": "tau", "drift": "slope", "quantization": "lsb"}
 
@@ -113,6 +116,10 @@ def parse_model(path, rate):
             uhi = m.group(7) or m.group(3)
             ulo = m.group(5) or uhi
             term["interval"][name] = (float(m.group(4)) * unit_factor(ulo), float(m.group(6)) * unit_factor(uhi))
+        for m in UNBOUNDED.finditer(last):
+            name = NAME_MAP.get(m.group(1), m.group(1))
+            term["sigma"][name] = float(m.group(2)) * unit_factor(m.group(3))
+            term["interval"][name] = (0.0, math.inf)
         out.append(term)
     return out, summary
 
