@@ -329,6 +329,9 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       const std::vector<double> &src = channelData(record, ci);
       std::vector<double> x(src.begin() + static_cast<std::ptrdiff_t>(skip),
                             src.end());
+      if (isConstantChannel(x))
+        throw InputError(record.source + ": channel " + c.name + " is constant: nothing to fit; leave it out: --axes " +
+                         otherChannels(record, ci, ","));
       AxisIdentification ax;
       ax.channel = c.name;
       ax.sensor = sensor;
@@ -349,9 +352,6 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       // The value lattice (0: none) and, for a quantization term, the lattice its rounding is on.
       const double lattice = latticeStep(x);
       const fit::RoundingLattice rounding{lattice * dt, 0.0, mean * dt};
-      if (!(ax.stddev > 0.0))
-        throw InputError(record.source + ": channel " + c.name + " is constant: nothing to fit; leave it out: --axes " +
-                         otherChannels(record, ci, ","));
 
       AllanOptions ao;
       ao.grid = TauGrid::Octave;

@@ -1,10 +1,8 @@
 #include "sim/analysis.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 
 #include <nlohmann/json.hpp>
 
@@ -42,7 +40,7 @@ ChannelStats channelStats(const std::string& name, const std::vector<double>& y,
   var /= static_cast<double>(y.size());
   c.mean = mean;
   c.sd = std::sqrt(var);
-  c.constant = std::adjacent_find(y.begin(), y.end(), std::not_equal_to<>()) == y.end();
+  c.constant = errormodels::isConstantChannel(y);
 
   // The paper's pipeline denoises before the ACF; the PSD is of the same (possibly denoised)
   // signal. Allan is always of the raw record: denoising would remove the very white noise

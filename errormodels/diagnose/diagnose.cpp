@@ -90,9 +90,7 @@ std::vector<int> channelsToDiagnose(const Record& record, const DiagnoseOptions&
   if (channels.empty())
     throw InputError(record.source + ": no gx/gy/gz/ax/ay/az column to diagnose; " + sensorColumnsHint(record));
   for (int c : channels) {
-    const std::vector<double>& x = channelData(record, c);
-    const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-    if (*lo == *hi)
+    if (isConstantChannel(channelData(record, c)))
       throw InputError(record.source + ": channel " + kRecordChannels[c].name +
                        " is constant: nothing to diagnose; leave it out: --channels " + otherChannels(record, c, " "));
   }

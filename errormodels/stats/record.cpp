@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <new>
 #include <sstream>
 
@@ -410,6 +411,10 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     if ((number & 0xffff) == 0) progress::checkpoint("reading " + source, at, text.size());
   }
   return reader.finish();
+}
+
+bool isConstantChannel(const std::vector<double>& x) {
+  return std::adjacent_find(x.begin(), x.end(), std::not_equal_to<>()) == x.end();
 }
 
 std::string sensorColumnsHint(const Record& record) {

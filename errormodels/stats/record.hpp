@@ -99,6 +99,10 @@ Record loadRecord(const std::string& path, const RecordOptions& options = {});
 /// in brackets: gx[deg/s]) or map them: --columns \"gx=gyro_x,gy=gyro_y,gz=gyro_z\"".
 std::string sensorColumnsHint(const Record& record);
 
+/// True when every sample of a channel has the same value (a dead or unconnected sensor): compared
+/// exactly, not through a variance, whose mean removal leaves ~1e-34 for a constant 0.1 deg/s.
+bool isConstantChannel(const std::vector<double>& x);
+
 /// The same parser on text already in memory; `source` names it in messages.
 Record parseRecord(std::string_view text, const std::string& source,
                    const RecordOptions& options = {});

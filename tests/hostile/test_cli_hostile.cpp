@@ -206,6 +206,14 @@ TEST_CASE("sinsim fit and diagnose: a dead channel among live ones is named with
                   d / "err") == 1);
   CHECK_THAT(slurp(d / "err"), Contains("channel gz is constant: nothing to diagnose; leave it out: --channels gx gy"));
   CHECK_FALSE(fs::exists(improved));
+  // A dead channel stuck at a value the mean cannot reproduce exactly (0.1: its variance after
+  // mean removal is ~1e-34, not 0) is named the same way, not left to fail deep in the fit.
+  std::string stuck = "gx,gy,gz\n";
+  for (int k = 0; k < 4000; ++k)
+    stuck += std::to_string((k * 7919 % 1000) / 1000.0) + "," + std::to_string((k * 104729 % 997) / 997.0) + ",0.1\n";
+  writeText(d / "stuck.csv", stuck);
+  CHECK(runSinsim("fit " + (d / "stuck.csv").string() + " --rate 100 --kind ar -o " + model.string(), d / "err") == 1);
+  CHECK_THAT(slurp(d / "err"), Contains("channel gz is constant: nothing to fit; leave it out: --axes gx,gy"));
   // analyze describes what is there, the dead channel included, and says it is dead: the table
   // shows no noise terms for it (not zeros read as a perfect sensor), stderr and the JSON say why.
   const fs::path json = d / "a.json";
