@@ -209,12 +209,9 @@ SlopeKernel slopeKernel(const std::vector<double>& h) {
     next = g[k];
   }
   K.quantization += next * next;
-  const std::size_t M = 4 * n;
-  const std::vector<double> G2 = transformPower(g, M);
-  for (std::size_t k = 1; k < G2.size(); ++k) {
-    const double w = 2.0 * kPi * double(k) / double(M);
-    K.flicker += (k == M / 2 ? 1.0 : 2.0) * G2[k] / w / double(M);  // S(w) = 1 / |w| at B^2 = 1
-  }
+  // S(w) = 1 / |w| at B^2 = 1, by the rule of a four-fold zero-padded transform (G(0) = 0: the
+  // weights sum to zero).
+  K.flicker = paddedPowerSum(g, 4, [](double w) { return 1.0 / w; }) / (4.0 * double(n));
   return K;
 }
 const SlopeKernel& slopeKernelCached(const std::vector<double>& h) {

@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -253,16 +254,41 @@ Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFractio
   return p;
 }
 
-std::vector<double> transformPower(const std::vector<double>& g, std::size_t M) {
-  if (M < g.size() || M < 2) throw InputError("transform power: M must be >= the sequence length and >= 2");
-  RealFft fft(M);
-  double* in = fft.in();
-  for (std::size_t k = 0; k < M; ++k) in[k] = k < g.size() ? g[k] : 0.0;
-  fft.forward();
-  const fftw_complex* c = fft.out();
-  std::vector<double> out(M / 2 + 1);
-  for (std::size_t k = 0; k <= M / 2; ++k) out[k] = c[k][0] * c[k][0] + c[k][1] * c[k][1];
-  return out;
+double paddedPowerSum(const std::vector<double>& g, std::size_t pad, const std::function<double(double)>& weight) {
+  const std::size_t n = g.size();
+  if (pad < 1 || n < 2) throw InputError("padded power sum: need pad >= 1 and at least 2 weights");
+  ComplexBuffer buf(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * n)));
+  if (!buf) throw NumericalError("FFT: out of memory for length " + std::to_string(n));
+  fftw_plan plan;
+  {
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    plan = fftw_plan_dft_1d(static_cast<int>(n), buf.get(), buf.get(), FFTW_FORWARD, FFTW_ESTIMATE);
+  }
+  const double M = double(pad) * double(n);
+  double sum = 0.0;
+  for (std::size_t r = 0; 2 * r <= pad; ++r) {
+    // Offset r / M of a cycle per sample: g_j e^{-i 2 pi r j / M}, the phase stepped by rotation
+    // and set afresh every 1024 samples (no drift of its modulus).
+    const double dw = -2.0 * kPi * double(r) / M;
+    const std::complex<double> step = std::polar(1.0, dw);
+    std::complex<double> z = 1.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      if ((j & 1023) == 0) z = std::polar(1.0, dw * double(j));
+      buf[j][0] = g[j] * z.real(), buf[j][1] = g[j] * z.imag();
+      z *= step;
+    }
+    fftw_execute(plan);
+    const double copies = (r == 0 || 2 * r == pad) ? 1.0 : 2.0;  // r and pad - r: the same |w|
+    for (std::size_t q = 0; q < n; ++q) {
+      const double k = double(pad) * double(q) + double(r);
+      if (k == 0.0) continue;
+      const double w = 2.0 * kPi * std::min(k, M - k) / M;
+      sum += copies * (buf[q][0] * buf[q][0] + buf[q][1] * buf[q][1]) * weight(w);
+    }
+  }
+  std::lock_guard<std::mutex> lock(plannerMutex());
+  fftw_destroy_plan(plan);
+  return sum;
 }
 
 }  // namespace sinsim::errormodels

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace sinsim::errormodels {
@@ -89,9 +90,12 @@ struct Periodogram {
 Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFraction,
                                Detrend detrend = Detrend::Mean);
 
-/// |G(w_k)|^2, G(w) = sum_k g_k e^{-i w k}, at w_k = 2 pi k / M, k = 0..M/2 (g zero-padded to M;
-/// M >= g.size()). With it, Var(sum g_k x_k) = (1/M) sum_{k=0}^{M-1} S(w_k) |G(w_k)|^2 for a
-/// stationary x of PSD S (spectrum.hpp's normalisation), to quadrature accuracy.
-std::vector<double> transformPower(const std::vector<double>& g, std::size_t M);
+/// sum_{k=1}^{M-1} |G(w_k)|^2 weight(|w_k|), G(w) = sum_j g_j e^{-i w j}, at w_k = 2 pi k / M
+/// wrapped into (-pi, pi], M = pad * g.size() (g zero-padded to M). With weight = S, the PSD of a
+/// stationary x (this file's normalisation), Var(sum g_j x_j) = (1/M) (this + S(0) |G(0)|^2) to
+/// quadrature accuracy. Computed as interleaved g.size()-point DFTs (k = pad q + r: the DFT of
+/// g_j e^{-i 2 pi r j / M}; r and pad - r give the same |w| for a real g), so the only buffer is
+/// g.size() complex values, not the M-point transform. Throws InputError for pad < 1 or g.size() < 2.
+double paddedPowerSum(const std::vector<double>& g, std::size_t pad, const std::function<double(double)>& weight);
 
 }  // namespace sinsim::errormodels

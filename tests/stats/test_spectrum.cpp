@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <complex>
 #include <random>
 #include <vector>
 
@@ -128,4 +129,36 @@ TEST_CASE("Welch PSD bad input and defaults", "[psd]") {
   const PowerSpectrum p = welchPsd(std::vector<double>(100000, 1.0), 1.0);
   CHECK(p.segment_length == 8192);  // largest power of two <= N / 8
   for (double v : p.psd) CHECK(v == 0.0);  // a constant has no power once its mean is removed
+}
+
+TEST_CASE("padded power sum equals the zero-padded DFT summed directly", "[psd][padded]") {
+  // Against G(w) = sum_j g_j e^{-i w j} evaluated term by term at every w_k = 2 pi k / M (no FFT),
+  // for odd and even lengths and paddings whose interleaved sets do and do not pair up (pad 1..5).
+  std::mt19937_64 rng(23);  // stream "padded-power"
+  std::normal_distribution<double> z(0.0, 1.0);
+  for (std::size_t n : {2u, 37u, 64u, 105u}) {
+    std::vector<double> g(n);
+    for (auto& v : g) v = z(rng);
+    for (std::size_t pad : {1u, 2u, 3u, 4u, 5u}) {
+      const std::size_t M = pad * n;
+      const auto weight = [](double w) { return 1.0 / w + 0.3 * w * w; };
+      double direct = 0.0, parseval = 0.0;
+      for (std::size_t k = 1; k < M; ++k) {
+        const double w = 2.0 * 3.141592653589793 * double(k) / double(M);
+        std::complex<double> G = 0.0;
+        for (std::size_t j = 0; j < n; ++j) G += g[j] * std::polar(1.0, -w * double(j));
+        direct += std::norm(G) * weight(w > 3.141592653589793 ? 2.0 * 3.141592653589793 - w : w);
+        parseval += std::norm(G);
+      }
+      const double sum = paddedPowerSum(g, pad, weight);
+      CHECK(sum == Approx(direct).epsilon(1e-11));
+      // Parseval on the M-point grid: sum_{k=1}^{M-1} |G_k|^2 = M sum g^2 - (sum g)^2, a closed form.
+      double s1 = 0.0, s2 = 0.0;
+      for (double v : g) s1 += v, s2 += v * v;
+      CHECK(paddedPowerSum(g, pad, [](double) { return 1.0; }) == Approx(double(M) * s2 - s1 * s1).epsilon(1e-11));
+      CHECK(parseval == Approx(double(M) * s2 - s1 * s1).epsilon(1e-11));
+    }
+  }
+  CHECK_THROWS_AS(paddedPowerSum(std::vector<double>(8, 1.0), 0, [](double) { return 1.0; }), sinsim::InputError);
+  CHECK_THROWS_AS(paddedPowerSum(std::vector<double>(1, 1.0), 4, [](double) { return 1.0; }), sinsim::InputError);
 }
