@@ -130,8 +130,9 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
 // The filter's model from a file (relative to the scenario) or an inline model map, read into an
 // ErrorModelSpec by the one model reader and converted by filterModelFromSpec; the problems of a
 // model file are recorded at filter.model with the model file's own line and key. `step`: the
-// filter step [s] (the GNSS interval, at most kMaxPropagationStep).
-void parseFilter(const ConfigNode& root, const std::string& baseDir, double step, FilterConfig& f) {
+// filter step [s] (the GNSS interval, at most kMaxPropagationStep); `imuRate` [Hz] the scenario's.
+void parseFilter(const ConfigNode& root, const std::string& baseDir, double step, double imuRate,
+                 FilterConfig& f) {
   const ConfigNode n = root["filter"];
   if (!n.exists()) return;
   n.allowKeys({"model"});
@@ -159,7 +160,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
     }
   }
   std::vector<Diagnostic> problems;
-  f.sensors = filterModelFromSpec(spec, step, problems);
+  f.sensors = filterModelFromSpec(spec, step, imuRate, problems);
   for (const Diagnostic& d : problems) m.error(d.str());
   f.enabled = problems.empty();
 }
@@ -178,12 +179,13 @@ bool GnssConfig::inOutage(double t) const {
   return false;
 }
 
-AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration) {
+AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration,
+                         double imuRate) {
   AidingConfig c;
   parseInitialErrors(root, c.initialErrors);
   parseAlignment(root, c.alignment);
   parseGnss(root, duration, c.gnss);
-  parseFilter(root, baseDir, std::min(1.0 / c.gnss.rate, kMaxPropagationStep), c.filter);
+  parseFilter(root, baseDir, std::min(1.0 / c.gnss.rate, kMaxPropagationStep), imuRate, c.filter);
   if (root.has("filter") && !c.gnss.enabled)
     root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
   if (c.gnss.enabled && !root.has("filter"))

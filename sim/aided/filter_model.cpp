@@ -5,6 +5,7 @@
 
 #include "common/limits.hpp"
 #include "errormodels/effect.hpp"
+#include "errormodels/effects/quantization.hpp"
 
 namespace sinsim::sim::aided {
 namespace {
@@ -14,7 +15,8 @@ using errormodels::EffectSpec;
 using errormodels::Sensor;
 
 const char* kSupported =
-    "white, bias, random_walk, gauss_markov, bias_instability, ar; scale_factor on the triad";
+    "white, bias, random_walk, gauss_markov, bias_instability, ar, quantization; scale_factor on the "
+    "triad";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
@@ -37,8 +39,23 @@ void addFlicker(const EffectSpec& e, double step, SensorAxisModel& axis) {
   }
 }
 
+// A quantization as the filter sees it, read by the effect's own rule (quantizationRule).
+// Carried (an increment LSB's default, dithered or not): the outputs' running sum is the inputs'
+// less the last remainder, within one step, so the integrated angle or velocity is off by a
+// bounded amount that does not grow: no state and no noise. Each sample rounded alone (a rate
+// LSB's default): on an input busier than the step (or dithered) the rounding errors are
+// independent and uniform on +-step/2, white noise of variance step^2/12 at the IMU rate:
+// N^2 += step^2 / (12 rate).
+void addQuantization(const EffectSpec& e, Sensor sensor, double imuRate, SensorAxisModel& axis) {
+  const errormodels::QuantizationRule r = errormodels::quantizationRule(
+      e, sensor == Sensor::gyro ? Dimension::angularRate() : Dimension::acceleration());
+  if (r.carry || !(std::isfinite(imuRate) && imuRate > 0.0)) return;  // a bad rate: the scenario's error
+  const double q = r.rateStep(imuRate);
+  axis.whiteDensity = std::hypot(axis.whiteDensity, q / std::sqrt(12.0 * imuRate));
+}
+
 // Adds one effect of an axis to the filter's model of that axis.
-void addEffect(const EffectSpec& e, double step, SensorAxisModel& axis,
+void addEffect(const EffectSpec& e, Sensor sensor, double step, double imuRate, SensorAxisModel& axis,
                std::vector<Diagnostic>& problems) {
   using errormodels::valueOr;
   try {
@@ -63,6 +80,8 @@ void addEffect(const EffectSpec& e, double step, SensorAxisModel& axis,
     } else if (e.type == "ar") {
       axis.blocks.push_back(arState(errormodels::valuesOf(e, "a"),
                                     errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));
+    } else if (e.type == "quantization") {
+      addQuantization(e, sensor, imuRate, axis);
     } else {
       problem(problems, e,
               std::string("the GNSS/INS filter has no states for this effect (it carries ") +
@@ -113,7 +132,7 @@ void addScaleFactors(const errormodels::SensorSpec& ss, Eigen::Vector3d& mean, E
 }  // namespace
 
 FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
-                                      std::vector<Diagnostic>& problems) {
+                                      double imuRate, std::vector<Diagnostic>& problems) {
   FilterSensorModel m;
   for (Sensor s : {Sensor::gyro, Sensor::accel}) {
     const errormodels::SensorSpec& ss = spec.sensor(s);
@@ -124,7 +143,7 @@ FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, d
       std::vector<Diagnostic> repeated;  // an `all` effect's problem is reported once, at x
       for (EffectList l : {EffectList::all, errormodels::axisList(axis)})
         for (const EffectSpec& e : ss.list(l))
-          if (e.enabled) addEffect(e, step, am, axis > 0 && l == EffectList::all ? repeated : problems);
+          if (e.enabled) addEffect(e, s, step, imuRate, am, axis > 0 && l == EffectList::all ? repeated : problems);
       if (scaleMean[axis] != 0.0 || scaleVar[axis] != 0.0) {  // after the axis's own states
         StateBlock b = scaleFactorState(std::sqrt(scaleVar[axis]));
         b.x0(0) = scaleMean[axis];
@@ -135,9 +154,10 @@ FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, d
   return m;
 }
 
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step) {
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
+                                      double imuRate) {
   std::vector<Diagnostic> problems;
-  FilterSensorModel m = filterModelFromSpec(spec, step, problems);
+  FilterSensorModel m = filterModelFromSpec(spec, step, imuRate, problems);
   if (!problems.empty()) throw ConfigError(problems);
   return m;
 }

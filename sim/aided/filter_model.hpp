@@ -13,12 +13,16 @@
 //                    state each; a component faster than the filter step enters as white noise of
 //                    its low-frequency density (N² += 2 σ² τ)
 //   ar             → p companion states at the model's own rate
+//   quantization   → no state (quantizationRule reads it as the effect does): carried, the
+//                    integrated output is within one step of the input's, no noise; each sample
+//                    rounded alone, white noise of variance step²/12 at the IMU rate
+//                    (N² += step² / (12 rate))
 //   scale_factor   → (triad, `value` or `diagonal`, optional `sigma`) 1 constant state per axis
 //                    with a mean or a sigma, prior mean the diagonal entry, prior sigma `sigma`;
 //                    after the axis's other states (several scale_factor effects add)
 // Disabled effects (`enabled: no`) are skipped. Every other effect (a scale_factor `matrix` with
 // off-diagonal entries, misalignment, g-sensitivity; ramp, sinusoid, temperature, warmup,
-// outliers, quantization) has no filter state here and is refused, naming
+// outliers) has no filter state here and is refused, naming
 // the model file, line and key.
 #pragma once
 
@@ -30,14 +34,15 @@
 
 namespace sinsim::sim::aided {
 
-/// The filter's sensor model of `spec` for a filter step of `step` [s] (the GNSS interval).
-/// Problems (effects the filter cannot represent) are appended to `problems` with the effect's
+/// The filter's sensor model of `spec` for a filter step of `step` [s] (the GNSS interval) and
+/// IMU samples at `imuRate` [Hz] (a per-sample rounding's white noise). Problems (effects the filter cannot represent) are appended to `problems` with the effect's
 /// file, line and key path; the returned model then holds the effects that could be converted.
 FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
-                                      std::vector<Diagnostic>& problems);
+                                      double imuRate, std::vector<Diagnostic>& problems);
 
 /// The same, throwing ConfigError with every problem when there is any.
-FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step);
+FilterSensorModel filterModelFromSpec(const errormodels::ErrorModelSpec& spec, double step,
+                                      double imuRate);
 
 /// Exact equality of two state blocks (every matrix entry, rate and name).
 bool operator==(const StateBlock& a, const StateBlock& b);

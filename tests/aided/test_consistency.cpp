@@ -172,7 +172,7 @@ accel:
     - {type: bias_instability, B: 3 mg, tau_range: [1 s, 100 s]}
 )";
   const FilterSensorModel fm =
-      filterModelFromSpec(errormodels::errorModelFromString(model, "flicker.yaml"), 1.0);
+      filterModelFromSpec(errormodels::errorModelFromString(model, "flicker.yaml"), 1.0, 100.0);
   // two components a decade over [1 s, 100 s] widened 1.5 decades each side: 10, 3 below 1 s
   REQUIRE(fm.gyro[0].blocks.size() == 7);
   const int runs = 200;

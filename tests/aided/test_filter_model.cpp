@@ -246,3 +246,34 @@ TEST_CASE("filter model: a sampled process slower than the filter's step is refu
     }
   }
 }
+
+TEST_CASE("filter model: a quantization adds white noise where each sample is rounded, nothing "
+          "where the remainder is carried") {
+  // A fitted model (`fit --kind latent`) can hold a quantization; the filter takes it as the
+  // effect reads its spec. At 100 Hz: a rate LSB of 0.05 deg/s, each sample rounded, is white
+  // noise of variance LSB²/12 per sample, density² = LSB² / (12 · 100 Hz), in quadrature with the
+  // axis's white (0.2 deg/sqrt(h)); the same LSB carried, and an increment LSB (carried by
+  // default, dithered or not), leave the axis as without it.
+  const auto dir = test::freshTempDir("sinsim-filter-model-quantization");
+  test::writeText(dir / "q.yaml", R"(gyro:
+  all: [{type: white, density: 0.2 deg/sqrt(h)}]
+  x: [{type: quantization, lsb: 0.05 deg/s}]
+  y: [{type: quantization, lsb: 0.05 deg/s, carry: yes}]
+  z: [{type: quantization, lsb: 0.0005 deg, dithered: yes}]
+accel:
+  x: [{type: quantization, lsb: 0.5 mg, dithered: yes}]
+  y: [{type: quantization, lsb: 0.00125 m/s}]
+)");
+  const sim::Scenario sc = sim::parseScenario(std::string(kScenario) + "filter: {model: q.yaml}\n",
+                                              "fm.yaml", dir.string());
+  const FilterSensorModel& m = sc.aiding.filter.sensors;
+  CHECK(m.stateCount() == 0);
+  const double d = kPi / 180.0, white = 0.2 * d / 60.0, lsb = 0.05 * d;
+  CHECK(m.gyro[0].whiteDensity * m.gyro[0].whiteDensity ==
+        Approx(white * white + lsb * lsb / (12.0 * 100.0)).epsilon(1e-12));
+  CHECK(m.gyro[1].whiteDensity == Approx(white).epsilon(1e-15));
+  CHECK(m.gyro[2].whiteDensity == Approx(white).epsilon(1e-15));
+  const double g = kStandardGravity * 0.5e-3;  // 0.5 mg, dithered, not carried: uniform on ±LSB/2 each sample
+  CHECK(m.accel[0].whiteDensity == Approx(g / std::sqrt(12.0 * 100.0)).epsilon(1e-12));
+  CHECK(m.accel[1].whiteDensity == 0.0);
+}

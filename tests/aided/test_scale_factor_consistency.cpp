@@ -105,7 +105,7 @@ TEST_CASE("scale-factor states, filter model = truth model: NEES in its band, th
   const auto scaleOnly = errormodels::ImuErrorModel::fromString(kScale, "scale.yaml");
   // The filter's model is the truth's, through the one converter.
   const FilterSensorModel fm =
-      filterModelFromSpec(errormodels::errorModelFromString(kModel, "f.yaml"), 1.0);
+      filterModelFromSpec(errormodels::errorModelFromString(kModel, "f.yaml"), 1.0, 100.0);
   REQUIRE(fm.stateCount() == 6 * 2 + 6);
   // The scale states: the last block of each axis (gyro x, y, z, accel x, y, z).
   int scaleIndex[6];
