@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/constants.hpp"
 #include "common/number_text.hpp"
 #include "errormodels/stats/special.hpp"
 #include "sim/aided/aided_navigation.hpp"
@@ -107,6 +108,23 @@ McOutageSummary outageSummary(const McBatch& batch, std::size_t m, std::size_t w
   return o;
 }
 
+// Epoch e's attitude errors over the runs that have a NEES there, counted into s: beyond
+// kSmallAngle, and the largest.
+void countAttitude(const McBatch& batch, std::size_t m, std::size_t e, McAidedSummary& s) {
+  const Reference& ref = batch.ref;
+  const std::size_t perRun = ref.runFloats();
+  for (std::uint64_t k = 0; k < batch.runs; ++k) {
+    const float* run = batch.errors[m].data() + k * perRun;
+    if (!std::isfinite(run[ref.epochs() * kErrorFields + e * kAidedEpochFields + kNees])) continue;
+    const float* err = run + e * kErrorFields;
+    const double a = std::max({std::abs(double(err[kRoll])), std::abs(double(err[kPitch])),
+                               std::abs(double(err[kYaw]))});
+    ++s.filterEpochs;
+    s.largeAttitudeEpochs += a > kSmallAngle ? 1 : 0;
+    if (!(a <= s.largestAttitude)) s.largestAttitude = a;  // NaN at first
+  }
+}
+
 // Model m's summary; outages.csv's and filter_consistency.csv's rows written when fo, fc are given.
 McAidedSummary summarize(const McBatch& batch, std::size_t m, std::FILE* fo, std::FILE* fc) {
   const Reference& ref = batch.ref;
@@ -129,6 +147,7 @@ McAidedSummary summarize(const McBatch& batch, std::size_t m, std::FILE* fo, std
         aided::writeCsvNumber(fc, "%.9g", v);
       std::fputc('\n', fc);
     }
+    if (c == 1 || c == 2) countAttitude(batch, m, e, s);
     if (c == 1) count(s.neesAiding, nees, sum[0]);
     if (c == 2) count(s.neesOutage, nees, sum[1]);
     if (nis.runs > 0) count(s.nisAiding, nis, sum[2]);
@@ -168,6 +187,17 @@ std::vector<std::string> McAidedSummary::sentences() const {
                   (above ? "under" : "over") + "states the errors (a consistent filter leaves more "
                   "than 20 % of the epochs outside with probability <= 5 %).");
   }
+  const double largeShare = filterEpochs ? double(largeAttitudeEpochs) / double(filterEpochs) : 0.0;
+  const bool overConfident = (neesAiding.epochs && neesAiding.fractionInside() < 0.8 &&
+                              neesAiding.meanOfAverages > neesDof) ||
+                             (neesOutage.epochs && neesOutage.fractionInside() < 0.8 &&
+                              neesOutage.meanOfAverages > neesDof);
+  if (overConfident && largeShare >= 0.05)
+    out.push_back(label + ": the attitude error exceeds " + significant(kSmallAngle * 180.0 / kPi, 2) +
+                  " deg at " + significant(100.0 * largeShare, 2) + " % of the runs' filter epochs " +
+                  "(largest " + significant(largestAttitude * 180.0 / kPi, 3) + " deg): beyond small " +
+                  "angles the error-state filter's linearisation, not only its model, sets the NEES, " +
+                  "which is then no test of the model alone.");
   for (const McOutageSummary& o : outages) {
     if (!o.runs) continue;
     out.push_back(label + ": outage " + significant(o.start, 6) + "-" + significant(o.end, 6) +
@@ -209,7 +239,12 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
     models.push_back({{"model", s.label},
                       {"outages", outages},
                       {"nees", {{"aiding", classJson(s.neesAiding)}, {"outage", classJson(s.neesOutage)}}},
-                      {"nis", {{"aiding", classJson(s.nisAiding)}}}});
+                      {"nis", {{"aiding", classJson(s.nisAiding)}}},
+                      {"attitude_beyond_small_angle",
+                       {{"threshold_deg", kSmallAngle * 180.0 / kPi},
+                        {"filter_epochs", s.filterEpochs},
+                        {"epochs_beyond", s.largeAttitudeEpochs},
+                        {"largest_deg", s.largestAttitude * 180.0 / kPi}}}});
   }
   files.push_back("outages.csv");
   files.push_back("filter_consistency.csv");

@@ -46,10 +46,18 @@ struct McAidedSummary {
   int neesDof = 9;  // aided::neesDof of the scenario's vertical channel
   std::vector<McOutageSummary> outages;
   McConsistencyClass neesAiding, neesOutage, nisAiding;
+  /// The runs' filter epochs (those with a NEES) and how many of them had an attitude error (roll,
+  /// pitch or yaw, nav - truth) beyond kSmallAngle, with the largest [rad] (NaN without epochs).
+  std::size_t filterEpochs = 0, largeAttitudeEpochs = 0;
+  double largestAttitude = NAN;
   /// The verdict in words: "consistent", or the class whose NEES lies above (over-confident) or
   /// below (pessimistic) its band at more than 20 % of the epochs, with the numbers.
   std::vector<std::string> sentences() const;
 };
+
+/// The attitude error [rad] beyond which the error-state filter's small-angle linearisation is
+/// named in the verdict (5 deg: the second-order terms reach ~4 % of the first).
+inline constexpr double kSmallAngle = 5.0 * 3.14159265358979323846 / 180.0;
 
 /// The summaries of the given models (the first `models` entries) of an aided batch.
 std::vector<McAidedSummary> mcAidedSummaries(const McBatch& batch, std::size_t models);
