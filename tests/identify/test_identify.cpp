@@ -536,3 +536,26 @@ TEST_CASE("ar+slow: AR(5) + random walk and AR(5) + slow GM, written as effects 
     (void)hi;
   }
 }
+
+TEST_CASE("a gyro record in deg/s read as rad/s is named, a plausible one is not", "[identify][units]") {
+  // ADIS16405 run 1 read without --gyro-unit: means 0.43, -0.40, -0.26 and sample sd ~0.37 per
+  // axis, deg/s taken for rad/s (a gyro of 20 deg/s noise and a 37 deg/s offset). Made here as
+  // white of 0.037 "rad/s/sqrt(Hz)" (sd 0.37 at 100 Hz) and biases of that size; the same record
+  // scaled to rad/s (white 0.037 deg/s/sqrt(Hz), biases in deg/s) draws no warning.
+  auto warned = [](const std::string& unit) {
+    const std::string model = "gyro:\n  all: [{type: white, density: 0.037 " + unit + "/sqrt(Hz)}]\n" +
+                              "  x: [{type: bias, value: 0.43 " + unit + "}]\n  y: [{type: bias, value: -0.40 " +
+                              unit + "}]\n  z: [{type: bias, value: -0.26 " + unit + "}]\n";
+    const Record r = staticRecord(model, 100.0, 600.0, 5);
+    IdentifyOptions o;
+    o.kind = IdentifyKind::Gm;
+    const auto id = identify(r, o);
+    for (const std::string& w : id.warnings)
+      if (w.find("did you forget --gyro-unit deg/s?") != std::string::npos) return w;
+    return std::string();
+  };
+  const std::string w = warned("rad/s");
+  INFO(w);
+  CHECK(w.find("gyro mean |w| = 0.64") != std::string::npos);  // |(0.43, -0.40, -0.26)| = 0.648
+  CHECK(warned("deg/s").empty());
+}
