@@ -213,38 +213,6 @@ void Identification::writeModel(const std::string& path) const {
 
 namespace {
 
-/// A static accelerometer reads |f| = g = 9.8 m/s^2. Means whose norm is 0.5..1.5 "m/s^2" (or a
-/// single axis mean of that size when only one is fitted) are g units read as m/s^2.
-void warnAccelUnit(Identification& id) {
-  double s2 = 0.0;
-  int count = 0;
-  for (const auto& a : id.axes)
-    if (a.sensor == fit::SensorSignal::Accel) s2 += a.mean * a.mean, ++count;
-  const double norm = std::sqrt(s2);
-  if (count > 0 && norm > 0.5 && norm < 1.5)
-    id.warnings.push_back("accelerometer mean |f| = " + significant(norm, 4) +
-                          " m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?");
-}
-
-/// A static gyro reads Earth rate (7.3e-5 rad/s) plus its bias, within a few deg/s even for
-/// consumer MEMS, with a sample sd well below 1 deg/s. Means whose norm exceeds 0.5 "rad/s"
-/// (28.6 deg/s) or a median sample sd above 0.05 "rad/s" (2.9 deg/s) are deg/s read as rad/s
-/// (ADIS16405 run 1 without --gyro-unit: 0.64 and 0.37).
-void warnGyroUnit(Identification& id) {
-  double s2 = 0.0;
-  std::vector<double> sd;
-  for (const auto& a : id.axes)
-    if (a.sensor == fit::SensorSignal::Gyro) s2 += a.mean * a.mean, sd.push_back(a.stddev);
-  if (sd.empty()) return;
-  std::sort(sd.begin(), sd.end());
-  const double norm = std::sqrt(s2), median = sd[sd.size() / 2];
-  if (norm > 0.5 || median > 0.05)
-    id.warnings.push_back("gyro mean |w| = " + significant(norm, 3) + " rad/s, sample sd " +
-                          significant(median, 3) + " rad/s in a static record (Earth rate is 7.3e-5 "
-                          "rad/s, a gyro's bias and noise are degrees per second at most): did you "
-                          "forget --gyro-unit deg/s?");
-}
-
 /// The quantization Q [SI s] the written model holds (0: none).
 double writtenQuantization(const fit::AxisFitResult& w) {
   if (w.latent) return w.latent->model.quantization;
@@ -549,8 +517,7 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
     out.warnings.insert(out.warnings.end(), warnings[k].begin(),
                         warnings[k].end());
   }
-  warnAccelUnit(out);
-  warnGyroUnit(out);
+  for (std::string& w : unitWarnings(record)) out.warnings.push_back(std::move(w));
   return out;
 }
 

@@ -14,6 +14,7 @@
 
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/number_text.hpp"
 #include "common/progress.hpp"
 #include "common/read_file.hpp"
 #include "common/text.hpp"
@@ -411,6 +412,46 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     if ((number & 0xffff) == 0) progress::checkpoint("reading " + source, at, text.size());
   }
   return reader.finish();
+}
+
+namespace {
+
+/// The mean and the sample sd of x (two passes).
+std::pair<double, double> meanAndSd(const std::vector<double>& x) {
+  double m = 0.0, v = 0.0;
+  for (double a : x) m += a;
+  m /= double(x.size());
+  for (double a : x) v += (a - m) * (a - m);
+  return {m, std::sqrt(v / double(x.size()))};
+}
+
+}  // namespace
+
+std::vector<std::string> unitWarnings(const Record& record) {
+  std::vector<std::string> out;
+  double g2 = 0.0, f2 = 0.0;
+  std::vector<double> gyroSd;
+  int accelAxes = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (!record.gyro[i].empty()) {
+      const auto [m, sd] = meanAndSd(record.gyro[i]);
+      g2 += m * m, gyroSd.push_back(sd);
+    }
+    if (!record.accel[i].empty()) f2 += std::pow(meanAndSd(record.accel[i]).first, 2), ++accelAxes;
+  }
+  const double f = std::sqrt(f2);
+  if (accelAxes > 0 && f > 0.5 && f < 1.5)
+    out.push_back("accelerometer mean |f| = " + significant(f, 4) +
+                  " m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?");
+  if (!gyroSd.empty()) {
+    std::sort(gyroSd.begin(), gyroSd.end());
+    const double w = std::sqrt(g2), sd = gyroSd[gyroSd.size() / 2];
+    if (w > 0.5 || sd > 0.05)
+      out.push_back("gyro mean |w| = " + significant(w, 3) + " rad/s, sample sd " + significant(sd, 3) +
+                    " rad/s in a static record (Earth rate is 7.3e-5 rad/s, a gyro's bias and noise "
+                    "are degrees per second at most): did you forget --gyro-unit deg/s?");
+  }
+  return out;
 }
 
 bool isConstantChannel(const std::vector<double>& x) {

@@ -103,6 +103,13 @@ std::string sensorColumnsHint(const Record& record);
 /// exactly, not through a variance, whose mean removal leaves ~1e-34 for a constant 0.1 deg/s.
 bool isConstantChannel(const std::vector<double>& x);
 
+/// Warnings that a static record's units were probably not given (the record read as SI): a static
+/// accelerometer reads |f| = g, so means of norm 0.5..1.5 "m/s^2" are g read as m/s^2; a static gyro
+/// reads Earth rate (7.3e-5 rad/s) plus a bias of degrees per second at most, with a sample sd well
+/// below 1 deg/s, so means of norm above 0.5 "rad/s" or a median sample sd above 0.05 "rad/s" are
+/// deg/s read as rad/s. Over the channels present; empty when nothing looks wrong.
+std::vector<std::string> unitWarnings(const Record& record);
+
 /// The same parser on text already in memory; `source` names it in messages.
 Record parseRecord(std::string_view text, const std::string& source,
                    const RecordOptions& options = {});

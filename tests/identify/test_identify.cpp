@@ -556,6 +556,6 @@ TEST_CASE("a gyro record in deg/s read as rad/s is named, a plausible one is not
   };
   const std::string w = warned("rad/s");
   INFO(w);
-  CHECK(w.find("gyro mean |w| = 0.64") != std::string::npos);  // |(0.43, -0.40, -0.26)| = 0.648
+  CHECK(w.find("gyro mean |w| = 0.64") != std::string::npos);  // |(0.43, -0.40, -0.26)| = 0.642
   CHECK(warned("deg/s").empty());
 }

@@ -287,3 +287,33 @@ TEST_CASE("a record without sensor columns: the hint lists its columns and a map
   CHECK(seven.find("--columns \"gx=NAME,gy=NAME,gz=NAME,ax=NAME,ay=NAME,az=NAME\"") != std::string::npos);
   CHECK(seven.find("gx=stamp") == std::string::npos);
 }
+
+TEST_CASE("record: a static record's units that look forgotten are named", "[record][units]") {
+  // 200 rows of a static IMU as an ADIS16405 writes it: gyro in deg/s (offsets 0.43, -0.40, -0.26,
+  // alternating +-0.35 about them), accelerometer in g (az = -1.0).
+  std::string text = "gx,gy,gz,ax,ay,az\n";
+  for (int k = 0; k < 200; ++k) {
+    const double s = k % 2 ? 0.35 : -0.35;
+    text += std::to_string(0.43 + s) + "," + std::to_string(-0.40 - s) + "," + std::to_string(-0.26 + s) +
+            "," + std::to_string(0.001 * s) + ",0.002,-1.0\n";
+  }
+  RecordOptions o;
+  o.rate_hz = 100.0;
+  auto has = [](const std::vector<std::string>& w, const std::string& what) {
+    for (const std::string& x : w)
+      if (x.find(what) != std::string::npos) return true;
+    return false;
+  };
+  const auto raw = unitWarnings(parseRecord(text, "adis.csv", o));
+  CHECK(raw.size() == 2);
+  CHECK(has(raw, "accelerometer mean |f| = 1 m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?"));
+  CHECK(has(raw, "gyro mean |w| = 0.642 rad/s, sample sd 0.35 rad/s"));
+  CHECK(has(raw, "did you forget --gyro-unit deg/s?"));
+  o.gyro_unit = "deg/s";
+  o.accel_unit = "g";
+  CHECK(unitWarnings(parseRecord(text, "adis.csv", o)).empty());
+  // A gyro-only record in rad/s of a real MEMS (bias 0.01 rad/s, sd 0.005 rad/s): nothing.
+  std::string mems = "gx\n";
+  for (int k = 0; k < 100; ++k) mems += std::to_string(0.01 + (k % 2 ? 0.005 : -0.005)) + "\n";
+  CHECK(unitWarnings(parseRecord(mems, "mems.csv", o)).empty());
+}
