@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
+#include "errormodels/stats/record.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/nav_loop.hpp"
 #include "sim/reference.hpp"
@@ -57,6 +58,8 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.samples = ref.samples.size();
   if (!ref.aiding.inert())
     batch.warnings = aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
+  if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
+    for (std::string& w : errormodels::unitWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (batch.result.complete && opt.partition.rank == 0)
     batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times);
   return batch;

@@ -112,5 +112,15 @@ TEST_CASE("sinsim mc --measured: the ADIS16405 record against two models, end to
   // 121 epochs (0..120 s at 1 Hz) plus the header.
   const std::string csv = mctest::slurp(tmp / "out" / "measured.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 122);
+  CHECK(r.err.find("did you forget") == std::string::npos);
+  // The same record without the unit options navigates g as m/s^2 and deg/s as rad/s: said.
+  const mctest::Result bare = mctest::sinsim(
+      "mc --measured '" + data + "' --rate 100 --duration 120 --bias-window 20 --runs 4 --model '" +
+      mctest::sourceDir() + "/scenarios/grade-consumer.yaml' -o '" + (tmp / "bare").string() + "'", tmp);
+  INFO(bare.err);
+  CHECK(bare.exitCode == 0);
+  CHECK(bare.err.find("sinsim mc: warning: accelerometer mean |f| = 1.0") != std::string::npos);
+  CHECK(bare.err.find("did you forget --accel-unit g?") != std::string::npos);
+  CHECK(bare.err.find("did you forget --gyro-unit deg/s?") != std::string::npos);
   mctest::fs::remove_all(tmp);
 }
