@@ -2,6 +2,7 @@
 // Exit codes: 0 success, 1 bad input or failed run (message on stderr), 2 bad command line,
 // 130 interrupted (Ctrl-C).
 #include <cerrno>
+#include <climits>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
@@ -12,7 +13,21 @@
 #include "common/error.hpp"
 #include "common/progress.hpp"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // A command allocates and frees record-sized buffers (channels, FFT work, Allan sums) many times.
+  // glibc serves each beyond its dynamic threshold from a fresh mmap, whose pages fault in and are
+  // zeroed again at every use: 38 % of a 2-h 1 kHz 6-channel fit's samples, 8 s of system time.
+  // Heap them (up to 1 GiB; a worker thread's arena still maps those beyond 64 MiB) and keep freed
+  // memory for the next: that fit 18-20 -> 11-14 s, `analyze` of it 12-15 -> 6-7 s, peak memory
+  // +11-14 % (docs/benchmarks.md, "Allocator").
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, INT_MAX);
+#endif
   // Beyond a file size limit (ulimit -f) a write fails with EFBIG and is reported with the file's
   // name, instead of SIGXFSZ killing the process without a word.
   std::signal(SIGXFSZ, SIG_IGN);
