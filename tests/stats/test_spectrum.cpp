@@ -11,12 +11,22 @@
 
 using namespace sinsim::errormodels;
 
+namespace {
+
+/// n draws of d from rng.
+std::vector<double> draws(std::mt19937_64& rng, std::normal_distribution<double>& d, std::size_t n) {
+  std::vector<double> x(n);
+  for (auto& v : x) v = d(rng);
+  return x;
+}
+
+}  // namespace
+
 TEST_CASE("FFT autocorrelation equals the direct sum (no circular wrap)", "[acf]") {
   std::mt19937_64 rng(11);  // stream "acf-fft"
   std::normal_distribution<double> g(3.0, 2.0);
   for (std::size_t n : {2u, 7u, 1000u, 4097u}) {
-    std::vector<double> x(n);
-    for (auto& v : x) v = g(rng);
+    const std::vector<double> x = draws(rng, g, n);
     const std::size_t lags = n - 1;  // every lag, including the last with a single product
     const Autocorrelation d = autocorrelation(x, 50.0, lags, AcfScaling::Biased, AcfMethod::Direct);
     const Autocorrelation f = autocorrelation(x, 50.0, lags, AcfScaling::Biased, AcfMethod::Fft);
@@ -137,8 +147,7 @@ TEST_CASE("padded power sum equals the zero-padded DFT summed directly", "[psd][
   std::mt19937_64 rng(23);  // stream "padded-power"
   std::normal_distribution<double> z(0.0, 1.0);
   for (std::size_t n : {2u, 37u, 64u, 105u}) {
-    std::vector<double> g(n);
-    for (auto& v : g) v = z(rng);
+    const std::vector<double> g = draws(rng, z, n);
     for (std::size_t pad : {1u, 2u, 3u, 4u, 5u}) {
       const std::size_t M = pad * n;
       const auto weight = [](double w) { return 1.0 / w + 0.3 * w * w; };
