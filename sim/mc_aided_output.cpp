@@ -175,9 +175,11 @@ std::vector<std::string> McAidedSummary::sentences() const {
   if (neesOutage.epochs) text += " and " + cls("outage", neesOutage);
   if (nisAiding.epochs) text += "; the NIS at " + cls("aiding", nisAiding);
   out.push_back(text + ".");
+  bool overConfident = false;  // in either class: what the attitude sentence below qualifies
   for (const auto* c : {&neesAiding, &neesOutage}) {
     if (!(c->epochs && c->fractionInside() < 0.8)) continue;
     const bool above = c->meanOfAverages > neesDof;
+    overConfident = overConfident || above;
     out.push_back(label + ": " + (c == &neesAiding ? "while aided" : "in outages") +
                   " the NEES lies outside its band at " + std::to_string(c->epochs - c->inside) +
                   "/" + std::to_string(c->epochs) + " epochs, " + (above ? "above" : "below") +
@@ -188,14 +190,10 @@ std::vector<std::string> McAidedSummary::sentences() const {
                   "than 20 % of the epochs outside with probability <= 5 %).");
   }
   const double largeShare = filterEpochs ? double(largeAttitudeEpochs) / double(filterEpochs) : 0.0;
-  const bool overConfident = (neesAiding.epochs && neesAiding.fractionInside() < 0.8 &&
-                              neesAiding.meanOfAverages > neesDof) ||
-                             (neesOutage.epochs && neesOutage.fractionInside() < 0.8 &&
-                              neesOutage.meanOfAverages > neesDof);
   if (overConfident && largeShare >= 0.05)
-    out.push_back(label + ": the attitude error exceeds " + significant(kSmallAngle * 180.0 / kPi, 2) +
+    out.push_back(label + ": the attitude error exceeds " + significant(radToDeg(kSmallAngle), 2) +
                   " deg at " + significant(100.0 * largeShare, 2) + " % of the runs' filter epochs " +
-                  "(largest " + significant(largestAttitude * 180.0 / kPi, 3) + " deg): beyond small " +
+                  "(largest " + significant(radToDeg(largestAttitude), 3) + " deg): beyond small " +
                   "angles the error-state filter's linearisation, not only its model, sets the NEES, " +
                   "which is then no test of the model alone.");
   for (const McOutageSummary& o : outages) {
@@ -241,10 +239,10 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
                       {"nees", {{"aiding", classJson(s.neesAiding)}, {"outage", classJson(s.neesOutage)}}},
                       {"nis", {{"aiding", classJson(s.nisAiding)}}},
                       {"attitude_beyond_small_angle",
-                       {{"threshold_deg", kSmallAngle * 180.0 / kPi},
+                       {{"threshold_deg", radToDeg(kSmallAngle)},
                         {"filter_epochs", s.filterEpochs},
                         {"epochs_beyond", s.largeAttitudeEpochs},
-                        {"largest_deg", s.largestAttitude * 180.0 / kPi}}}});
+                        {"largest_deg", radToDeg(s.largestAttitude)}}}});
   }
   files.push_back("outages.csv");
   files.push_back("filter_consistency.csv");

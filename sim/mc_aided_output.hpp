@@ -18,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/constants.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/output.hpp"
 
@@ -57,7 +58,7 @@ struct McAidedSummary {
 
 /// The attitude error [rad] beyond which the error-state filter's small-angle linearisation is
 /// named in the verdict (5 deg: the second-order terms reach ~4 % of the first).
-inline constexpr double kSmallAngle = 5.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kSmallAngle = 5.0 * kRadPerDeg;
 
 /// The summaries of the given models (the first `models` entries) of an aided batch.
 std::vector<McAidedSummary> mcAidedSummaries(const McBatch& batch, std::size_t models);

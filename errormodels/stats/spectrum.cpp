@@ -279,9 +279,8 @@ double paddedPowerSum(const std::vector<double>& g, std::size_t pad, const std::
     }
     fftw_execute(plan);
     const double copies = (r == 0 || 2 * r == pad) ? 1.0 : 2.0;  // r and pad - r: the same |w|
-    for (std::size_t q = 0; q < n; ++q) {
+    for (std::size_t q = r == 0 ? 1 : 0; q < n; ++q) {  // k = 0 (w = 0) left out
       const double k = double(pad) * double(q) + double(r);
-      if (k == 0.0) continue;
       const double w = 2.0 * kPi * std::min(k, M - k) / M;
       sum += copies * (buf[q][0] * buf[q][0] + buf[q][1] * buf[q][1]) * weight(w);
     }
