@@ -227,7 +227,13 @@ int runMc(const Args& a) {
     if (rank != 0 || a.noProgress) endProgressLine();
     opt.interrupt = &progress::interruptFlag();
     opt.onProgress = [](const sim::McProgress& p) { progress::update("runs", p.runsDone, p.runsTotal); };
-    const sim::McCommandResult batch = sim::runMcBatch(req);
+    const sim::McCommandResult batch = [&] {
+      try {
+        return sim::runMcBatch(req);
+      } catch (const MotionError& e) {
+        throw InputError(req.scenarioPath + ": " + e.what());
+      }
+    }();
     endProgressLine();
     printBatch(batch, size);
     return batch.result.complete ? 0 : 130;

@@ -86,6 +86,8 @@ void addRunCommand(CLI::App& app, Action& action) {
         } catch (const NumericalError& e) {  // "the navigation state became non-finite": say where
           throw NumericalError(file + (opt.model ? " with model " + *opt.model : "") + ": " +
                                e.what());
+        } catch (const MotionError& e) {
+          throw InputError(file + ": " + e.what());
         }
       }();
       endProgressLine();

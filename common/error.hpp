@@ -41,6 +41,13 @@ class ConfigError : public InputError {
   std::vector<Diagnostic> diagnostics_;
 };
 
+/// A scenario's motion that leaves what the simulation holds, found while simulating it (the
+/// trajectory reaching a pole); the command that named the scenario adds its file.
+class MotionError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// A numerical or internal condition that should not happen with valid input.
 class NumericalError : public Error {
  public:

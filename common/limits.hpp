@@ -41,6 +41,9 @@ constexpr double kMinSegmentDuration = 1e-5;
 /// Largest sample count of a simulated signal (duration × rate): ~4 min of a 2-core machine
 /// per 1e8 strapdown steps; 10 days at 100 Hz is 8.64e7.
 constexpr double kMaxSamples = 1e8;
+/// [rad] Largest |latitude| of a start or of the motion: the NED frame (lon' = vE / ((N + h)
+/// cos lat)) is singular at the poles.
+constexpr double kMaxLatitude = 89.0 * kRadPerDeg;
 /// Largest number of segments after expanding every `repeat`: laying out and integrating a
 /// segment costs ~2 µs, and 1,000,000 segments from two nested repeats of a 100-byte file took
 /// 2.3 s of CPU before the first IMU sample (10 s under the sanitizers).

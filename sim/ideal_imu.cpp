@@ -71,6 +71,13 @@ nav::ImuSample IdealImu::next() {
     }
     a = b;
   }
+  // The NED frame (lon' = vE / ((N + h) cos lat)) is singular at the poles: the start is
+  // checked against the same limit (scenario.cpp), the motion here.
+  if (!(std::abs(p.x()) <= limits::kMaxLatitude))
+    throw MotionError("the trajectory reaches latitude " + limits::fmt(p.x() * kDegPerRad, 9) +
+                     " deg at t = " + limits::fmt(tEnd, 9) +
+                     " s: the navigation frame (NED) is singular at the poles; keep the motion "
+                     "within ±89 deg (docs/limits.md)");
   ++k_;
   const MotionPoint m = motion.at(tEnd);
   truth_.t = tEnd;

@@ -7,6 +7,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "nav/attitude.hpp"
 
 namespace sinsim::sim {
@@ -25,8 +26,7 @@ nav::Vec3 levelAttitude(const errormodels::Record& record, std::size_t n, double
 Scenario staticScenario(const std::string& name, const MotionStart& start, double imuRate,
                         double outputRate, const nav::StrapdownOptions& strapdown,
                         double duration) {
-  constexpr double kMaxLatitude = 89.0 * kRadPerDeg;  // as the scenario file's start.latitude
-  if (!(std::isfinite(start.lat) && std::abs(start.lat) <= kMaxLatitude))
+  if (!(std::isfinite(start.lat) && std::abs(start.lat) <= limits::kMaxLatitude))
     throw InputError(name + ": expected a latitude within ±89 deg (the NED frame is singular at "
                      "the poles)");
   if (!(std::isfinite(start.lon) && std::isfinite(start.h) && std::isfinite(start.roll) &&

@@ -16,9 +16,6 @@ namespace {
 namespace fs = std::filesystem;
 using D = Dimension;
 
-// |latitude| limit: lon' = vE/((N+h) cos lat) is singular at the poles.
-constexpr double kMaxLatitude = 89.0 * kRadPerDeg;
-
 void parseStart(const ConfigNode& root, Scenario& sc) {
   const ConfigNode s = root.require("start");
   if (!s.exists()) return;
@@ -26,7 +23,7 @@ void parseStart(const ConfigNode& root, Scenario& sc) {
   MotionStart& m = sc.start;
   m.lat = s.quantity("latitude", D::angle());
   if (std::isfinite(m.lat))
-    s["latitude"].check(std::abs(m.lat) <= kMaxLatitude,
+    s["latitude"].check(std::abs(m.lat) <= limits::kMaxLatitude,
                         "expected a latitude within ±89 deg (the NED frame is singular at the poles)");
   m.lon = s.quantity("longitude", D::angle());
   if (std::isfinite(m.lon)) m.lon = nav::wrapAngle(m.lon);

@@ -75,6 +75,34 @@ TEST_CASE("sinsim run: bad scenarios exit 1 naming file, line and key, and write
   fs::remove_all(tmp);
 }
 
+TEST_CASE("sinsim run and mc: a flight over the pole stops where it reaches 89 deg, naming the file") {
+  // The start is inside ±89°; the motion leaves it after 1.1° of northing (the NED frame is
+  // singular at the poles): 250 m/s north from 88.9° reaches 89° at about 44.7 s.
+  const fs::path tmp = tempDir("pole");
+  const fs::path scenario = tmp / "pole.yaml";
+  std::ofstream(scenario) << R"(name: pole
+start: {latitude: 88.9 deg, longitude: 10 deg, height: 10000 m, heading: 0 deg, speed: 250 m/s}
+imu_rate: 100 Hz
+output_rate: 1 Hz
+vertical: held
+errors: none
+segments:
+  - {type: cruise, duration: 120 s}
+)";
+  for (const std::string command : {"run", "mc"}) {
+    const fs::path out = tmp / ("out-" + command);
+    const Result r = sinsim(command + " '" + scenario.string() + "' -o '" + out.string() + "'" +
+                                (command == "mc" ? " --runs 2 --model none" : ""),
+                            tmp);
+    INFO(command << " stderr: " << r.err);
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.find(scenario.string() + ": the trajectory reaches latitude 89") != std::string::npos);
+    CHECK(r.err.find(" s: the navigation frame (NED) is singular at the poles") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+  }
+  fs::remove_all(tmp);
+}
+
 TEST_CASE("sinsim run: a good scenario, overrides, and a bad model or option") {
   const fs::path tmp = tempDir("good");
   const std::string scenario = "'" + kFixtures + "good_short.yaml'";
