@@ -103,6 +103,7 @@ AidedNavigation::AidedNavigation(const nav::Earth& earth, const AidingConfig& co
     : earth_(&earth),
       config_(config),
       filter_(earth, std::move(model), filterOptions(config, strapdownOptions)),
+      known_(config.filter.knownAdded, config.filter.knownLinear, config.filter.imuRate),
       sdOptions_(strapdownOptions),
       posNoise_(key.seed, key.run, errormodels::streamId(2, 1, 0)),
       velNoise_(key.seed, key.run, errormodels::streamId(2, 2, 0)) {
@@ -192,17 +193,28 @@ void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
   sd.correct(c.segment<3>(0), c.segment<3>(3), c.segment<3>(6));
 }
 
-nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& m) const {
-  if (!aligned_ || !config_.filter.enabled) return m;
-  // The increments' errors b dt + diag(s) u of the measured u (first order in dt and in the scale
-  // errors). Nothing estimated, nothing touched: a filter without fixes (and zero prior means)
-  // leaves the navigation bit-identical to the free-inertial run.
+nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured) {
+  if (!config_.filter.enabled) return measured;
+  const nav::ImuSample c = compensate(measured, measured.dv_b);
+  // A known g-sensitivity again, of the compensated specific force (the sensor's is of the true
+  // one: the accelerometers' own errors times it are milli-g times deg/s/g).
+  return known_.sensesForce() ? compensate(measured, c.dv_b) : c;
+}
+
+nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, const nav::Vec3& dv) {
+  // The reverse of the sensor's order (known_errors.hpp): the known added errors, the estimated
+  // bias, then the known misalignment and the estimated scale errors (b dt + diag(s) u: first
+  // order in dt and in the scale errors). Nothing known or estimated, nothing touched: a filter
+  // without fixes (and zero prior means) leaves the navigation bit-identical to the free run.
+  const nav::ImuSample m = known_.withoutAdded(measured, dv);
+  if (!aligned_) return known_.withoutLinear(m);
   const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
   nav::ImuSample c = m;
   if (!(bg.isZero() && ba.isZero())) {
     c.dtheta_b -= bg * m.dt;
     c.dv_b -= ba * m.dt;
   }
+  c = known_.withoutLinear(c);
   if (filter_.hasScaleStates()) {
     c.dtheta_b -= filter_.gyroScale().cwiseProduct(m.dtheta_b);
     c.dv_b -= filter_.accelScale().cwiseProduct(m.dv_b);

@@ -4,6 +4,8 @@
 // integrates and then calls afterInterval with it; what it leaves in the strapdown is the
 // navigation solution.
 //
+// Known errors of the filter's model (misalignment, g-sensitivity, ramp, ...; known_errors.hpp)
+// are removed from every measured sample first, as an INS's calibration would.
 // Closed loop: the filter's sensor-error estimate is removed from each measured increment before
 // the strapdown integrates it (first order in dt: dθ −= b̂_g dt + ŝ_g ∘ dθ, dv −= b̂_a dt + ŝ_a ∘ dv,
 // ŝ the scale-factor estimates), as an INS compensates its IMU, and each update's δr, δv, ψ are
@@ -26,6 +28,7 @@
 #include "nav/strapdown.hpp"
 #include "sim/aided/aiding_config.hpp"
 #include "sim/aided/error_state_filter.hpp"
+#include "sim/aided/known_errors.hpp"
 
 namespace sinsim::sim::aided {
 
@@ -83,15 +86,18 @@ class AidedNavigation {
   /// simulated from them). Returns the epoch's filter view.
   FilterEpoch afterInterval(const nav::ImuSample& measured, const nav::ImuSample& ideal,
                             const nav::NavState& truth, nav::Strapdown& strapdown);
-  /// The sample the strapdown integrates: `measured` less the filter's current sensor-error
-  /// estimate (the continuous blocks'; unchanged before the alignment ends, without a filter, or
-  /// while nothing is estimated). afterInterval is then called with the returned sample.
-  nav::ImuSample compensate(const nav::ImuSample& measured) const;
+  /// The sample the strapdown integrates: `measured` less the filter model's known errors (from
+  /// the first sample on, alignment included) and less the filter's current sensor-error estimate
+  /// (the continuous blocks'; not before the alignment ends, without a filter, or while nothing is
+  /// estimated). afterInterval is then called with the returned sample.
+  nav::ImuSample compensate(const nav::ImuSample& measured);
 
   const std::vector<OutageResult>& outages() const { return outages_; }
   const ErrorStateFilter& filter() const { return filter_; }
 
  private:
+  // compensate() with the known g-sensitivity of the specific force's increment dv [m/s].
+  nav::ImuSample compensate(const nav::ImuSample& measured, const nav::Vec3& dv);
   void propagateStep(nav::Strapdown& sd);
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)
@@ -102,6 +108,7 @@ class AidedNavigation {
   const nav::Earth* earth_;
   AidingConfig config_;
   ErrorStateFilter filter_;
+  KnownErrors known_;  // the filter model's known errors (known_errors.hpp)
   nav::StrapdownOptions sdOptions_;
   Eigen::Matrix<double, 9, 1> initialError_;  // drawn once: δr_n, δv_n, roll/pitch/yaw
   errormodels::NormalStream posNoise_, velNoise_;

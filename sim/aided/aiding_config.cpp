@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "errormodels/model_io.hpp"
 #include "sim/aided/filter_model.hpp"
+#include "sim/aided/known_errors.hpp"
 
 namespace sinsim::sim::aided {
 namespace {
@@ -161,6 +162,13 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
   }
   std::vector<Diagnostic> problems;
   f.sensors = filterModelFromSpec(spec, step, imuRate, problems);
+  try {
+    f.knownAdded = errormodels::ImuErrorModel::fromSpec(knownPart(spec, false), f.model);
+    f.knownLinear = errormodels::ImuErrorModel::fromSpec(knownPart(spec, true), f.model);
+  } catch (const ConfigError& e) {
+    problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
+  }
+  f.imuRate = imuRate;
   for (const Diagnostic& d : problems) m.error(d.str());
   f.enabled = problems.empty();
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/config.hpp"
+#include "errormodels/imu_model.hpp"
 #include "nav/types.hpp"
 #include "sim/aided/error_state_filter.hpp"
 
@@ -68,6 +69,10 @@ struct FilterConfig {
   bool enabled = false;
   std::string model;           // the model file's path (resolved against the scenario), or "inline"
   FilterSensorModel sensors;   // its sensor-error states (filter_model.hpp)
+  // its known errors, compensated (known_errors.hpp): added and linear; the IMU rate [Hz]
+  errormodels::ImuErrorModel knownAdded = errormodels::ImuErrorModel::none();
+  errormodels::ImuErrorModel knownLinear = errormodels::ImuErrorModel::none();
+  double imuRate = 0.0;
 };
 
 struct AidingConfig {

@@ -6,6 +6,7 @@
 #include "common/limits.hpp"
 #include "errormodels/effect.hpp"
 #include "errormodels/effects/quantization.hpp"
+#include "sim/aided/known_errors.hpp"
 
 namespace sinsim::sim::aided {
 namespace {
@@ -16,7 +17,7 @@ using errormodels::Sensor;
 
 const char* kSupported =
     "white, bias, random_walk, gauss_markov, bias_instability, ar, quantization; scale_factor on the "
-    "triad";
+    "triad; and compensates the known misalignment, g_sensitivity, ramp, warmup and sinusoid";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
@@ -82,6 +83,8 @@ void addEffect(const EffectSpec& e, Sensor sensor, double step, double imuRate, 
                                     errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));
     } else if (e.type == "quantization") {
       addQuantization(e, sensor, imuRate, axis);
+    } else if (isKnownEffect(e.type)) {
+      return;  // no state: compensated as known (known_errors.hpp)
     } else {
       problem(problems, e,
               std::string("the GNSS/INS filter has no states for this effect (it carries ") +
@@ -102,7 +105,8 @@ void addEffect(const EffectSpec& e, Sensor sensor, double step, double imuRate, 
 }
 
 // A triad's scale_factor effects as one constant state per axis (several add: their means and
-// variances, first order in the scale errors); misalignment and g-sensitivity have no states.
+// variances, first order in the scale errors); a matrix's off-diagonal part, misalignment and
+// g-sensitivity have no states: they are compensated as known (known_errors.hpp).
 // Returns the prior mean and variance per axis; an axis with neither gets no state.
 void addScaleFactors(const errormodels::SensorSpec& ss, Eigen::Vector3d& mean, Eigen::Vector3d& var,
                      std::vector<Diagnostic>& problems) {
@@ -110,19 +114,15 @@ void addScaleFactors(const errormodels::SensorSpec& ss, Eigen::Vector3d& mean, E
   var.setZero();
   for (const EffectSpec& e : ss.triad) {
     if (!e.enabled) continue;
+    if (isKnownEffect(e.type)) continue;
     if (e.type != "scale_factor") {
       problem(problems, e,
               "the GNSS/INS filter has no states for this triad effect (it carries scale_factor "
-              "with a diagonal); leave it out of the filter's model or set enabled: no");
+              "and compensates misalignment and g_sensitivity); leave it out of the filter's "
+              "model or set enabled: no");
       continue;
     }
     const Eigen::Matrix3d S = errormodels::matrix3Of(e);
-    if (!(S - Eigen::Matrix3d(S.diagonal().asDiagonal())).isZero(0.0)) {
-      problem(problems, e,
-              "off-diagonal entries are a misalignment, which the GNSS/INS filter has no states "
-              "for; give value or diagonal");
-      continue;
-    }
     const double sigma = errormodels::valueOr(e, "sigma", 0.0);
     mean += S.diagonal();
     var += Eigen::Vector3d::Constant(sigma * sigma);

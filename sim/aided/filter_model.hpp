@@ -20,10 +20,11 @@
 //   scale_factor   → (triad, `value` or `diagonal`, optional `sigma`) 1 constant state per axis
 //                    with a mean or a sigma, prior mean the diagonal entry, prior sigma `sigma`;
 //                    after the axis's other states (several scale_factor effects add)
-// Disabled effects (`enabled: no`) are skipped. Every other effect (a scale_factor `matrix` with
-// off-diagonal entries, misalignment, g-sensitivity; ramp, sinusoid, temperature, warmup,
-// outliers) has no filter state here and is refused, naming
-// the model file, line and key.
+//   scale_factor `matrix` off-diagonal entries, misalignment, g_sensitivity, ramp, warmup,
+//   sinusoid → no state: known, compensated (known_errors.hpp)
+// Disabled effects (`enabled: no`) are skipped. Every other effect (temperature: the filter has
+// no temperature; outliers, bias_jumps) has no filter state here and is refused, naming the model
+// file, line and key.
 #pragma once
 
 #include <vector>
