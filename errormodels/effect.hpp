@@ -195,6 +195,19 @@ double arDrivingSigmaOf(const EffectSpec& spec);
 /// The Gauss-Markov components of a `bias_instability` (B or floor, tau_range; flicker_gms.hpp):
 /// the ones its realisations draw. Throws InputError naming the key when tau_range is not valid.
 FlickerGms biasInstabilityGmsOf(const EffectSpec& spec);
+/// The second-order equivalent of a `bias_jumps` at the IMU rate `imuRate` [Hz]
+/// (effects/bias_jumps.cpp), p = 1 − exp(−rate / imuRate) the chance of a jump per interval:
+/// steps are a random walk of K² = imuRate p size² (rate size² when rate ≪ imuRate); a telegraph
+/// a Gauss-Markov of sigma size/2 and tau = −1 / (imuRate ln(1 − 2p)) (1 / (2 rate) then).
+struct JumpsEquivalent {
+  bool telegraph = false;
+  double K = 0.0;                 // steps [signal/sqrt(s)]
+  double sigma = 0.0, tau = 0.0;  // telegraph [signal], [s]
+};
+JumpsEquivalent biasJumpsEquivalentOf(const EffectSpec& spec, double imuRate);
+/// The white-noise density [signal·sqrt(s)] with the second moments of an `outliers` effect at
+/// the IMU rate (effects/outliers.cpp): N² = p amplitude² / imuRate, p = rate / imuRate.
+double outliersWhiteDensityOf(const EffectSpec& spec, double imuRate);
 /// Refuses a process rate [Hz] slower than the IMU (throws InputError naming the effect).
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx);
 

@@ -73,4 +73,21 @@ std::unique_ptr<Effect> buildEffect_bias_jumps(const EffectSpec& spec, const Eff
                                      telegraph && telegraph->flag);
 }
 
+JumpsEquivalent biasJumpsEquivalentOf(const EffectSpec& spec, double imuRate) {
+  const double rate = valueOr(spec, "rate", NAN), size = valueOr(spec, "size", NAN);
+  const ParamSpec* telegraph = spec.find("telegraph");
+  const double p = -std::expm1(-rate / imuRate);
+  JumpsEquivalent e;
+  e.telegraph = telegraph && telegraph->flag;
+  if (!e.telegraph) {
+    e.K = std::sqrt(imuRate * p) * size;
+    return e;
+  }
+  e.sigma = 0.5 * size;
+  // The level's correlation over n intervals is (1 − 2p)^n; at p ≥ 1/2 it alternates, and the
+  // continuous form is the one left.
+  e.tau = p < 0.5 ? -1.0 / (imuRate * std::log1p(-2.0 * p)) : 0.5 / rate;
+  return e;
+}
+
 }  // namespace sinsim::errormodels

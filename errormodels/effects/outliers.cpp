@@ -58,4 +58,9 @@ std::unique_ptr<Effect> buildEffect_outliers(const EffectSpec& spec, const Effec
   return std::make_unique<Outliers>(valueOr(spec, "rate", NAN), valueOr(spec, "amplitude", NAN));
 }
 
+double outliersWhiteDensityOf(const EffectSpec& spec, double imuRate) {
+  const double p = valueOr(spec, "rate", NAN) / imuRate;
+  return std::sqrt(p / imuRate) * valueOr(spec, "amplitude", NAN);
+}
+
 }  // namespace sinsim::errormodels

@@ -16,8 +16,9 @@ using errormodels::EffectSpec;
 using errormodels::Sensor;
 
 const char* kSupported =
-    "white, bias, random_walk, gauss_markov, bias_instability, ar, quantization; scale_factor on the "
-    "triad; and compensates the known misalignment, g_sensitivity, ramp, warmup and sinusoid";
+    "white, bias, random_walk, gauss_markov, bias_instability, ar, quantization, and bias_jumps and "
+    "outliers by their second moments; scale_factor on the triad; and compensates the known "
+    "misalignment, g_sensitivity, ramp, warmup and sinusoid";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});
@@ -55,6 +56,16 @@ void addQuantization(const EffectSpec& e, Sensor sensor, double imuRate, SensorA
   axis.whiteDensity = std::hypot(axis.whiteDensity, q / std::sqrt(12.0 * imuRate));
 }
 
+// A bias_jumps by the process with its second moments (biasJumpsEquivalentOf): steps a random
+// walk, a telegraph a Gauss-Markov; the linear filter that is best for those moments.
+void addBiasJumps(const EffectSpec& e, double imuRate, SensorAxisModel& axis) {
+  if (!(std::isfinite(imuRate) && imuRate > 0.0)) return;  // a bad rate: the scenario's error
+  const errormodels::JumpsEquivalent j = errormodels::biasJumpsEquivalentOf(e, imuRate);
+  StateBlock b = j.telegraph ? gaussMarkovState(j.sigma, j.tau) : randomWalkState(j.K);
+  b.name = "bias_jumps";
+  axis.blocks.push_back(std::move(b));
+}
+
 // Adds one effect of an axis to the filter's model of that axis.
 void addEffect(const EffectSpec& e, Sensor sensor, double step, double imuRate, SensorAxisModel& axis,
                std::vector<Diagnostic>& problems) {
@@ -83,6 +94,11 @@ void addEffect(const EffectSpec& e, Sensor sensor, double step, double imuRate, 
                                     errormodels::arDrivingSigmaOf(e), valueOr(e, "rate", NAN)));
     } else if (e.type == "quantization") {
       addQuantization(e, sensor, imuRate, axis);
+    } else if (e.type == "bias_jumps") {
+      addBiasJumps(e, imuRate, axis);
+    } else if (e.type == "outliers") {
+      if (std::isfinite(imuRate) && imuRate > 0.0)  // a bad rate: the scenario's error
+        axis.whiteDensity = std::hypot(axis.whiteDensity, errormodels::outliersWhiteDensityOf(e, imuRate));
     } else if (isKnownEffect(e.type)) {
       return;  // no state: compensated as known (known_errors.hpp)
     } else {

@@ -20,11 +20,13 @@
 //   scale_factor   → (triad, `value` or `diagonal`, optional `sigma`) 1 constant state per axis
 //                    with a mean or a sigma, prior mean the diagonal entry, prior sigma `sigma`;
 //                    after the axis's other states (several scale_factor effects add)
+//   bias_jumps     → 1 state with its second moments (errormodels::biasJumpsEquivalentOf): steps
+//                    a random walk of K² = rate size², a telegraph a GM of size/2, 1/(2 rate)
+//   outliers       → no state: white noise of their variance, N² += rate amplitude² / imu_rate²
 //   scale_factor `matrix` off-diagonal entries, misalignment, g_sensitivity, ramp, warmup,
 //   sinusoid → no state: known, compensated (known_errors.hpp)
-// Disabled effects (`enabled: no`) are skipped. Every other effect (temperature: the filter has
-// no temperature; outliers, bias_jumps) has no filter state here and is refused, naming the model
-// file, line and key.
+// Disabled effects (`enabled: no`) are skipped. A temperature (the filter has no temperature) is
+// refused, naming the model file, line and key.
 #pragma once
 
 #include <vector>

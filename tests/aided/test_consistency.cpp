@@ -186,6 +186,38 @@ accel:
   CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
 }
 
+TEST_CASE("filter model = truth model with bias jumps and outliers: NEES, NIS in their bands") {
+  // Not Gaussian, but the filter carries processes with their exact second moments (steps: a
+  // random walk; a telegraph: a Gauss-Markov; outliers: white noise of their variance), and the
+  // run-averaged NEES and NIS test second moments only. Jumps a few times the white noise's drift
+  // over the drive, a telegraph switching every 25 s on average, an outlier every 2 s.
+  const char* model = R"(
+gyro:
+  all:
+    - {type: white, density: 0.15 deg/sqrt(h)}
+    - {type: bias_jumps, rate: 0.02 Hz, size: 30 deg/h}
+    - {type: bias_jumps, rate: 0.02 Hz, size: 60 deg/h, telegraph: yes}
+accel:
+  all:
+    - {type: white, density: 0.1 m/s/sqrt(h)}
+    - {type: bias_jumps, rate: 0.02 Hz, size: 3 mg, telegraph: yes}
+    - {type: outliers, rate: 0.5 Hz, amplitude: 0.3 m/s^2}
+)";
+  const FilterSensorModel fm =
+      filterModelFromSpec(errormodels::errorModelFromString(model, "jumps.yaml"), 1.0, 100.0);
+  REQUIRE(fm.gyro[0].blocks.size() == 2);
+  REQUIRE(fm.accel[0].blocks.size() == 1);
+  const int runs = 400;
+  const Averages avg = consistencyRuns(model, fm, runs, 17);
+  std::printf("bias jumps and outliers filter = truth: NEES %.3f (last aided epoch), %.3f (outage "
+              "end), NIS %.3f\n", avg.neesAiding, avg.neesOutage, avg.nis);
+  INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
+                                       << avg.neesOutage << ", mean NIS " << avg.nis);
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+}
+
 TEST_CASE("GNSS fixes 50 s apart: the filter propagates every second in between (NEES in band)") {
   // The drive turns 90° between the fixes at 50 s and 100 s. One 50 s propagation step linearised
   // at the step's mean attitude and specific force does not follow the turn; steps of at most

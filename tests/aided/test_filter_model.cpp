@@ -1,6 +1,6 @@
 // The filter's sensor states from a model file (`filter: {model: FILE}`): the same filter from a
 // file (relative to the scenario), from the same model inline, and from the state blocks built by
-// hand with the SI values worked out here from the units; effects the filter cannot carry are
+// hand with the SI values worked out here from the units; an effect the filter cannot carry is
 // refused naming the model file, line and key.
 #include <catch2/catch.hpp>
 
@@ -172,7 +172,7 @@ TEST_CASE("filter model: a bias_instability becomes its Gauss-Markov components,
   CHECK(sc.aiding.filter.sensors.gyro[1].blocks.empty());  // x's own list only
 }
 
-TEST_CASE("filter model file: effects without filter states are refused with file, line, key") {
+TEST_CASE("filter model file: an effect without filter states is refused with file, line, key") {
   const auto dir = test::freshTempDir("sinsim-filter-model-bad");
   test::writeText(dir / "bad.yaml", R"(gyro:
   triad:
@@ -197,9 +197,9 @@ accel:
     CHECK(m.find("fm.yaml:") != std::string::npos);
     CHECK(m.find("filter.model") != std::string::npos);
     CHECK(m.find("bad.yaml:5: gyro.all[0]: temperature:") != std::string::npos);
-    CHECK(m.find("bad.yaml:9: accel.y[0]: outliers:") != std::string::npos);
-    // known errors are compensated, not refused (test_known_errors.cpp); the white is supported
-    for (const char* fine : {"gyro.triad[0]", "gyro.all[1]", "accel.y[1]", "accel.y[2]"})
+    // known errors are compensated (test_known_errors.cpp), outliers are white noise of their
+    // variance, the white is supported: none of them is refused
+    for (const char* fine : {"gyro.triad[0]", "gyro.all[1]", "accel.y[0]", "accel.y[1]", "accel.y[2]"})
       CHECK(m.find(fine) == std::string::npos);
     // the temperature sits in `all`: reported once, not once per axis.
     CHECK(m.find("temperature:") == m.rfind("temperature:"));
@@ -278,4 +278,42 @@ accel:
   const double g = kStandardGravity * 0.5e-3;  // 0.5 mg, dithered, not carried: uniform on ±LSB/2 each sample
   CHECK(m.accel[0].whiteDensity == Approx(g / std::sqrt(12.0 * 100.0)).epsilon(1e-12));
   CHECK(m.accel[1].whiteDensity == 0.0);
+}
+
+TEST_CASE("filter model: bias jumps and outliers by the processes with their second moments") {
+  // At 100 Hz and rates far below it, the closed forms of the Poisson limit (effects/bias_jumps.cpp,
+  // outliers.cpp; the effects' own statistics against simulation: test_errormodels): steps a
+  // random walk of K² = rate size², a telegraph a Gauss-Markov of sigma size/2 and tau
+  // 1/(2 rate), outliers a white density² of rate amplitude² / imu_rate² beside the axis's white.
+  const auto dir = test::freshTempDir("sinsim-filter-model-jumps");
+  test::writeText(dir / "j.yaml", R"(gyro:
+  all: [{type: white, density: 0.2 deg/sqrt(h)}]
+  x: [{type: bias_jumps, rate: 0.01 Hz, size: 20 deg/h}]
+  y: [{type: bias_jumps, rate: 0.02 Hz, size: 40 deg/h, telegraph: yes}]
+accel:
+  z: [{type: outliers, rate: 0.5 Hz, amplitude: 0.3 m/s^2}]
+)");
+  const sim::Scenario sc = sim::parseScenario(std::string(kScenario) + "filter: {model: j.yaml}\n",
+                                              "fm.yaml", dir.string());
+  const FilterSensorModel& m = sc.aiding.filter.sensors;
+  const double dph = kPi / 180.0 / 3600.0;
+  REQUIRE(m.gyro[0].blocks.size() == 1);
+  REQUIRE(m.gyro[1].blocks.size() == 1);
+  CHECK(m.gyro[2].blocks.empty());
+  const StateBlock& steps = m.gyro[0].blocks[0];
+  const StateBlock walk = randomWalkState(std::sqrt(0.01) * 20 * dph);
+  CHECK(steps.name == "bias_jumps");
+  CHECK(steps.Qc(0, 0) == Approx(walk.Qc(0, 0)).epsilon(1e-4));  // 1 − p/2 of the Poisson limit
+  CHECK(steps.F(0, 0) == 0.0);
+  const StateBlock& tele = m.gyro[1].blocks[0];
+  const StateBlock gm = gaussMarkovState(20 * dph, 25.0);
+  CHECK(tele.name == "bias_jumps");
+  CHECK(tele.P0(0, 0) == Approx(gm.P0(0, 0)).epsilon(1e-12));
+  CHECK(tele.F(0, 0) == Approx(gm.F(0, 0)).epsilon(1e-3));
+  CHECK(tele.Qc(0, 0) == Approx(gm.Qc(0, 0)).epsilon(1e-3));
+  const double white = 0.2 * kPi / 180.0 / 60.0;
+  CHECK(m.gyro[0].whiteDensity == Approx(white).epsilon(1e-15));
+  CHECK(m.accel[2].whiteDensity * m.accel[2].whiteDensity ==
+        Approx(0.5 * 0.3 * 0.3 / (100.0 * 100.0)).epsilon(1e-12));
+  CHECK(m.accel[2].blocks.empty());
 }
