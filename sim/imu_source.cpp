@@ -22,7 +22,8 @@ bool TrajectorySource::next(ImuEpoch& e) {
   e.ideal = imu_.next();
   e.measured = e.ideal;
   // The temperature at the interval's midpoint, as the sensor sees it while integrating.
-  if (corruptor_) corruptor_->corrupt(e.measured, temperature_.at(e.ideal.t - 0.5 * e.ideal.dt));
+  e.temperature = temperature_.at(e.ideal.t - 0.5 * e.ideal.dt);
+  if (corruptor_) corruptor_->corrupt(e.measured, e.temperature);
   e.index = imu_.index();
   e.truth = imu_.truth();
   e.hTrue = e.truth.h;
@@ -55,8 +56,10 @@ bool ReferenceSource::next(ImuEpoch& e) {
   if (corruptor_) {
     if (k_ >= blockStart_ + measured_.size()) corruptNextBlock();
     e.measured = measured_[k_ - blockStart_];
+    e.temperature = temperature_[k_ - blockStart_];
   } else {
     e.measured = e.ideal;
+    e.temperature = ref_.temperature.at(e.ideal.t - 0.5 * e.ideal.dt);
   }
   e.hTrue = ref_.hRef[k_];
   ++k_;

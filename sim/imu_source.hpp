@@ -5,6 +5,7 @@
 // aiding filter can see both; the truth travels with them.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct ImuEpoch {
   double hTrue = 0.0;      // true height at t_k [m] (the reference of the held/damped channel)
   bool hasTruth = false;   // truth below is valid (every epoch, or only at output epochs)
   nav::NavState truth;     // true state at t_k
+  double temperature = NAN;  // the sensor's temperature over the interval [K] (NaN: no profile)
 };
 
 /// A stream of IMU intervals of equal length dt = 1/rate() from the true initial state.

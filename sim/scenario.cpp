@@ -168,7 +168,7 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
   sc.segments = detail::readSegments(segs, sc.start, file);
 
   sc.temperature = readTemperature(root["temperature"], sc.duration());
-  sc.aiding = aided::parseAiding(root, baseDir, sc.duration(), sc.imuRate);
+  sc.aiding = aided::parseAiding(root, baseDir, sc.duration(), sc.imuRate, sc.temperature.present);
   checkAlignmentAtRest(root, sc);
   // A fix is applied at an IMU epoch: GNSS at 100 kHz with a 100 Hz IMU ran as if it were 100 Hz.
   if (sc.aiding.gnss.enabled && std::isfinite(sc.imuRate) && sc.aiding.gnss.rate > sc.imuRate)

@@ -23,7 +23,9 @@ class ScenarioAiding final : public NavAiding {
                  const nav::StrapdownOptions& strapdown, const errormodels::StreamKey& key);
 
   nav::NavState start(const nav::NavState& truth) override { return aided_.initialState(truth); }
-  nav::ImuSample compensate(const ImuEpoch& e) override { return aided_.compensate(e.measured); }
+  nav::ImuSample compensate(const ImuEpoch& e) override {
+    return aided_.compensate(e.measured, e.temperature);
+  }
   void epoch(const ImuEpoch& e, const nav::ImuSample& integrated,
              nav::Strapdown& strapdown) override;
 

@@ -193,20 +193,21 @@ void AidedNavigation::fix(const nav::NavState& truth, const nav::Vec3& rateNav,
   sd.correct(c.segment<3>(0), c.segment<3>(3), c.segment<3>(6));
 }
 
-nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured) {
+nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, double temperature) {
   if (!config_.filter.enabled) return measured;
-  const nav::ImuSample c = compensate(measured, measured.dv_b);
+  const nav::ImuSample c = compensate(measured, measured.dv_b, temperature);
   // A known g-sensitivity again, of the compensated specific force (the sensor's is of the true
   // one: the accelerometers' own errors times it are milli-g times deg/s/g).
-  return known_.sensesForce() ? compensate(measured, c.dv_b) : c;
+  return known_.sensesForce() ? compensate(measured, c.dv_b, temperature) : c;
 }
 
-nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, const nav::Vec3& dv) {
+nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, const nav::Vec3& dv,
+                                           double temperature) {
   // The reverse of the sensor's order (known_errors.hpp): the known added errors, the estimated
   // bias, then the known misalignment and the estimated scale errors (b dt + diag(s) u: first
   // order in dt and in the scale errors). Nothing known or estimated, nothing touched: a filter
   // without fixes (and zero prior means) leaves the navigation bit-identical to the free run.
-  const nav::ImuSample m = known_.withoutAdded(measured, dv);
+  const nav::ImuSample m = known_.withoutAdded(measured, dv, temperature);
   if (!aligned_) return known_.withoutLinear(m);
   const nav::Vec3 bg = filter_.gyroError(), ba = filter_.accelError();
   nav::ImuSample c = m;

@@ -89,15 +89,17 @@ class AidedNavigation {
   /// The sample the strapdown integrates: `measured` less the filter model's known errors (from
   /// the first sample on, alignment included) and less the filter's current sensor-error estimate
   /// (the continuous blocks'; not before the alignment ends, without a filter, or while nothing is
-  /// estimated). afterInterval is then called with the returned sample.
-  nav::ImuSample compensate(const nav::ImuSample& measured);
+  /// estimated). `temperature` [K]: the sensor's over the interval (NaN: none; a known temperature
+  /// effect then needs it: refused by the scenario reader). afterInterval is then called with the
+  /// returned sample.
+  nav::ImuSample compensate(const nav::ImuSample& measured, double temperature = NAN);
 
   const std::vector<OutageResult>& outages() const { return outages_; }
   const ErrorStateFilter& filter() const { return filter_; }
 
  private:
   // compensate() with the known g-sensitivity of the specific force's increment dv [m/s].
-  nav::ImuSample compensate(const nav::ImuSample& measured, const nav::Vec3& dv);
+  nav::ImuSample compensate(const nav::ImuSample& measured, const nav::Vec3& dv, double temperature);
   void propagateStep(nav::Strapdown& sd);
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)

@@ -128,12 +128,25 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
   parseOutages(n["outages"], duration, g.outages);
 }
 
+// A known temperature polynomial is compensated at the scenario's sensor temperature: without
+// one, each is a problem at its own line.
+void requireNoTemperature(const errormodels::ErrorModelSpec& known, std::vector<Diagnostic>& problems) {
+  for (errormodels::Sensor s : {errormodels::Sensor::gyro, errormodels::Sensor::accel})
+    for (errormodels::EffectList l : {errormodels::EffectList::all, errormodels::EffectList::x,
+                                      errormodels::EffectList::y, errormodels::EffectList::z})
+      for (const errormodels::EffectSpec& e : known.sensor(s).list(l))
+        if (e.type == "temperature")
+          problems.push_back({e.where.file, e.where.line, e.where.key,
+                              "temperature: the filter compensates it at the sensor's temperature; "
+                              "give the scenario one (e.g. temperature: 25 degC)"});
+}
+
 // The filter's model from a file (relative to the scenario) or an inline model map, read into an
 // ErrorModelSpec by the one model reader and converted by filterModelFromSpec; the problems of a
 // model file are recorded at filter.model with the model file's own line and key. `step`: the
 // filter step [s] (the GNSS interval, at most kMaxPropagationStep); `imuRate` [Hz] the scenario's.
 void parseFilter(const ConfigNode& root, const std::string& baseDir, double step, double imuRate,
-                 FilterConfig& f) {
+                 bool hasTemperature, FilterConfig& f) {
   const ConfigNode n = root["filter"];
   if (!n.exists()) return;
   n.allowKeys({"model"});
@@ -162,6 +175,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
   }
   std::vector<Diagnostic> problems;
   f.sensors = filterModelFromSpec(spec, step, imuRate, problems);
+  if (!hasTemperature) requireNoTemperature(knownPart(spec, false), problems);
   try {
     f.knownAdded = errormodels::ImuErrorModel::fromSpec(knownPart(spec, false), f.model);
     f.knownLinear = errormodels::ImuErrorModel::fromSpec(knownPart(spec, true), f.model);
@@ -188,12 +202,13 @@ bool GnssConfig::inOutage(double t) const {
 }
 
 AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration,
-                         double imuRate) {
+                         double imuRate, bool hasTemperature) {
   AidingConfig c;
   parseInitialErrors(root, c.initialErrors);
   parseAlignment(root, c.alignment);
   parseGnss(root, duration, c.gnss);
-  parseFilter(root, baseDir, std::min(1.0 / c.gnss.rate, kMaxPropagationStep), imuRate, c.filter);
+  parseFilter(root, baseDir, std::min(1.0 / c.gnss.rate, kMaxPropagationStep), imuRate,
+              hasTemperature, c.filter);
   if (root.has("filter") && !c.gnss.enabled)
     root["filter"].error("a filter needs GNSS fixes (a gnss: block) to aid the navigation");
   if (c.gnss.enabled && !root.has("filter"))

@@ -88,9 +88,11 @@ struct AidingConfig {
 /// Reads initial_errors, alignment, gnss and filter from a scenario's root map; problems are
 /// recorded in the file's diagnostics with their line and key path. `baseDir` resolves a relative
 /// filter model path; `duration` [s] is the scenario's, to check outage windows against;
-/// `imuRate` [Hz] its IMU rate (a filter model's per-sample rounding is white noise at it).
+/// `imuRate` [Hz] its IMU rate (a filter model's per-sample rounding is white noise at it);
+/// `hasTemperature`: the scenario gives the sensor's temperature (a filter model's temperature
+/// polynomial is compensated at it, and refused without it).
 AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, double duration,
-                         double imuRate);
+                         double imuRate, bool hasTemperature);
 
 /// The root keys parseAiding reads (for the scenario's allowKeys).
 const std::vector<std::string>& aidingKeys();

@@ -18,7 +18,7 @@ using errormodels::Sensor;
 const char* kSupported =
     "white, bias, random_walk, gauss_markov, bias_instability, ar, quantization, and bias_jumps and "
     "outliers by their second moments; scale_factor on the triad; and compensates the known "
-    "misalignment, g_sensitivity, ramp, warmup and sinusoid";
+    "misalignment, g_sensitivity, ramp, warmup, sinusoid and temperature";
 
 void problem(std::vector<Diagnostic>& out, const EffectSpec& e, const std::string& message) {
   out.push_back({e.where.file, e.where.line, e.where.key, e.type + ": " + message});

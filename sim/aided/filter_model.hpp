@@ -24,9 +24,10 @@
 //                    a random walk of K² = rate size², a telegraph a GM of size/2, 1/(2 rate)
 //   outliers       → no state: white noise of their variance, N² += rate amplitude² / imu_rate²
 //   scale_factor `matrix` off-diagonal entries, misalignment, g_sensitivity, ramp, warmup,
-//   sinusoid → no state: known, compensated (known_errors.hpp)
-// Disabled effects (`enabled: no`) are skipped. A temperature (the filter has no temperature) is
-// refused, naming the model file, line and key.
+//   sinusoid, temperature → no state: known, compensated (known_errors.hpp; a temperature
+//   without the scenario's is refused by the scenario reader)
+// Disabled effects (`enabled: no`) are skipped. An effect none of these covers (a newly
+// registered one) is refused, naming the model file, line and key.
 #pragma once
 
 #include <vector>

@@ -29,7 +29,7 @@ bool offDiagonalPart(const EffectSpec& e, EffectSpec& out) {
 
 bool isKnownEffect(const std::string& type) {
   return type == "misalignment" || type == "g_sensitivity" || type == "ramp" ||
-         type == "warmup" || type == "sinusoid";
+         type == "warmup" || type == "sinusoid" || type == "temperature";
 }
 
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear) {
@@ -57,10 +57,10 @@ KnownErrors::KnownErrors(const errormodels::ImuErrorModel& added,
   if (!linear.empty()) linear_ = linear.instantiate(imuRate, errormodels::StreamKey{});
 }
 
-// s less what the corruptor c adds to it.
-ImuSample KnownErrors::less(const ImuSample& s, errormodels::ImuCorruptor& c) {
+// s less what the corruptor c adds to it at the sensor temperature [K].
+ImuSample KnownErrors::less(const ImuSample& s, errormodels::ImuCorruptor& c, double temperature) {
   ImuSample with = s;
-  c.corrupt(with, NAN);
+  c.corrupt(with, temperature);
   ImuSample out = s;
   out.dtheta_b -= with.dtheta_b - s.dtheta_b;
   out.dv_b -= with.dv_b - s.dv_b;
@@ -69,11 +69,11 @@ ImuSample KnownErrors::less(const ImuSample& s, errormodels::ImuCorruptor& c) {
 
 // The corruptor reads the specific force from the sample it corrupts; the other added errors do
 // not depend on the signal.
-ImuSample KnownErrors::withoutAdded(const ImuSample& s, const Vec3& dv) {
+ImuSample KnownErrors::withoutAdded(const ImuSample& s, const Vec3& dv, double temperature) {
   if (!added_) return s;
   ImuSample forced = s;
   forced.dv_b = dv;
-  const ImuSample less = KnownErrors::less(forced, *added_);
+  const ImuSample less = KnownErrors::less(forced, *added_, temperature);
   ImuSample out = s;
   out.dtheta_b = less.dtheta_b;
   out.dv_b += less.dv_b - dv;
@@ -83,7 +83,7 @@ ImuSample KnownErrors::withoutAdded(const ImuSample& s, const Vec3& dv) {
 // x = (I + K)^-1 s by two fixed-point steps x <- s - K x from x = s: error O(K^3 s).
 ImuSample KnownErrors::withoutLinear(const ImuSample& s) {
   if (!linear_) return s;
-  ImuSample x = less(s, *linear_);
+  ImuSample x = less(s, *linear_, NAN);
   ImuSample Kx = x;
   linear_->corrupt(Kx, NAN);
   x.dtheta_b = s.dtheta_b - (Kx.dtheta_b - x.dtheta_b);

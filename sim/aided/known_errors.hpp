@@ -1,6 +1,7 @@
 // The filter model's known errors: effects that draw nothing a filter could estimate —
-// misalignment, a scale_factor matrix's off-diagonal part, g-sensitivity (triad), ramp, warmup and
-// sinusoid (axis). An INS's calibration removes them; the aided navigation does the same: it
+// misalignment, a scale_factor matrix's off-diagonal part, g-sensitivity (triad), ramp, warmup,
+// sinusoid and temperature (axis; at the scenario's sensor temperature, which an INS reads from
+// its IMU). An INS's calibration removes them; the aided navigation does the same: it
 // subtracts what they add to each measured sample, computed by the effects' own code (an
 // ImuErrorModels of these effects alone applied to the measured sample: first order in the
 // misalignment and g-sensitivity, as the scale-factor states are). They carry no filter state.
@@ -16,13 +17,13 @@
 namespace sinsim::sim::aided {
 
 /// True for the effect types the filter compensates as known (misalignment, g_sensitivity, ramp,
-/// warmup, sinusoid); a scale_factor's off-diagonal part is known too (knownPart).
+/// warmup, sinusoid, temperature); a scale_factor's off-diagonal part is known too (knownPart).
 bool isKnownEffect(const std::string& type);
 
 /// The known part of a filter model: its enabled known effects in their lists, and each
 /// scale_factor matrix's off-diagonal entries as a misalignment (its diagonal stays a filter
 /// state). `linear` true: the effects that act on the signal (misalignment, scale off-diagonals),
-/// false: the ones added to it (g_sensitivity, ramp, warmup, sinusoid). Empty when there is none.
+/// false: the ones added to it (g_sensitivity, ramp, warmup, sinusoid, temperature). Empty when there is none.
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear);
 
 /// One run's compensation of the known errors, in the reverse of the order a sensor adds them
@@ -33,10 +34,11 @@ class KnownErrors {
   /// added, linear: ImuErrorModel::fromSpec of knownPart(spec, false / true); imuRate [Hz].
   KnownErrors(const errormodels::ImuErrorModel& added, const errormodels::ImuErrorModel& linear,
               double imuRate);
-  /// The sample less what the known added effects (ramp, warm-up, sinusoid; g-sensitivity times
-  /// the specific force's increment `dv` [m/s], best the compensated one) add over its interval;
-  /// unchanged when there are none.
-  ImuSample withoutAdded(const ImuSample& s, const Vec3& dv);
+  /// The sample less what the known added effects (ramp, warm-up, sinusoid; a temperature
+  /// polynomial at the sensor's `temperature` [K]; g-sensitivity times the specific force's
+  /// increment `dv` [m/s], best the compensated one) add over its interval; unchanged when there
+  /// are none.
+  ImuSample withoutAdded(const ImuSample& s, const Vec3& dv, double temperature);
   /// Does a known error depend on the specific force (a g-sensitivity)?
   bool sensesForce() const { return sensesForce_; }
   /// (I − K) s, K the known misalignment (first order, as the scale-factor states are);
@@ -44,7 +46,7 @@ class KnownErrors {
   ImuSample withoutLinear(const ImuSample& s);
 
  private:
-  static ImuSample less(const ImuSample& s, errormodels::ImuCorruptor& c);
+  static ImuSample less(const ImuSample& s, errormodels::ImuCorruptor& c, double temperature);
   std::unique_ptr<errormodels::ImuCorruptor> added_, linear_;  // nullptr: none
   bool sensesForce_ = false;
 };

@@ -172,7 +172,8 @@ TEST_CASE("filter model: a bias_instability becomes its Gauss-Markov components,
   CHECK(sc.aiding.filter.sensors.gyro[1].blocks.empty());  // x's own list only
 }
 
-TEST_CASE("filter model file: an effect without filter states is refused with file, line, key") {
+TEST_CASE("filter model file: a temperature without the scenario's temperature is refused with "
+          "file, line, key; the rest of the catalogue is carried") {
   const auto dir = test::freshTempDir("sinsim-filter-model-bad");
   test::writeText(dir / "bad.yaml", R"(gyro:
   triad:
@@ -196,13 +197,14 @@ accel:
     // The scenario's key and, inside the message, the model file's line and key of each effect.
     CHECK(m.find("fm.yaml:") != std::string::npos);
     CHECK(m.find("filter.model") != std::string::npos);
-    CHECK(m.find("bad.yaml:5: gyro.all[0]: temperature:") != std::string::npos);
+    CHECK(m.find("bad.yaml:5: gyro.all[0]: temperature: the filter compensates it at the "
+                 "sensor's temperature") != std::string::npos);
     // known errors are compensated (test_known_errors.cpp), outliers are white noise of their
     // variance, the white is supported: none of them is refused
     for (const char* fine : {"gyro.triad[0]", "gyro.all[1]", "accel.y[0]", "accel.y[1]", "accel.y[2]"})
       CHECK(m.find(fine) == std::string::npos);
     // the temperature sits in `all`: reported once, not once per axis.
-    CHECK(m.find("temperature:") == m.rfind("temperature:"));
+    CHECK(m.find("all[0]: temperature:") == m.rfind("all[0]: temperature:"));
   }
 }
 

@@ -163,6 +163,52 @@ accel:
   CHECK(dYaw < 1e-9);
 }
 
+TEST_CASE("a known temperature polynomial is removed at the sensor's temperature; refused without "
+          "one") {
+  // The sensor warms from 10 to 50 degC over the drive; every bias follows a polynomial in it
+  // (the gyros' 0.01 deg/s/degC, 0.15 deg/s at 40 degC; the accelerometers' 0.1 mg/degC). The filter's model states it; the
+  // navigation reads the sensor temperature as an INS reads its IMU's.
+  const auto dir = test::freshTempDir("sinsim-known-temperature");
+  test::writeText(dir / "noise.yaml", kNoise);
+  const std::string thermalGyro = R"(
+gyro:
+  all:
+    - {type: white, density: 0.01 deg/sqrt(h)}
+    - {type: bias, sigma: 0.2 deg/h}
+    - {type: temperature, T0: 25 degC, coefficients: [0.01 deg/s/degC, 1e-4 deg/s/degC^2]}
+accel:
+  all:
+    - {type: white, density: 0.1 m/s/sqrt(h)}
+    - {type: bias, sigma: 1 mg}
+    - {type: temperature, T0: 25 degC, coefficients: [0.1 mg/degC]}
+)";
+  test::writeText(dir / "thermal.yaml", thermalGyro);
+  const std::string warm = "temperature: {start: 10 degC, end: 50 degC}\n";
+  auto errors = [&](const char* truth, const char* filter) {
+    const std::string text = std::string(kScenario) + warm + "errors: " + truth +
+                             "\nfilter: {model: " + filter + "}\n";
+    const sim::Scenario sc = sim::parseScenario(text, (dir / "t.yaml").string(), dir.string());
+    std::vector<sim::NavError> out;
+    sim::RunOptions o;
+    o.onRow = [&](const sim::NavError& e) { out.push_back(e); };
+    sim::run(sc, o);
+    return out;
+  };
+  const auto [dPos, dYaw] = maxDifference(errors("noise.yaml", "noise.yaml"),
+                                          errors("thermal.yaml", "thermal.yaml"));
+  CHECK(dPos < 1e-6);
+  CHECK(dYaw < 1e-9);
+  try {  // no temperature in the scenario: the filter's model cannot be compensated
+    sim::parseScenario(std::string(kScenario) + "errors: noise.yaml\nfilter: {model: thermal.yaml}\n",
+                       (dir / "cold.yaml").string(), dir.string());
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("thermal.yaml:6: gyro.all[2]: temperature: the filter "
+                                     "compensates it at the sensor's temperature") != std::string::npos);
+  }
+}
+
 TEST_CASE("known errors carry no filter state") {
   const auto dir = test::freshTempDir("sinsim-known-states");
   test::writeText(dir / "noise.yaml", kNoise);
