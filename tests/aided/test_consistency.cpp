@@ -95,6 +95,17 @@ Averages consistencyRuns(const char* truthModel, const FilterSensorModel& filter
   return avg;
 }
 
+// Prints the averages of a model's runs (`what`: its name) and checks each against its band.
+void checkBands(const char* what, const Averages& avg, int runs) {
+  std::printf("%s filter = truth: NEES %.3f (last aided epoch), %.3f (outage end), NIS %.3f\n",
+              what, avg.neesAiding, avg.neesOutage, avg.nis);
+  INFO(what << ": NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
+            << avg.neesOutage << ", mean NIS " << avg.nis);
+  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
+  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
+  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+}
+
 }  // namespace
 
 TEST_CASE("filter model = truth model: NEES and NIS inside their 99 % chi-square bands") {
@@ -176,14 +187,7 @@ accel:
   // two components a decade over [1 s, 100 s] widened 1.5 decades each side: 10, 3 below 1 s
   REQUIRE(fm.gyro[0].blocks.size() == 7);
   const int runs = 200;
-  const Averages avg = consistencyRuns(model, fm, runs, 13);
-  std::printf("bias_instability filter = truth: NEES %.3f (last aided epoch), %.3f (outage end), "
-              "NIS %.3f\n", avg.neesAiding, avg.neesOutage, avg.nis);
-  INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
-                                       << avg.neesOutage << ", mean NIS " << avg.nis);
-  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
-  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
-  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+  checkBands("bias_instability", consistencyRuns(model, fm, runs, 13), runs);
 }
 
 TEST_CASE("filter model = truth model with bias jumps and outliers: NEES, NIS in their bands") {
@@ -208,14 +212,7 @@ accel:
   REQUIRE(fm.gyro[0].blocks.size() == 2);
   REQUIRE(fm.accel[0].blocks.size() == 1);
   const int runs = 400;
-  const Averages avg = consistencyRuns(model, fm, runs, 17);
-  std::printf("bias jumps and outliers filter = truth: NEES %.3f (last aided epoch), %.3f (outage "
-              "end), NIS %.3f\n", avg.neesAiding, avg.neesOutage, avg.nis);
-  INFO("NEES at the last aided epoch " << avg.neesAiding << ", at the outage's end "
-                                       << avg.neesOutage << ", mean NIS " << avg.nis);
-  CHECK(test::inChiSquareBand(avg.neesAiding, 9, runs));
-  CHECK(test::inChiSquareBand(avg.neesOutage, 9, runs));
-  CHECK(test::inChiSquareBand(avg.nis, 3, avg.nisCount));
+  checkBands("bias jumps and outliers", consistencyRuns(model, fm, runs, 17), runs);
 }
 
 TEST_CASE("GNSS fixes 50 s apart: the filter propagates every second in between (NEES in band)") {

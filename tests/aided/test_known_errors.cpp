@@ -83,10 +83,10 @@ accel:
 )";
 
 // The run's navigation errors at every output epoch, truth `errors`, filter `filter` (model files
-// in dir).
+// in dir), `extra` scenario keys.
 std::vector<sim::NavError> errorsOf(const std::filesystem::path& dir, const char* errors,
-                                    const char* filter) {
-  const std::string text = std::string(kScenario) + "errors: " + errors +
+                                    const char* filter, const std::string& extra = "") {
+  const std::string text = std::string(kScenario) + extra + "errors: " + errors +
                            "\nfilter: {model: " + filter + "}\n";
   const sim::Scenario sc = sim::parseScenario(text, (dir / "known.yaml").string(), dir.string());
   std::vector<sim::NavError> out;
@@ -184,18 +184,8 @@ accel:
 )";
   test::writeText(dir / "thermal.yaml", thermalGyro);
   const std::string warm = "temperature: {start: 10 degC, end: 50 degC}\n";
-  auto errors = [&](const char* truth, const char* filter) {
-    const std::string text = std::string(kScenario) + warm + "errors: " + truth +
-                             "\nfilter: {model: " + filter + "}\n";
-    const sim::Scenario sc = sim::parseScenario(text, (dir / "t.yaml").string(), dir.string());
-    std::vector<sim::NavError> out;
-    sim::RunOptions o;
-    o.onRow = [&](const sim::NavError& e) { out.push_back(e); };
-    sim::run(sc, o);
-    return out;
-  };
-  const auto [dPos, dYaw] = maxDifference(errors("noise.yaml", "noise.yaml"),
-                                          errors("thermal.yaml", "thermal.yaml"));
+  const auto [dPos, dYaw] = maxDifference(errorsOf(dir, "noise.yaml", "noise.yaml", warm),
+                                          errorsOf(dir, "thermal.yaml", "thermal.yaml", warm));
   CHECK(dPos < 1e-6);
   CHECK(dYaw < 1e-9);
   try {  // no temperature in the scenario: the filter's model cannot be compensated
