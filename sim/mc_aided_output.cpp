@@ -9,6 +9,7 @@
 #include "errormodels/stats/special.hpp"
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/aided/aided_output.hpp"
+#include "sim/filter_summary.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
 
@@ -247,6 +248,7 @@ nlohmann::json writeMcAidedOutputs(const McBatch& batch, OutputFiles& out,
   files.push_back("outages.csv");
   files.push_back("filter_consistency.csv");
   return {{"band", "two-sided 99 % chi-square band of the run-average at each epoch"},
+          {"filter", filterSummaryJson(batch.ref.aiding.filter)},
           {"models", models}};
 }
 

@@ -22,6 +22,7 @@
 #include "sim/imu_source.hpp"
 #include "sim/nav_loop.hpp"
 #include "sim/output.hpp"
+#include "sim/filter_summary.hpp"
 #include "sim/run_report.hpp"
 #include "sim/scenario_aiding.hpp"
 #include "sim/trajectory.hpp"
@@ -250,6 +251,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
       j["outages"].push_back({{"start_s", o.window.start}, {"end_s", o.window.end},
                               {"max_horizontal_m", o.maxHorizontal}, {"at_s", o.t},
                               {"filter_sigma_horizontal_m", o.sigmaHorizontal}});
+    if (sc.aiding.filter.enabled) j["filter"] = filterSummaryJson(sc.aiding.filter);
     if (!s.warnings.empty()) j["warnings"] = s.warnings;
     std::FILE* fSum = out->open("summary.json");
     const std::string text = j.dump(2) + "\n";

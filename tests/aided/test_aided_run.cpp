@@ -77,7 +77,8 @@ gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 2 m], outages: [[90 s, 110 s]]}
     CHECK(std::string(e.what()).find("gnss") != std::string::npos);
   }
   const sim::Scenario sc = sim::parseScenario(text + R"(
-filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]},
+filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}], x: [{type: bias, sigma: 1 deg/h}],
+                        triad: [{type: misalignment, matrix: [[0, 0, 0], [0, 0, 0], [1 mrad, 0, 0]]}]},
                  accel: {all: [{type: white, density: 0.05 m/s/sqrt(h)}]}}}
 )", "aided.yaml");
   sim::RunOptions o;
@@ -122,6 +123,14 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]},
   nlohmann::json j;
   std::ifstream(o.outDir + "/summary.json") >> j;
   CHECK(j["outages"].size() == 1);
+  // What the filter used of its model: its states per axis, white densities, known errors.
+  const nlohmann::json& fj = j["filter"];
+  CHECK(fj["model"] == "inline");
+  CHECK(fj["sensor_states"] == 1);
+  CHECK(fj["states_per_axis"]["gyro.x"][0]["process"] == "bias");
+  CHECK(fj["states_per_axis"]["gyro.y"].empty());
+  CHECK(fj["white_density_si"]["accel.z"].get<double>() == Approx(0.05 / 60.0).epsilon(1e-12));
+  CHECK(fj["compensated_known_errors"] == nlohmann::json::array({"gyro.triad[0].misalignment"}));
   std::filesystem::remove_all(o.outDir);
 }
 
