@@ -73,10 +73,10 @@ ImuSample KnownErrors::withoutAdded(const ImuSample& s, const Vec3& dv, double t
   if (!added_) return s;
   ImuSample forced = s;
   forced.dv_b = dv;
-  const ImuSample less = KnownErrors::less(forced, *added_, temperature);
+  const ImuSample compensated = less(forced, *added_, temperature);
   ImuSample out = s;
-  out.dtheta_b = less.dtheta_b;
-  out.dv_b += less.dv_b - dv;
+  out.dtheta_b = compensated.dtheta_b;
+  out.dv_b += compensated.dv_b - dv;
   return out;
 }
 

@@ -2,9 +2,9 @@
 // misalignment, a scale_factor matrix's off-diagonal part, g-sensitivity (triad), ramp, warmup,
 // sinusoid and temperature (axis; at the scenario's sensor temperature, which an INS reads from
 // its IMU). An INS's calibration removes them; the aided navigation does the same: it
-// subtracts what they add to each measured sample, computed by the effects' own code (an
-// ImuErrorModels of these effects alone applied to the measured sample: first order in the
-// misalignment and g-sensitivity, as the scale-factor states are). They carry no filter state.
+// subtracts what they add to each measured sample, computed by the effects' own code (error
+// models of these effects alone, applied to the measured sample; the misalignment inverted to
+// O(K³), the g-sensitivity taken of the compensated specific force). They carry no filter state.
 #pragma once
 
 #include <memory>
@@ -23,7 +23,8 @@ bool isKnownEffect(const std::string& type);
 /// The known part of a filter model: its enabled known effects in their lists, and each
 /// scale_factor matrix's off-diagonal entries as a misalignment (its diagonal stays a filter
 /// state). `linear` true: the effects that act on the signal (misalignment, scale off-diagonals),
-/// false: the ones added to it (g_sensitivity, ramp, warmup, sinusoid, temperature). Empty when there is none.
+/// false: the ones added to it (g_sensitivity, ramp, warmup, sinusoid, temperature). Empty when
+/// there is none.
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear);
 
 /// One run's compensation of the known errors, in the reverse of the order a sensor adds them
@@ -41,8 +42,7 @@ class KnownErrors {
   ImuSample withoutAdded(const ImuSample& s, const Vec3& dv, double temperature);
   /// Does a known error depend on the specific force (a g-sensitivity)?
   bool sensesForce() const { return sensesForce_; }
-  /// (I − K) s, K the known misalignment (first order, as the scale-factor states are);
-  /// unchanged when there is none.
+  /// (I + K)⁻¹ s to O(K³ s), I + K the known misalignments' product; unchanged when there is none.
   ImuSample withoutLinear(const ImuSample& s);
 
  private:
