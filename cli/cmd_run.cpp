@@ -96,6 +96,7 @@ void addRunCommand(CLI::App& app, Action& action) {
       std::cout << "sinsim run: " << file << " -> " << s.outDir << " (" << files << ") in "
                 << s.wallTime << " s\n"
                 << sim::summaryLine(s) << "\n";
+      if (!s.filter.empty()) std::cout << s.filter << "\n";
       if (!s.report.empty()) std::cout << "report: " << s.report << "\n";
       for (const std::string& w : s.warnings) std::cerr << "sinsim run: warning: " << w << "\n";
       return 0;

@@ -1,8 +1,17 @@
 #include "sim/filter_summary.hpp"
 
 #include <string>
+#include <vector>
 
 namespace sinsim::sim {
+
+std::string filterSummaryLine(const aided::FilterConfig& f) {
+  std::string line = "filter: 9 navigation + " + std::to_string(f.sensors.stateCount()) +
+                     " sensor states from " + f.model;
+  for (std::size_t i = 0; i < f.knownLabels.size(); ++i)
+    line += (i == 0 ? "; compensated as known: " : ", ") + f.knownLabels[i];
+  return line;
+}
 
 nlohmann::json filterSummaryJson(const aided::FilterConfig& f) {
   static const char* kAxes = "xyz";
@@ -16,16 +25,13 @@ nlohmann::json filterSummaryJson(const aided::FilterConfig& f) {
       states[axis] = blocks;
       white[axis] = m.whiteDensity;
     }
-  nlohmann::json known = nlohmann::json::array();
-  for (const errormodels::ImuErrorModel* m : {&f.knownAdded, &f.knownLinear})
-    for (const std::string& name : m->effectNames()) known.push_back(name);
   return {{"model", f.model},
           {"navigation_states", 9},
           {"sensor_states", f.sensors.stateCount()},
           {"states_per_axis", states},
           {"white_density_si", white},
           {"white_density_unit", "rad/sqrt(s) (gyro), m/s/sqrt(s) (accel)"},
-          {"compensated_known_errors", known}};
+          {"compensated_known_errors", f.knownLabels}};
 }
 
 }  // namespace sinsim::sim

@@ -169,6 +169,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   s.duration = static_cast<double>(source.sampleCount()) * (1.0 / sc.imuRate);  // as IdealImu::dt()
   s.imuSamples = source.sampleCount();
   if (aiding) s.warnings = aided::startWarnings(earth, sc.aiding, sc.strapdown, source.initial());
+  if (sc.aiding.filter.enabled) s.filter = filterSummaryLine(sc.aiding.filter);
   double sumH2 = 0.0, sumV2 = 0.0;
   long long rows = 0;
   double prevSpeed = source.initial().v_n.norm();

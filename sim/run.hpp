@@ -69,6 +69,7 @@ struct RunSummary {
   double maxVertical = 0.0, maxVerticalTime = 0.0;      // [m], [s]
   double rmsHorizontal = 0.0, rmsVertical = 0.0;        // over the output rows [m]
   std::vector<aided::OutageResult> outages;  // aided runs: per GNSS outage window
+  std::string filter;  // aided runs: what the filter used of its model (filterSummaryLine)
   std::vector<std::string> warnings;  // what the user should know about the result (printed)
   double wallTime = 0.0;    // [s]
   std::string outDir;       // "" when nothing was written

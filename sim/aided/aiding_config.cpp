@@ -182,6 +182,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
   } catch (const ConfigError& e) {
     problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
   }
+  f.knownLabels = knownLabels(spec);
   f.imuRate = imuRate;
   for (const Diagnostic& d : problems) m.error(d.str());
   f.enabled = problems.empty();

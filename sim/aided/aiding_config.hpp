@@ -72,6 +72,7 @@ struct FilterConfig {
   // its known errors, compensated (known_errors.hpp): added and linear; the IMU rate [Hz]
   errormodels::ImuErrorModel knownAdded = errormodels::ImuErrorModel::none();
   errormodels::ImuErrorModel knownLinear = errormodels::ImuErrorModel::none();
+  std::vector<std::string> knownLabels;  // the known effects as the file places them (knownLabels)
   double imuRate = 0.0;
 };
 

@@ -25,6 +25,26 @@ bool offDiagonalPart(const EffectSpec& e, EffectSpec& out) {
   return true;
 }
 
+// Calls visit(sensor, list, index in the list, effect, off-diagonal part or nullptr) for each
+// enabled known effect of spec, in file order within each list.
+template <class Visit>
+void forEachKnown(const errormodels::ErrorModelSpec& spec, Visit&& visit) {
+  for (errormodels::Sensor s : {errormodels::Sensor::gyro, errormodels::Sensor::accel})
+    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y,
+                         EffectList::z}) {
+      const std::vector<EffectSpec>& list = spec.sensor(s).list(l);
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const EffectSpec& e = list[i];
+        EffectSpec offDiagonal;
+        if (!e.enabled) continue;
+        if (isKnownEffect(e.type))
+          visit(s, l, i, e, nullptr);
+        else if (e.type == "scale_factor" && offDiagonalPart(e, offDiagonal))
+          visit(s, l, i, e, &offDiagonal);
+      }
+    }
+}
+
 }  // namespace
 
 bool isKnownEffect(const std::string& type) {
@@ -35,18 +55,22 @@ bool isKnownEffect(const std::string& type) {
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear) {
   errormodels::ErrorModelSpec known;
   known.source = spec.source;
-  for (errormodels::Sensor s : {errormodels::Sensor::gyro, errormodels::Sensor::accel})
-    for (EffectList l : {EffectList::triad, EffectList::all, EffectList::x, EffectList::y,
-                         EffectList::z})
-      for (const EffectSpec& e : spec.sensor(s).list(l)) {
-        if (!e.enabled) continue;
-        EffectSpec offDiagonal;
-        if (isKnownEffect(e.type) && (e.type == "misalignment") == linear)
-          known.sensor(s).list(l).push_back(e);
-        else if (linear && e.type == "scale_factor" && offDiagonalPart(e, offDiagonal))
-          known.sensor(s).list(l).push_back(std::move(offDiagonal));
-      }
+  forEachKnown(spec, [&](errormodels::Sensor s, EffectList l, std::size_t, const EffectSpec& e,
+                         const EffectSpec* offDiagonal) {
+    const EffectSpec& part = offDiagonal ? *offDiagonal : e;
+    if ((part.type == "misalignment") == linear) known.sensor(s).list(l).push_back(part);
+  });
   return known;
+}
+
+std::vector<std::string> knownLabels(const errormodels::ErrorModelSpec& spec) {
+  std::vector<std::string> labels;
+  forEachKnown(spec, [&](errormodels::Sensor s, EffectList l, std::size_t i, const EffectSpec& e,
+                         const EffectSpec* offDiagonal) {
+    labels.push_back(std::string(errormodels::sensorName(s)) + "." + errormodels::listName(l) + "[" +
+                     std::to_string(i) + "]." + e.type + (offDiagonal ? " off-diagonal" : ""));
+  });
+  return labels;
 }
 
 KnownErrors::KnownErrors(const errormodels::ImuErrorModel& added,

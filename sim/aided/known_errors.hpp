@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/types.hpp"
 #include "errormodels/imu_model.hpp"
@@ -26,6 +27,10 @@ bool isKnownEffect(const std::string& type);
 /// false: the ones added to it (g_sensitivity, ramp, warmup, sinusoid, temperature). Empty when
 /// there is none.
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear);
+
+/// The known effects as the model file places them: "gyro.all[2].warmup", "gyro.triad[1].
+/// scale_factor off-diagonal" (sensor, list, index in the list, type).
+std::vector<std::string> knownLabels(const errormodels::ErrorModelSpec& spec);
 
 /// One run's compensation of the known errors, in the reverse of the order a sensor adds them
 /// (the signal is scaled and misaligned first, then errors are added: errormodels/effect.hpp):

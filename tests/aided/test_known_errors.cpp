@@ -214,4 +214,11 @@ TEST_CASE("known errors carry no filter state") {
   CHECK(!known.aiding.filter.knownLinear.empty());
   CHECK(plain.aiding.filter.knownAdded.empty());
   CHECK(plain.aiding.filter.knownLinear.empty());
+  // Listed (summary.json, the terminal) as the file places them.
+  const std::vector<std::string> labels = {
+      "gyro.triad[0].misalignment", "gyro.triad[1].scale_factor off-diagonal",
+      "gyro.triad[2].g_sensitivity", "gyro.all[2].warmup", "gyro.x[0].ramp", "gyro.z[0].sinusoid",
+      "accel.triad[0].misalignment", "accel.y[0].ramp", "accel.y[1].warmup"};
+  CHECK(known.aiding.filter.knownLabels == labels);
+  CHECK(plain.aiding.filter.knownLabels.empty());
 }
