@@ -21,16 +21,4 @@ for cell in "truthsf-filtersf $sf $sf" "truthsf-filter18 $sf $plain" "truth18-fi
   echo "$1: $runs runs" >&2
   "$sinsim" mc "$out/$1.yaml" --runs "$runs" --seed 1 --no-progress -o "$out/$1" >/dev/null
 done
-python3 - "$out" <<'PY'
-import json, sys
-print("| cell | NEES inside, aiding / outage (mean) | outage max horizontal p50 / p95 (sigma p50) [m] |")
-print("|---|---|---|")
-for cell in ("truthsf-filtersf", "truthsf-filter18", "truth18-filtersf"):
-    m = json.load(open(f"{sys.argv[1]}/{cell}/summary.json"))["aided"]["models"][0]
-    n = m["nees"]
-    nees = " / ".join(f"{n[c]['inside_99']}/{n[c]['epochs']} ({n[c]['mean_of_run_averages']:.2f})"
-                      for c in ("aiding", "outage"))
-    drift = "; ".join(f"{o['max_horizontal_m']['p50']:.1f} / {o['max_horizontal_m']['p95']:.1f} "
-                      f"({o['sigma_horizontal_m']['p50']:.1f})" for o in m["outages"])
-    print(f"| {cell} | {nees} | {drift} |")
-PY
+python3 "$root/examples/aided_cells.py" "$out" truthsf-filtersf truthsf-filter18 truth18-filtersf
