@@ -181,6 +181,8 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
     f.knownLinear = errormodels::ImuErrorModel::fromSpec(knownPart(spec, true), f.model);
   } catch (const ConfigError& e) {
     problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
+  } catch (const InputError& e) {
+    m.error(e.what());
   }
   f.knownLabels = knownLabels(spec);
   f.imuRate = imuRate;
