@@ -173,7 +173,7 @@ TEST_CASE("filter model: a bias_instability becomes its Gauss-Markov components,
 }
 
 TEST_CASE("filter model file: a temperature without the scenario's temperature is refused with "
-          "file, line, key; the rest of the catalogue is carried") {
+          "file, line, key, the rest of the catalogue is carried") {
   const auto dir = test::freshTempDir("sinsim-filter-model-bad");
   test::writeText(dir / "bad.yaml", R"(gyro:
   triad:

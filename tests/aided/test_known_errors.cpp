@@ -163,7 +163,7 @@ accel:
   CHECK(dYaw < 1e-9);
 }
 
-TEST_CASE("a known temperature polynomial is removed at the sensor's temperature; refused without "
+TEST_CASE("a known temperature polynomial is removed at the sensor's temperature, refused without "
           "one") {
   // The sensor warms from 10 to 50 degC over the drive; every bias follows a polynomial in it
   // (the gyros' 0.01 deg/s/degC, 0.15 deg/s at 40 degC; the accelerometers' 0.1 mg/degC). The filter's model states it; the
