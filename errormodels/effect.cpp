@@ -7,8 +7,8 @@ namespace sinsim::errormodels {
 
 const std::vector<EffectType>& effectTypes() {
   static const std::vector<EffectType> types = {
-#define SINSIM_EFFECT(name, scope, summary) \
-  {#name, Scope::scope, summary, &paramsOf_##name, &buildEffect_##name},
+#define SINSIM_EFFECT(name, scope, nature, summary) \
+  {#name, Scope::scope, Nature::nature, summary, &paramsOf_##name, &buildEffect_##name},
 #include "errormodels/effects/effects.def"
 #undef SINSIM_EFFECT
   };

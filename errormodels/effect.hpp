@@ -8,7 +8,8 @@
 //     const std::vector<ParamSchema>& paramsOf_<name>();   // its parameters (effect_schema.hpp)
 //     std::unique_ptr<Effect> buildEffect_<name>(const EffectSpec& spec, const EffectSite& site,
 //                                                SpecProblems& problems);
-// and add one line SINSIM_EFFECT(<name>, axis|triad, "summary") to errormodels/effects/effects.def.
+// and add one line SINSIM_EFFECT(<name>, axis|triad, drawn|fixed|rounding, "summary") to
+// errormodels/effects/effects.def (Scope, Nature below).
 // buildEffect_ is called only with parameters that passed checkParameters (present, of the right
 // kind, dimension and bound); it checks the rules that tie them together (a stable AR polynomial,
 // a zero diagonal), records what is wrong in `problems` and returns nullptr, or builds the effect.
@@ -34,6 +35,11 @@ namespace sinsim::errormodels {
 
 /// Scope of an effect: one axis of a triad, or the whole triad (3×3 effects).
 enum class Scope { axis, triad };
+/// What a run of an effect is: `drawn` — each run draws its realisation (a process, or a turn-on
+/// value from a sigma); `fixed` — the same error in every run, a function of time, temperature and
+/// the ideal signal (a calibration can remove it: the GNSS/INS filter compensates these as known);
+/// `rounding` — the output's rounding.
+enum class Nature { drawn, fixed, rounding };
 /// Order of application inside one interval: linear (scale factor, misalignment, in file order) on
 /// the ideal vector, then additive errors (processes, biases, g-sensitivity), then the output stage
 /// (quantization).
@@ -146,6 +152,9 @@ class Effect {
   virtual ~Effect() = default;
   virtual Stage stage() const { return Stage::additive; }
   virtual bool needsTemperature() const { return false; }
+  /// Does the error it adds depend on the ideal signal (a g-sensitivity: the specific force)? The
+  /// linear stage's effects act on the signal by definition and answer false.
+  virtual bool readsSignal() const { return false; }
   /// A realisation; throws InputError when the effect cannot run at ctx.imuRate.
   virtual std::unique_ptr<EffectState> instantiate(const InstanceContext& ctx) const = 0;
 };
@@ -157,6 +166,7 @@ using EffectBuilder = std::unique_ptr<Effect> (*)(const EffectSpec& spec, const 
 struct EffectType {
   const char* name;
   Scope scope;
+  Nature nature;
   const char* summary;
   EffectParams params;
   EffectBuilder build;
@@ -212,7 +222,7 @@ double outliersWhiteDensityOf(const EffectSpec& spec, double imuRate);
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx);
 
 // Registration: one parameter list and one builder per effect file.
-#define SINSIM_EFFECT(name, scope, summary)                                                   \
+#define SINSIM_EFFECT(name, scope, nature, summary)                                           \
   const std::vector<ParamSchema>& paramsOf_##name();                                          \
   std::unique_ptr<Effect> buildEffect_##name(const EffectSpec& spec, const EffectSite& site, \
                                              SpecProblems& problems);

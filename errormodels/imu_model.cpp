@@ -169,6 +169,13 @@ bool ImuErrorModel::needsTemperature() const {
   return false;
 }
 
+bool ImuErrorModel::readsSignal() const {
+  if (!impl_) return false;
+  for (const auto& e : impl_->entries)
+    if (e.effect->readsSignal()) return true;
+  return false;
+}
+
 std::vector<std::string> ImuErrorModel::effectNames() const {
   std::vector<std::string> names;
   if (impl_)

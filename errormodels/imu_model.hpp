@@ -61,6 +61,8 @@ class ImuErrorModel {
   bool empty() const;
   /// Does any effect need a temperature profile?
   bool needsTemperature() const;
+  /// Does any effect add an error that depends on the ideal signal (Effect::readsSignal)?
+  bool readsSignal() const;
   /// Names of the effects, "gyro.x.white" style, in model order (for listings and budgets).
   std::vector<std::string> effectNames() const;
   /// Where the model came from (file name or "inline"), for reports.

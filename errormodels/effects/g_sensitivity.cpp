@@ -19,6 +19,7 @@ class GSensitivityState final : public EffectState {
 class GSensitivity final : public Effect {
  public:
   explicit GSensitivity(const Mat3& G) : G_(G) {}
+  bool readsSignal() const override { return true; }
   std::unique_ptr<EffectState> instantiate(const InstanceContext&) const override {
     return std::make_unique<GSensitivityState>(G_);
   }

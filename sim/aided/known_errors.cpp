@@ -48,8 +48,8 @@ void forEachKnown(const errormodels::ErrorModelSpec& spec, Visit&& visit) {
 }  // namespace
 
 bool isKnownEffect(const std::string& type) {
-  return type == "misalignment" || type == "g_sensitivity" || type == "ramp" ||
-         type == "warmup" || type == "sinusoid" || type == "temperature";
+  const errormodels::EffectType* t = errormodels::findEffectType(type);
+  return t && t->nature == errormodels::Nature::fixed;
 }
 
 errormodels::ErrorModelSpec knownPart(const errormodels::ErrorModelSpec& spec, bool linear) {
@@ -76,8 +76,7 @@ std::vector<std::string> knownLabels(const errormodels::ErrorModelSpec& spec) {
 KnownErrors::KnownErrors(const errormodels::ImuErrorModel& added,
                          const errormodels::ImuErrorModel& linear, double imuRate) {
   if (!added.empty()) added_ = added.instantiate(imuRate, errormodels::StreamKey{});
-  for (const std::string& name : added.effectNames())
-    sensesForce_ = sensesForce_ || name.find("g_sensitivity") != std::string::npos;
+  sensesForce_ = added.readsSignal();
   if (!linear.empty()) linear_ = linear.instantiate(imuRate, errormodels::StreamKey{});
 }
 

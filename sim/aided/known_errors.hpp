@@ -17,8 +17,9 @@
 
 namespace sinsim::sim::aided {
 
-/// True for the effect types the filter compensates as known (misalignment, g_sensitivity, ramp,
-/// warmup, sinusoid, temperature); a scale_factor's off-diagonal part is known too (knownPart).
+/// True for the effect types the filter compensates as known: the registry's `fixed` ones
+/// (errormodels::Nature; today misalignment, g_sensitivity, ramp, warmup, sinusoid,
+/// temperature); a scale_factor's off-diagonal part is known too (knownPart).
 bool isKnownEffect(const std::string& type);
 
 /// The known part of a filter model: its enabled known effects in their lists, and each

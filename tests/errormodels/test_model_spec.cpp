@@ -59,7 +59,7 @@ accel:
   all:
     - {type: temperature, T0: 25 degC, coefficients: [0.1 mg/degC, 0.001 mg/degC^2]}
     - {type: warmup, amplitude: 1 mg, tau: 60 s}
-    - {type: outliers, rate: 0.01 Hz, amplitude: 50 mg}
+    - {type: outliers, rate: 5 Hz, amplitude: 50 mg}
     - {type: bias_jumps, rate: 0.002 Hz, size: 0.5 mg, telegraph: yes}
     - {type: quantization, lsb: 0.1 mg, carry: true}
   x: []
@@ -126,6 +126,32 @@ TEST_CASE("spec: every effect type reads, writes and reads back equal, comments 
         realisation(ImuErrorModel::fromSpec(a, "a"), 5));
   CHECK(realisation(ImuErrorModel::fromSpec(b, "b"), 5) ==
         realisation(ImuErrorModel::fromSpec(c, "c"), 5));
+}
+
+TEST_CASE("spec: an effect of the fixed nature draws nothing, a drawn one with a sigma draws") {
+  // The registry's nature (effects.def) against what each effect of kEveryEffect does alone:
+  // realisations of seeds 5 and 6 are equal for every `fixed` effect and differ for every `drawn`
+  // one that has something to draw (a scale factor without a sigma has not).
+  const ErrorModelSpec every = errorModelFromString(kEveryEffect, "every.yaml");
+  int fixedSeen = 0, drawnSeen = 0;
+  for (Sensor s : {Sensor::gyro, Sensor::accel})
+    for (int l = 0; l < 5; ++l)
+      for (EffectSpec e : every.sensor(s).list(EffectList(l))) {
+        e.enabled = true;
+        const Nature nature = findEffectType(e.type)->nature;
+        const ImuErrorModel m = ImuErrorModel::fromSpec(withEffect({}, s, EffectList(l), e), "one");
+        const bool same = realisation(m, 5) == realisation(m, 6);
+        INFO(e.type);
+        if (nature == Nature::fixed) {
+          CHECK(same);
+          ++fixedSeen;
+        } else if (nature == Nature::drawn && !(e.type == "scale_factor" && !e.find("sigma"))) {
+          CHECK_FALSE(same);
+          ++drawnSeen;
+        }
+      }
+  CHECK(fixedSeen == 6);  // misalignment, g_sensitivity, ramp, sinusoid, temperature, warmup
+  CHECK(drawnSeen == 11);
 }
 
 namespace {
