@@ -197,7 +197,9 @@ nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, doubl
   if (!config_.filter.enabled) return measured;
   const nav::ImuSample c = compensate(measured, measured.dv_b, temperature);
   // A known g-sensitivity again, of the compensated specific force (the sensor's is of the true
-  // one: the accelerometers' own errors times it are milli-g times deg/s/g).
+  // one: the accelerometers' own errors times it are milli-g times deg/s/g). The whole second
+  // pass costs 2 % of an aided aircraft run (examples/known-errors: 1.33 s against 1.30 s with
+  // the g-sensitivity left out), less than splitting the triads' passes would be worth.
   return known_.sensesForce() ? compensate(measured, c.dv_b, temperature) : c;
 }
 
