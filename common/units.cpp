@@ -36,6 +36,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"s", {1.0, D::time()}},
       {"ms", {1e-3, D::time()}},
       {"us", {1e-6, D::time()}},
+      {"ns", {1e-9, D::time()}},
       {"min", {60.0, D::time()}},
       {"h", {kSecondsPerHour, D::time()}},
       {"hr", {kSecondsPerHour, D::time()}},

@@ -259,6 +259,51 @@ inline const char* parseField(const char* p, const char* end, double& value, con
   return after;
 }
 
+/// 1 / (the unit in seconds) of ms, us, ns.
+double unitFactor(const std::string& unit) { return 1.0 / parseUnit(unit).si; }
+
+/// The unit, of ms, us and ns, in which time stamps whose rate read in seconds is `rate` [Hz] give
+/// an IMU's rate (1 Hz to limits::kMaxRate); nullptr when none does.
+const char* timeUnitRead(double rate) {
+  for (const char* unit : {"ms", "us", "ns"}) {
+    const double r = rate * unitFactor(unit);
+    if (r >= 1.0 && r <= limits::kMaxRate) return unit;
+  }
+  return nullptr;
+}
+
+/// How to give the time column's unit.
+std::string timeUnitAdvice(const std::string& unit) {
+  return "in the header (t[" + unit + "]) or in the column mapping (--columns \"t=NAME[" + unit + "]\")";
+}
+
+/// For the no-time-column error: a column whose name holds "time" or "stamp" offered as the time
+/// column, and the sensor columns' hint when none of them was read either.
+std::string noTimeHint(const Record& rec) {
+  std::size_t time = rec.aux.size();
+  for (std::size_t i = 0; i < rec.aux.size() && time == rec.aux.size(); ++i) {
+    const std::string n = lowered(rec.aux[i].name);
+    if (n.find("time") != std::string::npos || n.find("stamp") != std::string::npos) time = i;
+  }
+  bool sensors = false;
+  for (int i = 0; i < 3; ++i) sensors = sensors || rec.hasGyro(i) || rec.hasAccel(i);
+  if (time == rec.aux.size())
+    return sensors ? "" : "; no sensor column was read either: " + sensorColumnsHint(rec);
+  const std::string t = "t=" + rec.aux[time].name + "[s]";
+  if (!sensors && rec.aux.size() == 7) {  // a time and six others: all mapped in their order
+    std::string mapping = t;
+    for (std::size_t i = 0, k = 0; i < 7; ++i)
+      if (i != time) mapping += std::string(",") + kSensorColumns[k++] + "=" + rec.aux[i].name;
+    return "; nor a sensor column: the file's columns are " + rec.aux[0].name + ", ..., " +
+           rec.aux[6].name + "; in their order they would read --columns \"" + mapping +
+           "\" (check the order; give the units in brackets: [ms], [deg/s], [g])";
+  }
+  std::string hint = "; the file's column \"" + rec.aux[time].name + "\" may be it: --columns \"" + t +
+                     "\" (with its unit: s, ms, us or ns)";
+  if (!sensors) hint += "; no sensor column was read either: " + sensorColumnsHint(rec);
+  return hint;
+}
+
 /// The record's lines in order: comment and blank lines, the header (or, without one, the first
 /// data row), then the rows, each parsed into its columns as it comes -- so that a file is read
 /// in chunks and its text never held whole.
@@ -297,11 +342,17 @@ class RowReader {
     for (std::size_t c = 0; c < cols_.size(); ++c) store(rec, cols_[c], std::move(data_[c]));
     if (!rec.t.empty()) {
       detail::checkTime(rec, headerLine_ + 1, options_);
+      if (!(rec.rate_hz >= limits::kMinRate && rec.rate_hz <= limits::kMaxRate))
+        if (const char* unit = timeUnitRead(rec.rate_hz))
+          fail(source_, 0, "the time stamps' rate " + limits::fmt(rec.rate_hz) +
+                               " Hz read in seconds is no IMU's; in " + unit + " it would be " +
+                               limits::fmt(rec.rate_hz * unitFactor(unit)) + " Hz: write the unit, " +
+                               timeUnitAdvice(unit));
     } else {
       if (!options_.rate_hz)
         fail(source_, 0,
-             "the file has no time column (t): give the sample rate, or name its time column in the column mapping "
-             "(t=NAME)");
+             "the file has no time column (t): give the sample rate (--rate), or name its time column in "
+             "the column mapping (--columns \"t=NAME[s]\")" + noTimeHint(rec));
       rec.rate_hz = *options_.rate_hz;
     }
     detail::checkRate(rec.rate_hz, source_, rec.t.empty() ? "the given sample rate" : "the time stamps' rate");
@@ -429,6 +480,12 @@ std::pair<double, double> meanAndSd(const std::vector<double>& x) {
 
 std::vector<std::string> unitWarnings(const Record& record) {
   std::vector<std::string> out;
+  if (!record.t.empty() && record.rate_hz < 1.0)
+    if (const char* unit = timeUnitRead(record.rate_hz))
+      out.push_back("the time stamps give a rate of " + limits::fmt(record.rate_hz) +
+                    " Hz read in seconds, slower than an IMU records; if they are in " + unit + " (" +
+                    limits::fmt(record.rate_hz * unitFactor(unit)) + " Hz), write the unit " +
+                    timeUnitAdvice(unit));
   double g2 = 0.0, f2 = 0.0;
   std::vector<double> gyroSd;
   int accelAxes = 0;

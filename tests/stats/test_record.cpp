@@ -317,3 +317,59 @@ TEST_CASE("record: a static record's units that look forgotten are named", "[rec
   for (int k = 0; k < 100; ++k) mems += std::to_string(0.01 + (k % 2 ? 0.005 : -0.005)) + "\n";
   CHECK(unitWarnings(parseRecord(mems, "mems.csv", o)).empty());
 }
+
+TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with the unit to write",
+          "[record][units]") {
+  // 100 Hz stamps written in ns, us and ms under a plain "t": no IMU records at 1e-7, 1e-4 or
+  // 0.1 Hz. ns and us are refused (outside limits::kMinRate..kMaxRate) with the unit to write;
+  // ms reads (0.1 Hz is a rate) with a warning naming it.
+  auto stamps = [](double perSecond, const std::string& t) {
+    std::string text = t + ",gx\n";
+    for (int k = 0; k < 50; ++k) text += std::to_string(std::llround(k * perSecond / 100.0)) + ",0.01\n";
+    return text;
+  };
+  const std::string ns = errorOf(stamps(1e9, "t"));
+  CHECK(ns.find("the time stamps' rate 1e-07 Hz read in seconds is no IMU's; in ns it would be 100 Hz") !=
+        std::string::npos);
+  CHECK(ns.find("t[ns]") != std::string::npos);
+  CHECK(errorOf(stamps(1e6, "t")).find("in us it would be 100 Hz") != std::string::npos);
+  // Written as the message says, the same stamps read at 100 Hz.
+  CHECK(parseRecord(stamps(1e9, "t[ns]"), "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
+  CHECK(parseRecord(stamps(1e6, "t[us]"), "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
+  const Record ms = parseRecord(stamps(1e3, "t"), "rec.csv", {});
+  CHECK(ms.rate_hz == Approx(0.1));
+  const std::vector<std::string> w = unitWarnings(ms);
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].find("if they are in ms (100 Hz), write the unit in the header (t[ms])") != std::string::npos);
+  CHECK(unitWarnings(parseRecord(stamps(1e3, "t[ms]"), "rec.csv", {})).empty());
+  // A 1 Hz log is an IMU's rate: nothing (a slower one is warned: it may be ms read as s).
+  CHECK(unitWarnings(parseRecord(stamps(100.0, "t"), "rec.csv", {})).empty());
+}
+
+TEST_CASE("record: no time column: a column named like one is offered, with the sensors' mapping",
+          "[record]") {
+  const std::string text = "time_s,gyro_x,gyro_y,gyro_z,accel_x,accel_y,accel_z\n"
+                           "0,1,2,3,4,5,6\n0.01,1,2,3,4,5,6\n0.02,1,2,3,4,5,6\n";
+  const std::string msg = errorOf(text);
+  CHECK(msg.find("rec.csv: the file has no time column (t)") != std::string::npos);
+  // The suggested mapping, given back as --columns, reads the time and the six channels.
+  const std::size_t at = msg.find("--columns \"t=time_s");
+  REQUIRE(at != std::string::npos);
+  const std::size_t from = at + 11, to = msg.find('"', from);
+  RecordOptions o;
+  o.columns = parseColumnMapping(msg.substr(from, to - from));
+  const Record r = parseRecord(text, "rec.csv", o);
+  CHECK(r.rate_hz == Approx(100.0));
+  for (int k = 0; k < 3; ++k) {
+    REQUIRE(r.hasGyro(k));
+    REQUIRE(r.hasAccel(k));
+    CHECK(r.gyro[k][0] == Approx(1.0 + k));
+    CHECK(r.accel[k][0] == Approx(4.0 + k));
+  }
+  // Sensor columns read, a stamp column not: only the time is offered.
+  const std::string some = errorOf("stamp,gx\n0,1\n1,1\n");
+  CHECK(some.find("the file's column \"stamp\" may be it: --columns \"t=stamp[s]\"") != std::string::npos);
+  CHECK(some.find("sensor") == std::string::npos);
+  // Nothing named like a time: the plain message.
+  CHECK(errorOf("gx\n1\n1\n").find("may be it") == std::string::npos);
+}
