@@ -330,7 +330,7 @@ class RowReader {
       return;
     }
     if (blankAt_ != 0) fail(source_, blankAt_, "empty row inside the data");
-    row(l, number);
+    rows_ == 0 ? firstRow(l, number) : row(l, number);
   }
 
   Record finish() {
@@ -342,12 +342,11 @@ class RowReader {
     for (std::size_t c = 0; c < cols_.size(); ++c) store(rec, cols_[c], std::move(data_[c]));
     if (!rec.t.empty()) {
       detail::checkTime(rec, headerLine_ + 1, options_);
-      if (!(rec.rate_hz >= limits::kMinRate && rec.rate_hz <= limits::kMaxRate))
-        if (const char* unit = timeUnitRead(rec.rate_hz))
-          fail(source_, 0, "the time stamps' rate " + limits::fmt(rec.rate_hz) +
-                               " Hz read in seconds is no IMU's; in " + unit + " it would be " +
-                               limits::fmt(rec.rate_hz * unitFactor(unit)) + " Hz: write the unit, " +
-                               timeUnitAdvice(unit));
+      if (const char* unit = timeUnitRead(rec.rate_hz); unit && rec.rate_hz < limits::kMinRate)
+        detail::checkRate(rec.rate_hz, source_, "the time stamps' rate",
+                          "; read in " + std::string(unit) + " it would be " +
+                              limits::fmt(rec.rate_hz * unitFactor(unit)) + " Hz: write the unit " +
+                              timeUnitAdvice(unit));
     } else {
       if (!options_.rate_hz)
         fail(source_, 0,
@@ -370,6 +369,11 @@ class RowReader {
     headerLine_ = noHeader ? number - 1 : number;
     sep_ = options_.separator ? *options_.separator : detectSeparator(l);
     std::vector<std::string_view> fields = splitHeader(l, sep_);
+    // A separator ending the line (a logger's "t,gx,gy,") names no column; quotes around a name
+    // ("gx", as spreadsheets write them) are not part of it.
+    if (!sep_.blanks && fields.size() > 1 && fields.back().empty()) fields.pop_back();
+    for (std::string_view& f : fields)
+      if (f.size() >= 2 && f.front() == '"' && f.back() == '"') f = trimmed(f.substr(1, f.size() - 2));
     std::vector<std::string> numbered;
     if (noHeader) {
       for (std::size_t i = 0; i < fields.size(); ++i) numbered.push_back(std::to_string(i + 1));
@@ -380,6 +384,24 @@ class RowReader {
       for (Column& c : cols_) c.header = "column " + c.header;
     data_.resize(cols_.size());
     if (noHeader) row(raw, number);
+  }
+
+  /// The first row after the header, with a clearer message when it holds no number at all: a
+  /// second header line (a units row).
+  void firstRow(std::string_view l, std::size_t number) {
+    try {
+      row(l, number);
+    } catch (const InputError&) {
+      for (std::string_view f : splitHeader(trimmed(l), sep_)) {
+        double v;
+        const char* b = f.data() + (!f.empty() && f.front() == '+');
+        if (std::from_chars(b, f.data() + f.size(), v).ec == std::errc()) throw;
+      }
+      fail(source_, number,
+           "the line after the header holds no number: a second header line (units?); write units "
+           "in brackets in the header (gx[deg/s], t[ms]) or give them as options (--gyro-unit, "
+           "--accel-unit), and remove the line");
+    }
   }
 
   void row(std::string_view l, std::size_t number) {
@@ -402,6 +424,9 @@ class RowReader {
         if (!sep_.blanks) ++q;  // the separator (blanks were skipped by parseField)
       }
     }
+    // One separator ending the row (a logger's "0.01,0.02,") holds no field.
+    if (!sep_.blanks && q < eol && *q == sep_.c && trimmed(std::string_view(q + 1, std::size_t(eol - q - 1))).empty())
+      q = eol;
     if (q < eol) fail(source_, number, "long row: more than the " + std::to_string(ncol) + " fields of the header");
     ++rows_;
   }

@@ -79,11 +79,11 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
 }
 
 /// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate).
-void checkRate(double rate, const std::string& source, const std::string& what) {
+void checkRate(double rate, const std::string& source, const std::string& what, const std::string& hint) {
   if (!(rate >= limits::kMinRate && rate <= limits::kMaxRate))
     recordError(source, 0, what + " " + limits::fmt(rate) + " Hz is outside what an IMU record can be (" +
                         limits::fmt(limits::kMinRate) + " to " + limits::fmt(limits::kMaxRate) +
-                        " Hz; docs/limits.md)");
+                        " Hz; docs/limits.md)" + hint);
 }
 
 /// Keeps the samples [skip, skip + duration) of the record (RecordOptions::skip_s, duration_s).

@@ -17,8 +17,10 @@ namespace sinsim::errormodels::detail {
 /// and sets rec.rate_hz; first_line is the file line of row 0.
 void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options);
 
-/// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate).
-void checkRate(double rate, const std::string& source, const std::string& what);
+/// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate); `hint`
+/// ends the message.
+void checkRate(double rate, const std::string& source, const std::string& what,
+               const std::string& hint = "");
 
 /// Keeps the samples [skip, skip + duration) of the record (RecordOptions::skip_s, duration_s).
 void applyWindow(Record& rec, const RecordOptions& options);

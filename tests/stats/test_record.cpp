@@ -329,10 +329,11 @@ TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with th
     return text;
   };
   const std::string ns = errorOf(stamps(1e9, "t"));
-  CHECK(ns.find("the time stamps' rate 1e-07 Hz read in seconds is no IMU's; in ns it would be 100 Hz") !=
+  CHECK(ns.find("the time stamps' rate 1e-07 Hz is outside what an IMU record can be (0.001 to 100000 Hz; "
+                "docs/limits.md); read in ns it would be 100 Hz: write the unit in the header (t[ns])") !=
         std::string::npos);
   CHECK(ns.find("t[ns]") != std::string::npos);
-  CHECK(errorOf(stamps(1e6, "t")).find("in us it would be 100 Hz") != std::string::npos);
+  CHECK(errorOf(stamps(1e6, "t")).find("read in us it would be 100 Hz") != std::string::npos);
   // Written as the message says, the same stamps read at 100 Hz.
   CHECK(parseRecord(stamps(1e9, "t[ns]"), "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
   CHECK(parseRecord(stamps(1e6, "t[us]"), "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
@@ -372,4 +373,32 @@ TEST_CASE("record: no time column: a column named like one is offered, with the 
   CHECK(some.find("sensor") == std::string::npos);
   // Nothing named like a time: the plain message.
   CHECK(errorOf("gx\n1\n1\n").find("may be it") == std::string::npos);
+}
+
+TEST_CASE("record: a logger's trailing separators, quoted names and a units row", "[record]") {
+  const std::string plain = "t,gx,az\n0,0.5,-9.8\n0.01,0.25,-9.7\n";
+  const Record ref = parseRecord(plain, "rec.csv", {});
+  auto same = [&](const Record& r) {
+    return r.rate_hz == ref.rate_hz && r.t == ref.t && r.gyro == ref.gyro && r.accel == ref.accel &&
+           r.aux.empty();
+  };
+  // A separator ending each line (with CRLF too) names no column and holds no field.
+  CHECK(same(parseRecord("t,gx,az,\n0,0.5,-9.8,\n0.01,0.25,-9.7,\n", "rec.csv", {})));
+  CHECK(same(parseRecord("t;gx;az;\r\n0;0.5;-9.8;\r\n0.01;0.25;-9.7; \r\n", "rec.csv", {})));
+  CHECK(same(parseRecord("t,gx,az\n0,0.5,-9.8,\n0.01,0.25,-9.7\n", "rec.csv", {})));
+  // Only one, and only empty: a further field is still a long row, an empty field inside one too.
+  CHECK(errorOf("t,gx,az\n0,0.5,-9.8,,\n").find("rec.csv:2: long row") != std::string::npos);
+  CHECK(errorOf("t,gx,az\n0,0.5,-9.8,1\n").find("rec.csv:2: long row") != std::string::npos);
+  CHECK(errorOf("t,gx,,az\n0,0.5,,-9.8\n").find("column 3 has no name") != std::string::npos);
+  // Quoted names are the names; a quoted unit as well.
+  CHECK(same(parseRecord("\"t\",\"gx\",\"az\"\n0,0.5,-9.8\n0.01,0.25,-9.7\n", "rec.csv", {})));
+  const Record deg = parseRecord("\"t [s]\",\"gx [deg/s]\"\n0,1\n0.01,1\n", "rec.csv", {});
+  CHECK(deg.gyro[0][0] == Approx(kDeg));
+  // A units row under the header: named as one, at its line.
+  CHECK(errorOf("t,gx,az\ns,rad/s,m/s^2\n0,0.5,-9.8\n")
+            .find("rec.csv:2: the line after the header holds no number: a second header line (units?)") !=
+        std::string::npos);
+  // A first row with a number and a bad field keeps the field's own message.
+  CHECK(errorOf("t,gx,az\n0,abc,-9.8\n").find("column \"gx\": expected a finite number, got \"abc\"") !=
+        std::string::npos);
 }
