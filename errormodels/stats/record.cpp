@@ -232,6 +232,20 @@ std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
   return cols;
 }
 
+/// What a field that is no number may be: a decimal comma ("0,25" in a ';'-separated file), a
+/// date or clock time ("12:00:00.010", "2024-05-01T12:00:00").
+std::string fieldHint(const std::string& text, const Separator& sep) {
+  auto digits = [&](std::size_t i) { return i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); };
+  for (std::size_t i = 1; i + 1 < text.size(); ++i) {
+    if (text[i] == ',' && sep.c != ',' && digits(i - 1) && digits(i + 1))
+      return " (a decimal comma? numbers are read with a decimal point: 0.25)";
+    if ((text[i] == ':' || text[i] == '-' || text[i] == 'T') && digits(i - 1) && digits(i + 1))
+      return " (a date or clock time? time stamps are read as numbers in a unit: convert them to "
+             "seconds, or leave the column out and give the rate, --rate)";
+  }
+  return "";
+}
+
 /// Parses one number occupying [p, end) up to the next separator or end of line; returns the
 /// position after the field (at a character separator, at the next field after blanks, or at the
 /// end). Throws with line/column context on anything that is not a finite number.
@@ -254,7 +268,8 @@ inline const char* parseField(const char* p, const char* end, double& value, con
     if (res.ec == std::errc::result_out_of_range)
       fail(source, line, "column \"" + col.header + "\": number out of range: \"" + text + "\"");
     if (text.empty()) fail(source, line, "column \"" + col.header + "\": empty field");
-    fail(source, line, "column \"" + col.header + "\": expected a finite number, got \"" + text + "\"");
+    fail(source, line, "column \"" + col.header + "\": expected a finite number, got \"" + text + "\"" +
+                           fieldHint(text, sep));
   }
   return after;
 }

@@ -398,6 +398,11 @@ TEST_CASE("record: a logger's trailing separators, quoted names and a units row"
   CHECK(errorOf("t,gx,az\ns,rad/s,m/s^2\n0,0.5,-9.8\n")
             .find("rec.csv:2: the line after the header holds no number: a second header line (units?)") !=
         std::string::npos);
+  // A decimal comma, a clock time: said what they may be.
+  CHECK(errorOf("t;gx\n0;0,25\n").find("got \"0,25\" (a decimal comma?") != std::string::npos);
+  CHECK(errorOf("t,gx\n2024-05-01T12:00:00.000,1\n").find("(a date or clock time?") != std::string::npos);
+  CHECK(errorOf("t,gx\n12:00:00.010,1\n").find("(a date or clock time?") != std::string::npos);
+  CHECK(parseRecord("t,gx\n0,1e-3\n0.01,-2e-3\n", "rec.csv", {}).gyro[0][1] == -2e-3);
   // A first row with a number and a bad field keeps the field's own message.
   CHECK(errorOf("t,gx,az\n0,abc,-9.8\n").find("column \"gx\": expected a finite number, got \"abc\"") !=
         std::string::npos);
