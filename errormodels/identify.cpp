@@ -22,6 +22,7 @@
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/lattice.hpp"
 #include "errormodels/stats/special.hpp"
+#include "errormodels/stats/spectral_lines.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
 namespace sinsim::errormodels {
@@ -35,6 +36,29 @@ using detail::RangedFit;
 std::string friendly(double si, fit::SensorSignal s) {
   if (s == fit::SensorSignal::Gyro) return significant(si * kDegPerRad) + " deg/s";
   return significant(si / kStandardGravity * 1e3) + " mg";
+}
+
+/// Narrow lines in the record (stats/spectral_lines.hpp; Welch segments of min(4096, N / 8)
+/// samples, as the diagnosis's) from the 12th bin up, where the test's neighbourhood is two-sided
+/// (below it a red continuum can stand out), at a look-elsewhere p below 1e-3: a vibration or a
+/// test stand's oscillation. No fitted term is a line, so the terms absorb it (a GM at its period,
+/// more white noise, a quantization from a line near Nyquist); warned, with what names and adds it.
+std::vector<std::string> lineWarnings(const std::vector<double>& x, double rate, fit::SensorSignal s) {
+  WelchOptions wo;
+  wo.segment_length = 16;
+  while (2 * wo.segment_length <= std::min<std::size_t>(4096, x.size() / 8)) wo.segment_length *= 2;
+  if (wo.segment_length < 128) return {};
+  const PowerSpectrum psd = welchPsd(x, rate, wo);
+  std::vector<std::string> out;
+  for (const WelchLine& l : welchLineTest(psd, 4)) {
+    if (l.p >= 1e-3 || l.bin < 12) continue;
+    out.push_back("a narrow line at " + significant(l.freq, 4) + " Hz, amplitude about " +
+                  friendly(welchLineAmplitude(psd.psd[l.bin], l.ratio, psd.enbw_hz), s) + " (" +
+                  significant(l.ratio, 3) + " times the noise density around it): no fitted term is "
+                  "a line, so the terms absorb it; `sinsim diagnose` names it (sinusoid) and its "
+                  "`--add sinusoid` adds it to the model");
+  }
+  return out;
 }
 
 /// The AR part of an AR + slow fit, for the model comments: order and how it was chosen, the
@@ -346,6 +370,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       ax.allan =
           allanDeviation(x, record.rate_hz, AllanVariant::Overlapping, ao);
       const CurvePoints pts = detail::usablePoints(ax.allan);
+      for (std::string& w : lineWarnings(x, record.rate_hz, sensor))
+        warnings[slot].push_back(std::string(c.name) + ": " + std::move(w));
 
       std::vector<double> den;
       if (opt.denoise == DenoiseChoice::Db5) {

@@ -559,3 +559,26 @@ TEST_CASE("a gyro record in deg/s read as rad/s is named, a plausible one is not
   CHECK(w.find("gyro mean |w| = 0.64") != std::string::npos);  // |(0.43, -0.40, -0.26)| = 0.642
   CHECK(warned("deg/s").empty());
 }
+
+TEST_CASE("a vibration line in the record is warned, with its frequency and size", "[identify][lines]") {
+  // The simulator's sinusoid (0.05 deg/s at 7.3 Hz, interval means at 100 Hz: 0.9913 of it) on gx
+  // beside white noise of 0.3 deg/s per sample on every gyro; no fitted term is a line.
+  const std::string model =
+      "gyro:\n  all: [{type: white, density: 0.03 deg/s/sqrt(Hz)}]\n"
+      "  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 7.3 Hz}]\n";
+  const Record r = staticRecord(model, 100.0, 1200.0, 8);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Latent;
+  const auto id = identify(r, o);
+  std::vector<std::string> lines;
+  for (const std::string& w : id.warnings)
+    if (w.find("narrow line") != std::string::npos) lines.push_back(w);
+  REQUIRE(lines.size() == 1);
+  INFO(lines[0]);
+  CHECK(lines[0].rfind("gx: a narrow line at 7.3", 0) == 0);
+  const std::size_t at = lines[0].find("amplitude about ");
+  REQUIRE(at != std::string::npos);
+  const double a = std::stod(lines[0].substr(at + 16));  // deg/s
+  CHECK(a > 0.8 * 0.05 * 0.9913);
+  CHECK(a < 1.1 * 0.05 * 0.9913);
+}

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "errormodels/stats/spectral_lines.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
 using namespace sinsim::errormodels;
@@ -170,4 +171,58 @@ TEST_CASE("padded power sum equals the zero-padded DFT summed directly", "[psd][
   }
   CHECK_THROWS_AS(paddedPowerSum(std::vector<double>(8, 1.0), 0, [](double) { return 1.0; }), sinsim::InputError);
   CHECK_THROWS_AS(paddedPowerSum(std::vector<double>(1, 1.0), 4, [](double) { return 1.0; }), sinsim::InputError);
+}
+
+TEST_CASE("Welch line test: a sinusoid is found and sized, white and red continua raise no line",
+          "[psd][lines]") {
+  // Records of 2^17 samples at 100 Hz, Welch segments of 4096 (31 bins per Hz: df = 0.0244 Hz).
+  const double fs = 100.0;
+  const std::size_t n = std::size_t(1) << 17;
+  WelchOptions wo;
+  wo.segment_length = 4096;
+  std::mt19937_64 rng(2027);  // stream "welch-lines"
+  std::normal_distribution<double> g(0.0, 1.0);
+  // A line in unit white noise: at a bin's centre its amplitude is exact up to the noise; half a
+  // bin off, the Hann window's scalloping loss (1.42 dB: 0.849 of the amplitude) at most.
+  const double df = fs / double(wo.segment_length);
+  for (const auto& [bin, A] : {std::pair{300.5, 0.2}, std::pair{300.0, 0.2}, std::pair{1500.0, 0.1}}) {
+    std::vector<double> x = draws(rng, g, n);
+    const double f = bin * df;
+    for (std::size_t k = 0; k < n; ++k) x[k] += A * std::sin(2 * M_PI * f * double(k) / fs + 0.3);
+    const PowerSpectrum p = welchPsd(x, fs, wo);
+    const std::vector<WelchLine> lines = welchLineTest(p, 4);
+    REQUIRE_FALSE(lines.empty());
+    INFO("bin " << bin << " amplitude " << A);
+    CHECK(lines[0].p < 1e-6);
+    CHECK(std::fabs(lines[0].freq - f) <= df);
+    const double a = welchLineAmplitude(p.psd[lines[0].bin], lines[0].ratio, p.enbw_hz);
+    CHECK(a / A > (bin == std::floor(bin) ? 0.9 : 0.8));
+    CHECK(a / A < 1.1);
+  }
+  // Continua: 300 white records, 100 first-order GM (tau 20 samples to 20 s) and 100 random walks;
+  // a line at p < 1e-3 from bin 12 up (the fit's warning) may come at most at that rate: <= 3 of
+  // 300 (binomial, P(> 3) = 2.6e-4 at 1e-3 each), <= 2 of 100.
+  auto warned = [&](const std::vector<double>& x) {
+    for (const WelchLine& l : welchLineTest(welchPsd(x, fs, wo), 4))
+      if (l.p < 1e-3 && l.bin >= 12) return true;
+    return false;
+  };
+  int white = 0, gm = 0, walk = 0;
+  for (int s = 0; s < 300; ++s) white += warned(draws(rng, g, n));
+  for (int s = 0; s < 100; ++s) {
+    const double a = std::exp(-1.0 / (std::pow(10.0, 1.3 + 2.0 * s / 100.0)));
+    std::vector<double> x = draws(rng, g, n), y(n), w(n);
+    double v = 0.0, acc = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      v = a * v + std::sqrt(1 - a * a) * g(rng);
+      y[k] = x[k] + 3.0 * v;
+      acc += 0.01 * g(rng);
+      w[k] = x[k] + acc;
+    }
+    gm += warned(y);
+    walk += warned(w);
+  }
+  CHECK(white <= 3);
+  CHECK(gm <= 2);
+  CHECK(walk <= 2);
 }

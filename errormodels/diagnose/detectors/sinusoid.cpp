@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "errormodels/stats/special.hpp"
+#include "errormodels/stats/spectral_lines.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -21,52 +22,11 @@ struct WelchLine {
   double z = 0, freq = 0;  // [-], [Hz]
 };
 
-/// Narrow-line test on the raw Welch PSD: each bin against the median of its neighbourhood
-/// (bins k-12..k-3 and k+3..k+12; the Hann main lobe is +-2 bins), chi-square with the Welch EDF
-/// nu = 2 K / 1.056 (K segments, 50 % overlap Hann: Welch 1967, Percival & Walden 1993 eq. 292b),
-/// Bonferroni over the bins tested. Returns up to `count` bins beyond the limit, most significant
-/// first (equal p, as where they underflow to 0 on a strong line's main lobe: the larger ratio
-/// first, the lobe's peak before its flanks), each more than 3 bins from the ones before (a line's
-/// main lobe, or one red stretch).
+/// The shared Welch line test (stats/spectral_lines.hpp), each line's p as a z.
 std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
-  const std::size_t nbins = p.psd.size();
-  if (nbins < 40) return {};
-  const double nu = 2.0 * double(p.segments) / 1.056;
-  const double medFactor = std::pow(1 - 2 / (9 * nu), 3);  // median of chi2_nu / nu (Wilson-Hilferty)
-  struct Hit {
-    double p, ratio;
-    std::size_t k;
-  };
-  std::vector<Hit> hits;  // (p of the bin, its ratio to the neighbourhood, bin)
-  std::size_t tested = 0;
-  for (std::size_t k = 3; k + 3 < nbins; ++k) {
-    std::vector<double> nb;
-    for (std::ptrdiff_t d = -12; d <= 12; ++d) {
-      if (std::abs(d) < 3) continue;
-      const std::ptrdiff_t j = std::ptrdiff_t(k) + d;
-      if (j >= 1 && j < std::ptrdiff_t(nbins)) nb.push_back(p.psd[std::size_t(j)]);
-    }
-    std::nth_element(nb.begin(), nb.begin() + std::ptrdiff_t(nb.size() / 2), nb.end());
-    const double ref = nb[nb.size() / 2] / medFactor;
-    if (!(ref > 0)) continue;
-    ++tested;
-    const double ratio = p.psd[k] / ref;
-    if (ratio < 4) continue;
-    hits.push_back({regularizedGammaQ(nu / 2, ratio * nu / 2), ratio, k});  // P(chi2_nu / nu > ratio)
-  }
-  std::sort(hits.begin(), hits.end(),
-            [](const Hit& a, const Hit& b) { return a.p != b.p ? a.p < b.p : a.ratio > b.ratio; });
   std::vector<WelchLine> out;
-  std::vector<std::size_t> taken;
-  for (const auto& [pk, ratio, k] : hits) {
-    const double pAll = std::min(1.0, double(tested) * pk);
-    if (pAll >= 1 || out.size() >= count) break;
-    bool near = false;
-    for (auto t : taken) near = near || (k > t ? k - t : t - k) <= 3;
-    if (near) continue;
-    taken.push_back(k);
-    out.push_back({pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, p.f[k]});
-  }
+  for (const errormodels::WelchLine& l : welchLineTest(p, count))
+    out.push_back({l.p > 0 ? zFromTwoSidedP(l.p) : 40.0, l.freq});
   return out;
 }
 
