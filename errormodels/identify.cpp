@@ -33,9 +33,9 @@ using detail::CurvePoints;
 using detail::RangedFit;
 
 /// A value of a channel in the unit users read it in (deg/s, mg), for comments.
-std::string friendly(double si, fit::SensorSignal s) {
-  if (s == fit::SensorSignal::Gyro) return significant(si * kDegPerRad) + " deg/s";
-  return significant(si / kStandardGravity * 1e3) + " mg";
+std::string friendly(double si, fit::SensorSignal s, int digits = 6) {
+  if (s == fit::SensorSignal::Gyro) return significant(si * kDegPerRad, digits) + " deg/s";
+  return significant(si / kStandardGravity * 1e3, digits) + " mg";
 }
 
 /// Narrow lines in the record (stats/spectral_lines.hpp; Welch segments of min(4096, N / 8)
@@ -53,7 +53,7 @@ std::vector<std::string> lineWarnings(const std::vector<double>& x, double rate,
   for (const WelchLine& l : welchLineTest(psd, 4)) {
     if (l.p >= 1e-3 || l.bin < 12) continue;
     out.push_back("a narrow line at " + significant(l.freq, 4) + " Hz, amplitude about " +
-                  friendly(welchLineAmplitude(psd.psd[l.bin], l.ratio, psd.enbw_hz), s) + " (" +
+                  friendly(welchLineAmplitude(psd.psd[l.bin], l.ratio, psd.enbw_hz), s, 3) + " (" +
                   significant(l.ratio, 3) + " times the noise density around it): no fitted term is "
                   "a line, so the terms absorb it; `sinsim diagnose` names it (sinusoid) and its "
                   "`--add sinusoid` adds it to the model");
