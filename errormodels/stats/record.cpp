@@ -315,7 +315,9 @@ std::string noTimeHint(const Record& rec) {
   }
   std::string hint = "; the file's column \"" + rec.aux[time].name + "\" may be it: --columns \"" + t +
                      "\" (with its unit: s, ms, us or ns)";
-  if (!sensors) hint += "; no sensor column was read either: " + sensorColumnsHint(rec);
+  if (!sensors)  // not sensorColumnsHint: its six-in-order mapping would take the time column too
+    hint += "; no sensor column was read either: name them gx gy gz ax ay az in the header or map "
+            "them beside it: --columns \"" + t + ",gx=NAME,...,az=NAME\"";
   return hint;
 }
 
