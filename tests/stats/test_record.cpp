@@ -372,9 +372,9 @@ TEST_CASE("record: no time column: a column named like one is offered, with the 
   CHECK(some.find("the file's column \"stamp\" may be it: --columns \"t=stamp[s]\"") != std::string::npos);
   CHECK(some.find("sensor") == std::string::npos);
   // A time and five others: no in-order mapping (it would take the time column for gx).
-  const std::string six = errorOf("time,a,b,c,d,e\n0,1,2,3,4,5\n");
-  CHECK(six.find("--columns \"t=time[s],gx=NAME,...,az=NAME\"") != std::string::npos);
-  CHECK(six.find("gx=time") == std::string::npos);
+  const std::string six = errorOf("stamp,a,b,c,d,e\n0,1,2,3,4,5\n");
+  CHECK(six.find("--columns \"t=stamp[s],gx=NAME,...,az=NAME\"") != std::string::npos);
+  CHECK(six.find("gx=stamp") == std::string::npos);
   // Nothing named like a time: the plain message.
   CHECK(errorOf("gx\n1\n1\n").find("may be it") == std::string::npos);
 }
