@@ -45,8 +45,7 @@ std::string friendly(double si, fit::SensorSignal s, int digits = 6) {
 /// more white noise, a quantization from a line near Nyquist); warned, with what names and adds it.
 std::vector<std::string> lineWarnings(const std::vector<double>& x, double rate, fit::SensorSignal s) {
   WelchOptions wo;
-  wo.segment_length = 16;
-  while (2 * wo.segment_length <= std::min<std::size_t>(4096, x.size() / 8)) wo.segment_length *= 2;
+  wo.segment_length = lineTestSegment(x.size());
   if (wo.segment_length < 128) return {};
   const PowerSpectrum psd = welchPsd(x, rate, wo);
   std::vector<std::string> out;

@@ -1,5 +1,6 @@
 // AVAR, banded PSD and ACF of one series on the grids of the comparison (series_stats.hpp).
 #include "errormodels/diagnose/series_stats.hpp"
+#include "errormodels/stats/spectral_lines.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,10 +81,7 @@ Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o) {
   s.n = n;
   s.factors = halfOctaveFactors(std::max<std::size_t>(1, std::size_t(double(n) * o.maxFactorFraction)));
   std::size_t L = o.psdSegment;
-  if (L == 0) {
-    L = 16;
-    while (L * 2 <= n / 8 && L * 2 <= 4096) L *= 2;
-  }
+  if (L == 0) L = lineTestSegment(n);
   if (L > n) throw InputError("PSD segment of " + std::to_string(L) + " samples exceeds the record");
   s.psdSegment = L;
   psdBands(s, o.psdBands);

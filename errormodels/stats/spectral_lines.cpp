@@ -43,6 +43,12 @@ std::vector<WelchLine> welchLineTest(const PowerSpectrum& p, std::size_t count) 
   return out;
 }
 
+std::size_t lineTestSegment(std::size_t n) {
+  std::size_t L = 16;
+  while (L * 2 <= n / 8 && L * 2 <= 4096) L *= 2;
+  return L;
+}
+
 double welchLineAmplitude(double psd, double ratio, double enbw_hz) {
   return std::sqrt(2.0 * std::max(0.0, psd - psd / ratio) * enbw_hz);
 }

@@ -18,6 +18,10 @@ struct WelchLine {
   std::size_t bin = 0; ///< the bin's index
 };
 
+/// The Welch segment the line test is run with on n samples: the largest power of two <= n / 8
+/// (about 15 averaged segments) up to 4096, at least 16.
+std::size_t lineTestSegment(std::size_t n);
+
 /// Narrow-line test on a raw Welch PSD: each bin against the median of its neighbourhood
 /// (bins k-12..k-3 and k+3..k+12; the Hann main lobe is +-2 bins), chi-square with the Welch EDF
 /// nu = 2 K / 1.056 (K segments, 50 % overlap Hann: Welch 1967, Percival & Walden 1993 eq. 292b),
