@@ -145,10 +145,13 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   w.rounded = roundedScatter(real);
   const auto modelEffects = effectTypesOn(model, sensor, c % 3);
   w.modelJumps = std::find(modelEffects.begin(), modelEffects.end(), "bias_jumps") != modelEffects.end();
-  w.propose = [&record, c, lattice, &d, &setup, effects = modelEffects, rounding](
+  // The model's own lines count as taken: the record shows them, and the model has them.
+  w.propose = [&record, c, lattice, &d, &setup, effects = modelEffects, rounding, own = modelLines(model, c)](
                   const std::vector<double>& series, const std::vector<std::vector<double>>& taken,
                   const std::vector<Line>& linesTaken, const std::vector<double>& steps) {
-    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, linesTaken, steps);
+    std::vector<Line> lines = own;
+    lines.insert(lines.end(), linesTaken.begin(), linesTaken.end());
+    return buildCandidates(record, c, series, lattice, d.adev.x, setup, effects, taken, rounding, lines, steps);
   };
   selectFindings(w, o.threshold, o.furtherThreshold());
   w.propose = nullptr;  // it refers to this call's record and setup

@@ -106,6 +106,20 @@ std::optional<std::vector<double>> soleBaseAr(const ErrorModelSpec& model, int c
   return baseAr(model, channel, rate);
 }
 
+std::vector<Line> modelLines(const ErrorModelSpec& model, int channel) {
+  const SensorSpec& s = model.sensor(sensorOf(channel));
+  std::vector<Line> out;
+  for (const auto* list : {&s.all, &s.list(axisList(channel % 3))})
+    for (const auto& e : *list) {
+      if (e.type != "sinusoid" || !e.enabled) continue;
+      const ParamSpec* f = e.find("frequency");
+      const ParamSpec* a = e.find("amplitude");
+      if (f && a && f->values.size() == 1 && a->values.size() == 1)
+        out.push_back({f->values[0], std::fabs(a->values[0])});
+    }
+  return out;
+}
+
 ErrorModelSpec editedModel(ErrorModelSpec model, const ModelEdits& edits) {
   for (double s : edits.varianceScale)
     if (!(std::isfinite(s) && s > 0))

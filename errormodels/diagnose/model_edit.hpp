@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "errormodels/diagnose/candidate.hpp"
 #include "errormodels/model_spec.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
@@ -21,6 +22,11 @@ std::optional<std::vector<double>> baseAr(const ErrorModelSpec& model, int chann
 /// lattice, slow terms) a Burg refit on the record would take their noise into the AR as well,
 /// and the model would count it twice.
 std::optional<std::vector<double>> soleBaseAr(const ErrorModelSpec& model, int channel, double rate);
+
+/// The enabled `sinusoid` effects acting on channel c (0..5 = gx..az; its axis list or `all`):
+/// frequency [Hz] and amplitude [SI]. A line the record shows at one of them is the model's own
+/// (detectors/sinusoid.cpp treats them as lines taken), not a line the model lacks.
+std::vector<Line> modelLines(const ErrorModelSpec& model, int channel);
 
 /// What improve() changes, per channel (0..5 = gx..az).
 struct ModelEdits {
