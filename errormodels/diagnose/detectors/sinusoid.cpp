@@ -1,5 +1,6 @@
 // Sinusoid: a narrow line in the Welch PSD, its frequency refined on the whole record (golden
-// section on the periodogram within +-1.5 Welch bins), then least-squares amplitude and phase.
+// section on the periodogram within +-1.5 Welch bins), then least-squares amplitude and phase
+// (stats/line_fit.hpp).
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/significance.hpp"
 
@@ -9,6 +10,7 @@
 #include <complex>
 #include <optional>
 
+#include "errormodels/stats/line_fit.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/spectral_lines.hpp"
 #include "errormodels/stats/spectrum.hpp"
@@ -30,85 +32,6 @@ std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
   return out;
 }
 
-/// Periodogram of the record at f [Hz]: y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt;
-/// returns a^2 + b^2. cos/sin by a rotation recurrence re-anchored every 4096 samples.
-double power(const DetectorContext& ctx, double f, double& a, double& b) {
-  const auto& y = ctx.y;
-  const std::size_t N = ctx.N;
-  const double w = 2 * M_PI * f * ctx.dt;
-  double c = 0, s = 0;
-  for (std::size_t k0 = 0; k0 < N; k0 += 4096) {
-    double ck = std::cos(w * (double(k0) + 0.5)), sk = std::sin(w * (double(k0) + 0.5));
-    const double cw = std::cos(w), sw = std::sin(w);
-    for (std::size_t k = k0; k < std::min(N, k0 + 4096); ++k) {
-      const double v = y[k] - ctx.mean;
-      c += v * ck, s += v * sk;
-      const double cn = ck * cw - sk * sw;
-      sk = sk * cw + ck * sw, ck = cn;
-    }
-  }
-  a = 2 * c / double(N), b = 2 * s / double(N);
-  return a * a + b * b;
-}
-
-/// The record's periodogram near a frequency fc, for |f - fc| <= halfWidth: y - mean demodulated
-/// by fc and summed per block of B samples with the block's moments in time, so that
-///   X(f) = sum_k v_k e^{-i w (k + 1/2)} = sum_b e^{-i d (bB + 1/2)} sum_m (-i d B)^m / m! U_bm,
-///   U_bm = sum_j (j / B)^m v_{bB+j} e^{-i wc (bB + j + 1/2)},  d = w - wc,
-/// exact to rounding (|d| B <= 1/2: the Taylor series of e^{-i d j} ends at 16 terms below 1e-19).
-/// One pass over the record; each frequency then costs 16 N / B instead of N.
-class LinePeriodogram {
- public:
-  LinePeriodogram(const DetectorContext& ctx, double fc, double halfWidth) : dt_(ctx.dt) {
-    wc_ = 2 * M_PI * fc * ctx.dt;
-    const double dmax = 2 * M_PI * halfWidth * ctx.dt;
-    B_ = std::size_t(std::clamp(0.5 / std::max(dmax, 1e-300), 1.0, 65536.0));
-    const std::size_t N = ctx.N, nb = (N + B_ - 1) / B_;
-    U_.assign(nb * kTerms, {0.0, 0.0});
-    for (std::size_t b = 0; b < nb; ++b) {
-      const std::size_t k0 = b * B_, k1 = std::min(N, k0 + B_);
-      // e^{-i wc (k + 1/2)} by rotation from the block's start (B <= 65536 steps: drift ~1e-12)
-      std::complex<double> e = std::polar(1.0, -wc_ * (double(k0) + 0.5));
-      const std::complex<double> step = std::polar(1.0, -wc_);
-      std::complex<double>* Ub = &U_[b * kTerms];
-      for (std::size_t k = k0; k < k1; ++k, e *= step) {
-        const std::complex<double> u = (ctx.y[k] - ctx.mean) * e;
-        const double x = double(k - k0) / double(B_);
-        double xm = 1;
-        for (std::size_t m = 0; m < kTerms; ++m, xm *= x) Ub[m] += xm * u;
-      }
-    }
-  }
-
-  /// a^2 + b^2 of y - mean ~ a cos(w t) + b sin(w t), t = (k + 0.5) dt, at f [Hz].
-  double power(double f, std::size_t N) const {
-    const double d = 2 * M_PI * f * dt_ - wc_;
-    std::array<std::complex<double>, kTerms> coef;
-    std::complex<double> c = 1.0;
-    for (std::size_t m = 0; m < kTerms; ++m) {
-      coef[m] = c;
-      c *= std::complex<double>(0.0, -d * double(B_)) / double(m + 1);
-    }
-    std::complex<double> X = 0.0, rot = std::polar(1.0, -d * 0.5);
-    const std::complex<double> blockStep = std::polar(1.0, -d * double(B_));
-    const std::size_t nb = U_.size() / kTerms;
-    for (std::size_t b = 0; b < nb; ++b, rot *= blockStep) {
-      const std::complex<double>* Ub = &U_[b * kTerms];
-      std::complex<double> s = 0.0;
-      for (std::size_t m = 0; m < kTerms; ++m) s += coef[m] * Ub[m];
-      X += rot * s;
-    }
-    const double a = 2 * X.real() / double(N), bb = -2 * X.imag() / double(N);
-    return a * a + bb * bb;
-  }
-
- private:
-  static constexpr std::size_t kTerms = 16;
-  double dt_, wc_;
-  std::size_t B_;
-  std::vector<std::complex<double>> U_;  // per block, kTerms moments
-};
-
 /// The search window of a Welch line at lineFreq [Hz]: +-1.5 Welch bins, inside (0, Nyquist].
 struct LineWindow {
   double fa = 0, fb = 0;  // [Hz]
@@ -118,25 +41,11 @@ LineWindow lineWindow(const DetectorContext& ctx, double lineFreq) {
   return {std::max(df * 0.25, lineFreq - 1.5 * df), std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df)};
 }
 
-/// The periodogram's peak within the window: a coarse scan (the periodogram of the full record
-/// has many side lobes inside 3 Welch bins), then golden section.
+/// The periodogram's peak within the window (refineLineFrequency): a scan of about 6 points per
+/// Welch bin's worth of Fourier frequencies, 50 to 2000.
 double refineFrequency(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w) {
-  const double fa = w.fa, fb = w.fb;
-  double bestF = 0.5 * (fa + fb), bestP = -1;
   const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(ctx.N) / double(ctx.setup.psdSegment))));
-  for (int i = 0; i <= scan; ++i) {
-    const double f = fa + (fb - fa) * i / scan;
-    const double pw = pg.power(f, ctx.N);
-    if (pw > bestP) bestP = pw, bestF = f;
-  }
-  double a = std::max(fa, bestF - (fb - fa) / scan), b = std::min(fb, bestF + (fb - fa) / scan);
-  const double gr = (std::sqrt(5.0) - 1) / 2;
-  for (int i = 0; i < 50; ++i) {
-    const double c1 = b - gr * (b - a), c2 = a + gr * (b - a);
-    if (pg.power(c1, ctx.N) > pg.power(c2, ctx.N)) b = c2;
-    else a = c1;
-  }
-  return 0.5 * (a + b);
+  return refineLineFrequency(pg, w.fa, w.fb, scan);
 }
 
 /// The line confirmed on the whole record's periodogram: its ordinate at the refined frequency f0
@@ -155,12 +64,12 @@ double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const Li
   const double T = double(ctx.N) * ctx.dt;
   std::vector<double> ords;
   for (double j = std::ceil(w.fa * T); j / T <= w.fb; j += 1)
-    if (std::fabs(j / T - f0) > 2 / T) ords.push_back(pg.power(j / T, ctx.N));
+    if (std::fabs(j / T - f0) > 2 / T) ords.push_back(pg.power(j / T));
   if (ords.size() < 8) return 40.0;  // too few ordinates to judge: the Welch test stands alone
   std::nth_element(ords.begin(), ords.begin() + std::ptrdiff_t(ords.size() / 2), ords.end());
   const double median = ords[ords.size() / 2];
   if (!(median > 0)) return 40.0;
-  const double x = pg.power(f0, ctx.N) * std::log(2.0) / median;
+  const double x = pg.power(f0) * std::log(2.0) / median;
   const double lnP = std::log(2.0 * double(ords.size())) - x;
   if (lnP >= 0) return 0.0;
   return lnP < -700 ? 40.0 : std::min(40.0, zFromTwoSidedP(std::exp(lnP)));
@@ -293,9 +202,9 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4 + ctx.linesTaken.size())) {
     if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
     const LineWindow win = lineWindow(ctx, line.freq);
-    const LinePeriodogram pg(ctx, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
+    const LinePeriodogram pg(ctx.y, ctx.mean, ctx.dt, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
     const double f = refineFrequency(ctx, pg, win);
-    if (!ctx.linesTaken.empty() && nearTaken(f, std::sqrt(pg.power(f, ctx.N)))) continue;
+    if (!ctx.linesTaken.empty() && nearTaken(f, std::sqrt(pg.power(f)))) continue;
     const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
     if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
   }
@@ -304,20 +213,15 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   if (const WelchLine low = lowLineTest(ctx); low.z > lineZ) {
     const double T = double(ctx.N) * ctx.dt;
     const LineWindow win{low.freq - 1.0 / T, low.freq + 1.0 / T};
-    const LinePeriodogram pg(ctx, low.freq, 1.0 / T);
+    const LinePeriodogram pg(ctx.y, ctx.mean, ctx.dt, low.freq, 1.0 / T);
     const double f = refineFrequency(ctx, pg, win);
-    if (ctx.linesTaken.empty() || !nearTaken(f, std::sqrt(pg.power(f, ctx.N)))) lineZ = low.z, f0 = f;
+    if (ctx.linesTaken.empty() || !nearTaken(f, std::sqrt(pg.power(f)))) lineZ = low.z, f0 = f;
   }
   if (!(f0 > 0)) return {};
   const Units& u = ctx.units;
-  double ac, bs;
-  power(ctx, f0, ac, bs);  // y ~ ac cos(w t) + bs sin(w t), t = (k + 0.5) dt
-  const double At = std::hypot(ac, bs);
-  const double x = M_PI * f0 * ctx.dt;
-  const double sinc = x > 0 ? std::sin(x) / x : 1.0;  // the interval average of a sinusoid
-  const double A = At / sinc, phase = std::atan2(ac, bs);
-  std::vector<double> sig(ctx.N);
-  for (std::size_t k = 0; k < ctx.N; ++k) sig[k] = At * std::sin(2 * M_PI * f0 * (double(k) + 0.5) * ctx.dt + phase);
+  const FittedLine fitted = fitLineAt(ctx.y, ctx.mean, ctx.dt, f0);
+  const double At = fitted.sampled, A = fitted.amplitude, phase = fitted.phase;
+  std::vector<double> sig = lineSamples(fitted, ctx.dt, ctx.N);
   Candidate c;
   c.effect = "sinusoid";
   c.freeSize = false;
