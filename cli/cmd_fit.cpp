@@ -31,6 +31,7 @@ struct FitArgs {
   RecordArgs record;
   long long max_order = 20;
   std::string nav_step = "10 ms";
+  std::string lines = "fit";
   bool quiet = false;
   unsigned threads = 0;
 };
@@ -116,6 +117,9 @@ int runFit(const FitArgs& a) {
   opt.arOnDenoised = a.ar_on_denoised;
   opt.axes = splitAxes(a.axes);
   opt.navigationStep = parseOptionQuantity(a.nav_step, Dimension::time(), "--nav-step");
+  if (a.lines != "fit" && a.lines != "warn")
+    throw InputError("--lines: expected fit or warn, got \"" + limits::echo(a.lines) + "\"");
+  opt.fitLines = a.lines == "fit";
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
   if (opt.arOnDenoised && opt.kind != errormodels::IdentifyKind::Ar)
@@ -154,6 +158,9 @@ void addFitCommand(CLI::App& app, Action& action) {
   c->add_option("--criterion", a->criterion, "order criterion: mdl (default) | bic | aic | fpe | paper");
   c->add_option("--max-order", a->max_order, "largest AR order tried (default 20)");
   c->add_option("--nav-step", a->nav_step, "navigation step of the paper's order rule (default \"10 ms\")");
+  c->add_option("--lines", a->lines,
+                "narrow lines (a vibration): fit = written as sinusoids and taken out before the noise terms "
+                "are fitted (default); warn = left in the record, with a warning");
   c->add_option("--denoise", a->denoise, "db5 | none (default none): db5 denoise before the ACF");
   c->add_option("--denoise-rule", a->denoise_rule, "universal (default) | sure");
   c->add_option("--denoise-mode", a->denoise_mode, "soft (default) | hard");

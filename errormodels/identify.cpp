@@ -18,11 +18,12 @@
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/gm_process.hpp"
 #include "errormodels/identify_auto.hpp"
+#include "errormodels/identify_lines.hpp"
 #include "errormodels/identify_terms.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/lattice.hpp"
 #include "errormodels/stats/special.hpp"
-#include "errormodels/stats/spectral_lines.hpp"
+#include "errormodels/stats/line_fit.hpp"
 #include "errormodels/stats/spectrum.hpp"
 
 namespace sinsim::errormodels {
@@ -38,26 +39,18 @@ std::string friendly(double si, fit::SensorSignal s, int digits = 6) {
   return significant(si / kStandardGravity * 1e3, digits) + " mg";
 }
 
-/// Narrow lines in the record (stats/spectral_lines.hpp; Welch segments of min(4096, N / 8)
-/// samples, as the diagnosis's) from the 12th bin up, where the test's neighbourhood is two-sided
-/// (below it a red continuum can stand out), at a look-elsewhere p below 1e-3: a vibration or a
-/// test stand's oscillation. No fitted term is a line, so the terms absorb it (a GM at its period,
-/// more white noise, a quantization from a line near Nyquist); warned, with what names and adds it.
-std::vector<std::string> lineWarnings(const std::vector<double>& x, double rate, fit::SensorSignal s) {
-  WelchOptions wo;
-  wo.segment_length = lineTestSegment(x.size());
-  if (wo.segment_length < 128) return {};
-  const PowerSpectrum psd = welchPsd(x, rate, wo);
-  std::vector<std::string> out;
-  for (const WelchLine& l : welchLineTest(psd, 4)) {
-    if (l.p >= 1e-3 || l.bin < 12) continue;
-    out.push_back("a narrow line at " + significant(l.freq, 4) + " Hz, amplitude about " +
-                  friendly(welchLineAmplitude(psd.psd[l.bin], l.ratio, psd.enbw_hz), s, 3) + " (" +
-                  significant(l.ratio, 3) + " times the noise density around it): no fitted term is "
-                  "a line, so the terms absorb it; `sinsim diagnose` names it (sinusoid) and its "
-                  "`--add sinusoid` adds it to the model");
-  }
-  return out;
+/// What fit says of a line it found: taken out and written as a sinusoid, or (not fitted) that the
+/// terms absorb it.
+std::string lineMessage(const detail::RecordLine& l, fit::SensorSignal s, bool fitted) {
+  const std::string found = "a narrow line at " + significant(fitted ? l.fitted.frequency : l.welch.freq, fitted ? 6 : 4) +
+                            " Hz, amplitude " + (fitted ? "" : "about ") +
+                            friendly(fitted ? l.fitted.amplitude : l.welchAmplitude, s, 3) + " (" +
+                            significant(l.welch.ratio, 3) + " times the noise density around it): ";
+  if (fitted)
+    return found + "written as a sinusoid and taken out of the record before its noise terms were fitted "
+                   "(`--lines warn` leaves it in)";
+  return found + "no fitted term is a line, so the terms absorb it; `sinsim diagnose` names it (sinusoid) "
+                 "and its `--add sinusoid` adds it to the model";
 }
 
 /// The AR part of an AR + slow fit, for the model comments: order and how it was chosen, the
@@ -154,6 +147,8 @@ std::vector<double> AxisIdentification::modelAdev(const std::vector<double>& tau
     const auto a = fit::allanModelAdev(theta, tau);
     for (std::size_t i = 0; i < tau.size(); ++i) avar[i] += a[i] * a[i];
   }
+  for (const FittedLine& l : written.lines)
+    for (std::size_t i = 0; i < tau.size(); ++i) avar[i] += sinusoidAllanVariance(l.amplitude, l.frequency, tau[i]);
   for (double& v : avar) v = std::sqrt(v);
   return avar;
 }
@@ -368,9 +363,17 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
       ao.confidence = opt.confidence;
       ax.allan =
           allanDeviation(x, record.rate_hz, AllanVariant::Overlapping, ao);
-      const CurvePoints pts = detail::usablePoints(ax.allan);
-      for (std::string& w : lineWarnings(x, record.rate_hz, sensor))
-        warnings[slot].push_back(std::string(c.name) + ": " + std::move(w));
+      // The record's lines: taken out before the noise terms are fitted (its Allan curve above
+      // keeps them: the model's, lines included, is compared with it), or only warned of.
+      const auto lines = opt.fitLines ? detail::takeOutLines(x, record.rate_hz)
+                                      : detail::recordLines(x, record.rate_hz);
+      for (const auto& l : lines) {
+        warnings[slot].push_back(std::string(c.name) + ": " + lineMessage(l, sensor, opt.fitLines));
+        if (opt.fitLines) ax.written.lines.push_back(l.fitted);
+      }
+      const CurvePoints pts = detail::usablePoints(
+          opt.fitLines && !lines.empty() ? allanDeviation(x, record.rate_hz, AllanVariant::Overlapping, ao)
+                                         : ax.allan);
 
       std::vector<double> den;
       if (opt.denoise == DenoiseChoice::Db5) {

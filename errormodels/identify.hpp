@@ -91,6 +91,10 @@ struct IdentifyOptions {
   double autoMinPredictionGain = 1.02;
   /// Worker threads over the channels (0: every core); the result does not depend on it.
   unsigned threads = 0;
+  /// Narrow lines (a vibration, a test stand's oscillation) fitted as sinusoids, taken out of the
+  /// record before its noise terms are fitted and written beside them (identify_lines.hpp); false:
+  /// left in the record (its terms absorb them), with a warning.
+  bool fitLines = true;
 };
 
 /// Results for one channel. Units: SI of the channel (rad/s for gyro, m/s^2 for accelerometer).

@@ -68,9 +68,11 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
 Model fit(const py::object& record, const std::string& kind, const std::vector<std::string>& axes,
           std::optional<std::size_t> order, const std::string& criterion, std::size_t maxOrder,
           bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
-          const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+          const std::optional<std::string>& accelUnit, std::optional<double> rate, const std::string& lines) {
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
+  if (lines != "fit" && lines != "warn") throw InputError("lines: expected \"fit\" or \"warn\", got \"" + lines + "\"");
+  opt.fitLines = lines == "fit";
   if (order && *order < 1) throw InputError("order: expected a positive integer or None (auto)");
   opt.order = order;
   opt.maxOrder = std::max(maxOrder, order.value_or(0));
@@ -167,7 +169,7 @@ void bindIdentify(py::module_& mod) {
           py::arg("axes") = std::vector<std::string>{}, py::arg("order") = py::none(),
           py::arg("criterion") = "mdl", py::arg("max_order") = 20, py::arg("denoise") = false,
           py::arg("skip") = 0.0, py::arg("gyro_unit") = py::none(),
-          py::arg("accel_unit") = py::none(), py::arg("rate") = py::none(),
+          py::arg("accel_unit") = py::none(), py::arg("rate") = py::none(), py::arg("lines") = "fit",
           "sinsim fit: identifies an error model from a static record; returns a Model");
   mod.def("diagnose", &diagnose, py::arg("record"), py::arg("model"),
           py::arg("channels") = std::vector<std::string>{}, py::arg("realisations") = 32,

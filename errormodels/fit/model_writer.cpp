@@ -381,6 +381,14 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
       if (ax.allanWrite[j])
         addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal, ax.ditheredQuantization);
   }
+  for (const FittedLine& l : ax.lines) {
+    b.line << "a narrow line, taken out of the record before the noise terms were fitted (phase at "
+              "the first sample used)";
+    b.endComment();
+    b.add(EffectSpec::make("sinusoid", {ParamSpec::quantity("amplitude", l.amplitude, signal),
+                                        ParamSpec::quantity("frequency", l.frequency, Dimension::frequency()),
+                                        ParamSpec::quantity("phase", l.phase, Dimension::angle())}));
+  }
   b.finish();
 }
 

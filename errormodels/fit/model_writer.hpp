@@ -27,6 +27,7 @@
 #include "errormodels/fit/gauss_markov_fit.hpp"
 #include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/fit/order_selection.hpp"
+#include "errormodels/stats/line_fit.hpp"
 #include "errormodels/model_spec.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -61,6 +62,9 @@ struct AxisFitResult {
   /// dithered (latticeLsb, identify.cpp). Written as the lsb, exact, in place of the Allan fit's
   /// (which strong rounding biases low: successive rounding errors are correlated); 0: none.
   double latticeLsb = 0.0;
+  /// Narrow lines taken out of the record before the terms above were fitted, written as
+  /// `sinusoid` effects (identify_lines.hpp).
+  std::vector<FittedLine> lines;
 };
 
 struct ModelProvenance {

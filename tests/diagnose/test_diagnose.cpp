@@ -63,6 +63,8 @@ ErrorModelSpec fitBase(const Record& r) {
   io.axes = {"gx"};
   io.kind = sinsim::errormodels::IdentifyKind::Ar;
   io.order = 2;  // the base family's order (MDL picks 2 on the base record alone)
+  // A base that lacks the hidden effect: fit would otherwise write a hidden line as a sinusoid.
+  io.fitLines = false;
   const auto id = sinsim::errormodels::identify(r, io);
   auto spec = sinsim::errormodels::asWritten(id.modelSpec());  // as the fit's file holds it
   spec.source = "fitted.yaml";

@@ -56,5 +56,8 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
   CHECK(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --kind arma -o " + badModel.string(), err) == 1);
   CHECK(slurp(err).find("known: ar, gm, allan, auto") != std::string::npos);
   CHECK_FALSE(fs::exists(badModel));
+  CHECK(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --lines all -o " + badModel.string(), err) == 1);
+  CHECK(slurp(err).find("--lines: expected fit or warn, got \"all\"") != std::string::npos);
+  CHECK_FALSE(fs::exists(badModel));
   fs::remove_all(dir);
 }

@@ -20,6 +20,8 @@
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/special.hpp"
+#include "errormodels/stats/line_fit.hpp"
+#include "errormodels/stats/allan.hpp"
 #include "identify_test_util.hpp"
 #include "test_support.hpp"
 
@@ -560,19 +562,28 @@ TEST_CASE("a gyro record in deg/s read as rad/s is named, a plausible one is not
   CHECK(warned("deg/s").empty());
 }
 
-TEST_CASE("a vibration line in the record is warned, with its frequency and size", "[identify][lines]") {
-  // The simulator's sinusoid (0.05 deg/s at 7.3 Hz, interval means at 100 Hz: 0.9913 of it) on gx
-  // beside white noise of 0.3 deg/s per sample on every gyro; no fitted term is a line.
-  const std::string model =
-      "gyro:\n  all: [{type: white, density: 0.03 deg/s/sqrt(Hz)}]\n"
-      "  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 7.3 Hz}]\n";
-  const Record r = staticRecord(model, 100.0, 1200.0, 8);
-  IdentifyOptions o;
-  o.kind = IdentifyKind::Latent;
-  const auto id = identify(r, o);
+namespace {
+// The simulator's sinusoid (0.05 deg/s at 7.3 Hz, interval means at 100 Hz: 0.9913 of it) on gx
+// beside white noise of 0.3 deg/s per sample on every gyro.
+const std::string kLineModel =
+    "gyro:\n  all: [{type: white, density: 0.03 deg/s/sqrt(Hz)}]\n"
+    "  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 7.3 Hz, phase: 40 deg}]\n";
+
+std::vector<std::string> lineWarnings(const Identification& id) {
   std::vector<std::string> lines;
   for (const std::string& w : id.warnings)
     if (w.find("narrow line") != std::string::npos) lines.push_back(w);
+  return lines;
+}
+}  // namespace
+
+TEST_CASE("a vibration line left in the record is warned, with its frequency and size", "[identify][lines]") {
+  const Record r = staticRecord(kLineModel, 100.0, 1200.0, 8);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Latent;
+  o.fitLines = false;
+  const auto id = identify(r, o);
+  const auto lines = lineWarnings(id);
   REQUIRE(lines.size() == 1);
   INFO(lines[0]);
   CHECK(lines[0].rfind("gx: a narrow line at 7.3", 0) == 0);
@@ -581,4 +592,62 @@ TEST_CASE("a vibration line in the record is warned, with its frequency and size
   const double a = std::stod(lines[0].substr(at + 16));  // deg/s
   CHECK(a > 0.8 * 0.05 * 0.9913);
   CHECK(a < 1.1 * 0.05 * 0.9913);
+  CHECK(id.axis("gx").written.lines.empty());
+}
+
+// Fitted (the default): the line is written as a sinusoid and taken out before the noise terms,
+// which then see white noise alone. The estimates' sd from N = 120000 samples of sd 0.3 deg/s:
+// amplitude 0.3 sqrt(2 / N) = 0.0012 deg/s (bound: 4 sd), frequency sqrt(6 / N^3) sd / (pi A dt)
+// ~ 1e-5 Hz (bound 1e-3), phase sd / A sqrt(2 / N) = 0.025 rad (bound 0.15); the white density's
+// ~0.2 % (bound 1 %).
+TEST_CASE("a vibration line is fitted as a sinusoid and taken out before the noise terms", "[identify][lines]") {
+  const Record r = staticRecord(kLineModel, 100.0, 1200.0, 8);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Latent;
+  const auto id = identify(r, o);
+  const auto lines = lineWarnings(id);
+  REQUIRE(lines.size() == 1);
+  INFO(lines[0]);
+  CHECK(lines[0].rfind("gx: a narrow line at 7.3", 0) == 0);
+  CHECK(lines[0].find("written as a sinusoid") != std::string::npos);
+  const auto& gx = id.axis("gx");
+  REQUIRE(gx.written.lines.size() == 1);
+  const FittedLine& l = gx.written.lines[0];
+  CHECK(l.frequency == Approx(7.3).margin(1e-3));
+  CHECK(l.amplitude * 180 / M_PI == Approx(0.05).margin(4 * 0.0012));
+  CHECK(std::remainder(l.phase - 40 * M_PI / 180, 2 * M_PI) == Approx(0).margin(0.15));
+  REQUIRE(gx.written.latent);
+  CHECK(gx.written.latent->terms.name() == "white");
+  const double density = gx.written.latent->model.white * 180 / M_PI;
+  CHECK(density == Approx(0.03).epsilon(0.01));
+  // The model file holds the line; the model's Allan curve holds it too (a sinusoid's Allan
+  // variance peaks near tau = 0.37 / f at 0.52 A^2: 0.05 s here, above the white noise's).
+  const auto spec = id.modelSpec();
+  const auto& xs = spec.sensor(Sensor::gyro).x;
+  CHECK(std::count_if(xs.begin(), xs.end(), [](const EffectSpec& e) { return e.type == "sinusoid"; }) == 1);
+  const auto withLine = gx.modelAdev({0.05});
+  auto noLine = gx;
+  noLine.written.lines.clear();
+  const double w2 = noLine.modelAdev({0.05})[0] * noLine.modelAdev({0.05})[0];
+  CHECK(withLine[0] * withLine[0] - w2 == Approx(sinusoidAllanVariance(l.amplitude, l.frequency, 0.05)).epsilon(1e-9));
+  // Nothing on the clean channels.
+  CHECK(id.axis("gy").written.lines.empty());
+  CHECK(id.axis("gz").written.lines.empty());
+}
+
+// The Allan variance of a sinusoid (line_fit.hpp) against the overlapping estimator on its interval
+// means, over many periods: within 1 %.
+TEST_CASE("a sinusoid's Allan variance in closed form matches the estimator", "[identify][lines]") {
+  const double A = 2.0, f = 1.37, dt = 0.01;
+  const std::size_t N = 200000;
+  std::vector<double> y(N);
+  for (std::size_t k = 0; k < N; ++k)  // interval means of A sin(2 pi f t + 0.3)
+    y[k] = A / (2 * M_PI * f * dt) * (std::cos(2 * M_PI * f * k * dt + 0.3) - std::cos(2 * M_PI * f * (k + 1) * dt + 0.3));
+  AllanOptions ao;
+  ao.grid = TauGrid::Octave;
+  const auto c = allanDeviation(y, 1 / dt, AllanVariant::Overlapping, ao);
+  for (std::size_t i = 0; i < c.tau.size() && c.tau[i] < 20; ++i) {
+    INFO("tau " << c.tau[i]);
+    CHECK(c.dev[i] * c.dev[i] == Approx(sinusoidAllanVariance(A, f, c.tau[i])).epsilon(0.01).margin(1e-6 * A * A));
+  }
 }
