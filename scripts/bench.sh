@@ -20,7 +20,7 @@ if [ -f "$data" ]; then
   /usr/bin/time -f "fit: %e s wall, %U s user CPU, %M kB max RSS" \
     build/sinsim fit "$data" "${units[@]}" --skip "10 min" -o "$out/run1.yaml" -q
   echo "== sinsim diagnose (1 M x 6, 32 Monte Carlo realisations, 2 threads)"
-  build/sinsim fit "$data" "${units[@]}" --kind ar --order 5 -o "$out/ar5.yaml" -q
+  build/sinsim fit "$data" "${units[@]}" --kind ar --order 5 --lines warn -o "$out/ar5.yaml" -q
   /usr/bin/time -f "diagnose: %e s wall, %U s user CPU, %M kB max RSS" \
     build/sinsim diagnose "$data" "${units[@]}" --model "$out/ar5.yaml" --threads 2 \
       --json "$out/diagnose.json" >/dev/null

@@ -13,7 +13,7 @@ data=${SINSIM_DATA:-$here/../shared/data/adis16405}
 units="--rate 100 --gyro-unit deg/s --accel-unit g"
 mkdir -p "$out"
 cd "$here"  # --nav's default scenario is scenarios/car.yaml, relative to the repository root
-"$build/sinsim" fit "$data/run1.csv.gz" $units --kind ar --order 5 -o "$out/ar5.yaml" -q
+"$build/sinsim" fit "$data/run1.csv.gz" $units --kind ar --order 5 --lines warn -o "$out/ar5.yaml" -q
 "$build/sinsim" fit "$data/run1.csv.gz" $units --kind gm -o "$out/gm.yaml" -q
 diag() {  # NAME RECORD MODEL [options...]
   name=$1 record=$2 model=$3

@@ -16,7 +16,7 @@ data=${SINSIM_DATA:-$here/../shared/data/adis16405/run1.csv.gz}
 units="--rate 100 --gyro-unit deg/s --accel-unit g"
 mkdir -p "$out" "$pictures"
 out=$(cd "$out" && pwd)  # Chromium needs an absolute file:// URL
-"$build/sinsim" fit "$data" $units --kind ar --order 5 -o "$out/ar5.yaml" -q
+"$build/sinsim" fit "$data" $units --kind ar --order 5 --lines warn -o "$out/ar5.yaml" -q
 /usr/bin/time -f "diagnose wall %e s, CPU %U s user" \
   "$build/sinsim" diagnose "$data" $units --model "$out/ar5.yaml" \
     --json "$out/diagnose.json" --html "$out/diagnose.html" | tee "$out/diagnose.txt"
