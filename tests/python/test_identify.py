@@ -119,3 +119,23 @@ def test_diagnose_refuses_a_nan_next_threshold(record):
     with pytest.raises(sinsim.InputError, match="--next-threshold"):
         sinsim.diagnose(rec, sinsim.Model(TRUE_MODEL), channels=["gx"], realisations=8,
                         next_threshold=float("nan"))
+
+
+def test_fit_writes_a_line_as_a_sinusoid_or_leaves_it_in(tmp_path):
+    # The fixture's white noise (0.5 deg/sqrt(h) = 0.0083 deg/s/sqrt(Hz): sd 0.083 deg/s per sample)
+    # plus a line of 0.01 deg/s at 3.1 Hz. The fitted amplitude's sd is 0.083 sqrt(2 / N) deg/s,
+    # 2.6 % of it (bound: 10 %); the frequency's ~1e-5 Hz (bound 1e-3).
+    line = dict(TRUE_MODEL["gyro"]["x"][0])
+    model = {"gyro": {"x": [line, {"type": "sinusoid", "amplitude": "0.01 deg/s", "frequency": "3.1 Hz"}]}}
+    rec = sinsim.synth(model, rate=RATE, duration="2000 s", path=str(tmp_path / "line.csv"), seed=6)
+    with pytest.warns(UserWarning, match="written as a sinusoid"):
+        fitted = sinsim.fit(rec, axes=["gx"], kind="latent")
+    lines = [e for e in fitted.effects() if e["type"] == "sinusoid"]
+    assert len(lines) == 1
+    assert lines[0]["params"]["frequency"] == pytest.approx(3.1, abs=1e-3)
+    assert lines[0]["params"]["amplitude"] == pytest.approx(0.01 * math.pi / 180, rel=0.1)
+    with pytest.warns(UserWarning, match="no fitted term is a line"):
+        kept = sinsim.fit(rec, axes=["gx"], kind="latent", lines="warn")
+    assert not [e for e in kept.effects() if e["type"] == "sinusoid"]
+    with pytest.raises(sinsim.InputError, match="lines"):
+        sinsim.fit(rec, axes=["gx"], lines="remove")
