@@ -5,9 +5,7 @@
 #include "errormodels/diagnose/significance.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <complex>
 #include <optional>
 
 #include "errormodels/stats/line_fit.hpp"
