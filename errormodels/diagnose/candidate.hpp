@@ -46,9 +46,11 @@ struct ModelNow {
   std::function<TrendScatter(const std::vector<double>& avar)> trendVarWith;
 };
 
-/// A sinusoid line: frequency [Hz] and amplitude [SI].
+/// A sinusoid line: frequency [Hz] and amplitude [SI]; `model`: one of the model's own `sinusoid`
+/// effects (still in the record), not one taken out of it.
 struct Line {
   double frequency = 0, amplitude = 0;
+  bool model = false;
 };
 
 struct Candidate {

@@ -115,7 +115,7 @@ std::vector<Line> modelLines(const ErrorModelSpec& model, int channel) {
       const ParamSpec* f = e.find("frequency");
       const ParamSpec* a = e.find("amplitude");
       if (f && a && f->values.size() == 1 && a->values.size() == 1)
-        out.push_back({f->values[0], std::fabs(a->values[0])});
+        out.push_back({f->values[0], std::fabs(a->values[0]), true});
     }
   return out;
 }

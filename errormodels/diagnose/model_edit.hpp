@@ -24,8 +24,9 @@ std::optional<std::vector<double>> baseAr(const ErrorModelSpec& model, int chann
 std::optional<std::vector<double>> soleBaseAr(const ErrorModelSpec& model, int channel, double rate);
 
 /// The enabled `sinusoid` effects acting on channel c (0..5 = gx..az; its axis list or `all`):
-/// frequency [Hz] and amplitude [SI]. A line the record shows at one of them is the model's own
-/// (detectors/sinusoid.cpp treats them as lines taken), not a line the model lacks.
+/// frequency [Hz] and amplitude [SI], Line::model set. A line the record shows at one of them is
+/// the model's own (detectors/sinusoid.cpp treats them as lines taken), not a line the model
+/// lacks, unless the record's is more than twice as large.
 std::vector<Line> modelLines(const ErrorModelSpec& model, int channel);
 
 /// What improve() changes, per channel (0..5 = gx..az).

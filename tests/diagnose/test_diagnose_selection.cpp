@@ -857,7 +857,8 @@ TEST_CASE("two lines on one channel are both found and both added", "[diagnose][
 }
 
 // A line the model already has is the model's own, whatever its phase (the model's realisations
-// carry it; the Allan variance does not see a phase): only the line it lacks is reported. Before,
+// carry it; the Allan variance does not see a phase): only the line it lacks is reported, or one
+// the model has far too weak (more than 2x in amplitude: detectors/sinusoid.cpp). Before,
 // the sinusoid detector proposed every line of the record, and a model improved by `--add
 // sinusoid` was told to add the same line again when diagnosed anew (ADIS16405 run 1: all three
 // accelerometers' 0.564 Hz line, the model's A within 0.1 % of it).
@@ -876,6 +877,14 @@ TEST_CASE("a line the model has is not reported again, the one it lacks is", "[d
     const auto both = dg::diagnose(r, errorModelFromString(kWhite + lines, "both.yaml"), gxOnly(seed)).axis("gx");
     INFO("with both lines in the model: reported " << reportedList(both));
     CHECK(linesReported(both).empty());
+    // A model line 5x weaker than the record's (its power 1/25) does not explain it: proposed whole.
+    const std::string weak = kWhite + "    - {type: sinusoid, amplitude: 0.01 deg/s, frequency: 1.3 Hz}\n" +
+                             "    - {type: sinusoid, amplitude: 0.03 deg/s, frequency: 7.7 Hz, phase: 10 deg}\n";
+    const auto under = dg::diagnose(r, errorModelFromString(weak, "weak.yaml"), gxOnly(seed)).axis("gx");
+    INFO("with the 1.3 Hz line 5x too weak in the model: reported " << reportedList(under));
+    const auto more = linesReported(under);
+    REQUIRE(more.size() == 1);
+    CHECK(more[0].first == Approx(1.3).margin(1e-3));
   }
 }
 

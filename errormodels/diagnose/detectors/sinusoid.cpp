@@ -164,6 +164,9 @@ constexpr std::size_t kMaxLines = 8;
 /// amplitude, is that line's distortion.
 constexpr int kHarmonics = 50;
 constexpr double kHarmonicShare = 0.25;
+/// A record's line near one of the model's own lines is another line when it is more than this
+/// times the model's amplitude.
+constexpr double kModelLineExcess = 2.0;
 
 }  // namespace
 
@@ -184,6 +187,9 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   auto nearTaken = [&](double f, double amplitude) {
     const double fs = ctx.record.rate_hz;
     for (const Line& t : ctx.linesTaken) {
+      // A model's own line explains the record's near it unless that is more than kModelLineExcess
+      // times as large (its power 4x): a line the model under-states is proposed, whole, beside it.
+      if (t.model && std::fabs(f - t.frequency) <= separation && amplitude > kModelLineExcess * t.amplitude) continue;
       if (std::fabs(f - t.frequency) <= separation) {
         if (!ordinates) ordinates = taperedPeriodogram(ctx.y, 0.0, Detrend::Mean);
         if (!resolvedBeside(*ordinates, fs, t.frequency, f, separation)) return true;
