@@ -11,8 +11,9 @@
 
 namespace sinsim::errormodels::detail {
 
-/// A line the Welch test finds in a record (spectral_lines.hpp, segments of lineTestSegment(N)):
-/// from the 12th bin up, where its neighbourhood is two-sided (below it a red continuum can stand
+/// A line the Welch test finds in a record (spectral_lines.hpp; segments of lineTestSegment(N), or
+/// of the largest power of two <= N / 16 where that is longer: identify_lines.cpp): from the 12th
+/// bin up, where its neighbourhood is two-sided (below it a red continuum can stand
 /// out), at a look-elsewhere p below 1e-3.
 struct RecordLine {
   WelchLine welch;           ///< the Welch bin and its ratio
