@@ -9,22 +9,15 @@ one) and written where there is none.
   /usr/bin/python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 20 \\
       | /usr/bin/python3 bench/fit_lines/latent_lines.py --work /tmp/latent_lines
 """
-import argparse, json, math, os, re, subprocess, sys
+import argparse, math, os, re, subprocess, sys
 from collections import defaultdict
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "latent_study"))
+from auto_grid import records  # noqa: E402  (the generator's stream: a JSON line, then n float64)
+
 TYPES = {"white": "white", "gauss_markov": "gm", "random_walk": "random_walk",
          "bias_instability": "flicker", "quantization": "quantization", "ramp": "drift"}
-
-
-def records(stream):
-    while True:
-        header = stream.readline()
-        if not header:
-            return
-        meta = json.loads(header)
-        x = np.frombuffer(stream.read(8 * meta["n"]), dtype="<f8")
-        yield meta, x
 
 
 def written(path):
