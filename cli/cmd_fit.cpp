@@ -117,9 +117,7 @@ int runFit(const FitArgs& a) {
   opt.arOnDenoised = a.ar_on_denoised;
   opt.axes = splitAxes(a.axes);
   opt.navigationStep = parseOptionQuantity(a.nav_step, Dimension::time(), "--nav-step");
-  if (a.lines != "fit" && a.lines != "warn")
-    throw InputError("--lines: expected fit or warn, got \"" + limits::echo(a.lines) + "\"");
-  opt.fitLines = a.lines == "fit";
+  opt.fitLines = errormodels::fitLinesByName(a.lines);
   if (opt.arOnDenoised && opt.denoise != errormodels::DenoiseChoice::Db5)
     throw InputError("--ar-on-denoised needs --denoise db5");
   if (opt.arOnDenoised && opt.kind != errormodels::IdentifyKind::Ar)

@@ -85,6 +85,12 @@ std::string toString(IdentifyKind kind) {
   return "?";
 }
 
+bool fitLinesByName(const std::string& name) {
+  if (name == "fit") return true;
+  if (name == "warn") return false;
+  throw InputError("--lines: expected fit or warn, got \"" + limits::echo(name) + "\"");
+}
+
 IdentifyKind identifyKindByName(const std::string& name) {
   if (name == "ar") return IdentifyKind::Ar;
   if (name == "gm") return IdentifyKind::Gm;

@@ -57,6 +57,8 @@ namespace sinsim::errormodels {
 enum class IdentifyKind { Ar, Gm, Allan, Auto, Latent, ArSlow };
 std::string toString(IdentifyKind kind);  ///< "ar", "gm", "allan", "auto", "latent", "ar+slow"
 IdentifyKind identifyKindByName(const std::string& name);   ///< InputError listing the known ones
+/// IdentifyOptions::fitLines from `--lines` fit | warn; InputError otherwise.
+bool fitLinesByName(const std::string& name);
 /// "mdl" | "bic" | "aic" | "fpe" | "paper" -> criterion; InputError otherwise.
 fit::OrderCriterion orderCriterionByName(const std::string& name);
 

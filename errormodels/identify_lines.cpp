@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "errormodels/stats/spectrum.hpp"
 
@@ -27,55 +26,48 @@ std::size_t segmentFor(std::size_t n) {
   return std::max(L, lineTestSegment(n));
 }
 
-/// The Welch PSD the line test runs on (segments of segmentFor(N)); none below 128 samples per
-/// segment.
-std::optional<PowerSpectrum> lineTestPsd(const std::vector<double>& x, double rate) {
+/// The lines the Welch test finds in x (segments of L samples), most significant first, that the
+/// fit takes: p below kLineP, from kLowestBin up; each with its Welch amplitude. None when a
+/// segment would be shorter than 128 samples.
+std::vector<RecordLine> welchLines(const std::vector<double>& x, double rate, std::size_t L, std::size_t count) {
+  if (L < 128) return {};
   WelchOptions wo;
-  wo.segment_length = segmentFor(x.size());
-  if (wo.segment_length < 128) return std::nullopt;
-  return welchPsd(x, rate, wo);
+  wo.segment_length = L;
+  const PowerSpectrum psd = welchPsd(x, rate, wo);
+  std::vector<RecordLine> out;
+  for (const WelchLine& l : welchLineTest(psd, count))
+    if (l.p < kLineP && l.bin >= kLowestBin)
+      out.push_back({l, welchLineAmplitude(psd.psd[l.bin], l.ratio, psd.enbw_hz), {}});
+  return out;
 }
 
 }  // namespace
 
 std::vector<RecordLine> recordLines(const std::vector<double>& x, double rate) {
-  const auto psd = lineTestPsd(x, rate);
-  if (!psd) return {};
-  std::vector<RecordLine> out;
-  for (const WelchLine& l : welchLineTest(*psd, 4))
-    if (l.p < kLineP && l.bin >= kLowestBin)
-      out.push_back({l, welchLineAmplitude(psd->psd[l.bin], l.ratio, psd->enbw_hz), {}});
-  return out;
+  return welchLines(x, rate, segmentFor(x.size()), 4);
 }
 
 std::vector<RecordLine> takeOutLines(std::vector<double>& x, double rate) {
   std::vector<RecordLine> taken;
   const double dt = 1.0 / rate;
+  const std::size_t L = segmentFor(x.size());
+  const double bin = rate / double(L);
   while (taken.size() < kMaxLines) {
-    const auto psd = lineTestPsd(x, rate);
-    if (!psd) break;
-    const double bin = rate / double(segmentFor(x.size()));
-    std::optional<RecordLine> next;
-    for (const WelchLine& l : welchLineTest(*psd, 4 + taken.size())) {
-      if (!(l.p < kLineP && l.bin >= kLowestBin)) continue;
-      const bool near = std::any_of(taken.begin(), taken.end(), [&](const RecordLine& t) {
-        return std::fabs(l.freq - t.fitted.frequency) <= 3 * bin;
+    const auto found = welchLines(x, rate, L, 4 + taken.size());
+    const auto next = std::find_if(found.begin(), found.end(), [&](const RecordLine& l) {
+      return std::none_of(taken.begin(), taken.end(), [&](const RecordLine& t) {
+        return std::fabs(l.welch.freq - t.fitted.frequency) <= 3 * bin;
       });
-      if (near) continue;
-      next = RecordLine{l, welchLineAmplitude(psd->psd[l.bin], l.ratio, psd->enbw_hz), {}};
-      break;
-    }
-    if (!next) break;
-    // Refined within +-1.5 Welch bins on the whole record, about 6 points per Welch bin's worth
-    // of Fourier frequencies (as the diagnosis's sinusoid detector).
-    const double fa = std::max(0.25 * bin, next->welch.freq - 1.5 * bin);
-    const double fb = std::min(0.5 * rate, next->welch.freq + 1.5 * bin);
-    const LinePeriodogram pg(x, 0.0, dt, 0.5 * (fa + fb), 0.5 * (fb - fa));
-    const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(x.size()) * bin / rate)));
-    next->fitted = fitLineAt(x, 0.0, dt, refineLineFrequency(pg, fa, fb, scan));
-    const std::vector<double> s = lineSamples(next->fitted, dt, x.size());
+    });
+    if (next == found.end()) break;
+    // Refined on the whole record, as the diagnosis's sinusoid detector does.
+    RecordLine line = *next;
+    const LineWindow w = welchLineWindow(line.welch.freq, bin, rate);
+    const LinePeriodogram pg(x, 0.0, dt, 0.5 * (w.fa + w.fb), 0.5 * (w.fb - w.fa));
+    line.fitted = fitLineAt(x, 0.0, dt, refineLineFrequency(pg, w, x.size(), L));
+    const std::vector<double> s = lineSamples(line.fitted, dt, x.size());
     for (std::size_t k = 0; k < x.size(); ++k) x[k] -= s[k];
-    taken.push_back(*next);
+    taken.push_back(line);
   }
   return taken;
 }

@@ -71,8 +71,7 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
           const std::optional<std::string>& accelUnit, std::optional<double> rate, const std::string& lines) {
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
-  if (lines != "fit" && lines != "warn") throw InputError("lines: expected \"fit\" or \"warn\", got \"" + lines + "\"");
-  opt.fitLines = lines == "fit";
+  opt.fitLines = em::fitLinesByName(lines);
   if (order && *order < 1) throw InputError("order: expected a positive integer or None (auto)");
   opt.order = order;
   opt.maxOrder = std::max(maxOrder, order.value_or(0));

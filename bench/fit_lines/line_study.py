@@ -14,6 +14,7 @@ their sampled amplitude within 20 %; lines written that are not there.
 """
 import argparse, json, math, os, re, subprocess, sys
 import numpy as np
+from scipy.signal import lfilter
 
 
 def gm_sigma_for(k, white_density, T):
@@ -36,7 +37,6 @@ def make(seed, rate, seconds, size):
         phi = math.exp(-dt / T)
         w = rng.normal(0, s * math.sqrt(1 - phi * phi), n)
         w[0] = rng.normal(0, s)
-        from scipy.signal import lfilter
         gm = lfilter([1.0], [1.0, -phi], w)
         y = rng.normal(0, sd, n) + gm
         lines = []

@@ -49,7 +49,13 @@ double LinePeriodogram::power(double f) const {
   return a * a + bb * bb;
 }
 
-double refineLineFrequency(const LinePeriodogram& pg, double fa, double fb, int scan) {
+LineWindow welchLineWindow(double freq, double bin, double rate) {
+  return {std::max(bin * 0.25, freq - 1.5 * bin), std::min(0.5 * rate, freq + 1.5 * bin)};
+}
+
+double refineLineFrequency(const LinePeriodogram& pg, const LineWindow& w, std::size_t N, std::size_t L) {
+  const double fa = w.fa, fb = w.fb;
+  const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(N) / double(L))));
   double bestF = 0.5 * (fa + fb), bestP = -1;
   for (int i = 0; i <= scan; ++i) {
     const double f = fa + (fb - fa) * i / scan;

@@ -31,9 +31,20 @@ class LinePeriodogram {
   std::vector<std::complex<double>> U_;  // per block, kTerms moments
 };
 
-/// The periodogram's peak in [fa, fb] [Hz]: a scan of `scan` + 1 points (the periodogram of a
-/// whole record has many side lobes inside a few Welch bins), then golden section around the best.
-double refineLineFrequency(const LinePeriodogram& pg, double fa, double fb, int scan);
+/// Where a line is looked for on the whole record: [fa, fb] [Hz].
+struct LineWindow {
+  double fa = 0, fb = 0;
+};
+
+/// The window of a line the Welch test found at freq [Hz] in bins `bin` [Hz] wide: +-1.5 bins,
+/// inside [bin / 4, rate / 2].
+LineWindow welchLineWindow(double freq, double bin, double rate);
+
+/// The periodogram's peak in the window: a scan (the periodogram of a whole record has many side
+/// lobes inside a few Welch bins) of about 6 points per Welch bin's worth of Fourier frequencies
+/// (6 N / L for N samples and Welch segments of L, 50 to 2000), then golden section around the
+/// best.
+double refineLineFrequency(const LinePeriodogram& pg, const LineWindow& w, std::size_t N, std::size_t L);
 
 /// A sinusoid of the record: y_k - mean ~ sampled sin(2 pi f (k + 1/2) dt + phase), the interval
 /// average over sample k of amplitude sin(2 pi f t + phase) (effects/sinusoid.cpp realises that),

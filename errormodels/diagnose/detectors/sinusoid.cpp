@@ -30,22 +30,6 @@ std::vector<WelchLine> psdLineTest(const PowerSpectrum& p, std::size_t count) {
   return out;
 }
 
-/// The search window of a Welch line at lineFreq [Hz]: +-1.5 Welch bins, inside (0, Nyquist].
-struct LineWindow {
-  double fa = 0, fb = 0;  // [Hz]
-};
-LineWindow lineWindow(const DetectorContext& ctx, double lineFreq) {
-  const double df = ctx.record.rate_hz / double(ctx.setup.psdSegment);
-  return {std::max(df * 0.25, lineFreq - 1.5 * df), std::min(0.5 * ctx.record.rate_hz, lineFreq + 1.5 * df)};
-}
-
-/// The periodogram's peak within the window (refineLineFrequency): a scan of about 6 points per
-/// Welch bin's worth of Fourier frequencies, 50 to 2000.
-double refineFrequency(const DetectorContext& ctx, const LinePeriodogram& pg, const LineWindow& w) {
-  const int scan = int(std::min(2000.0, std::max(50.0, 6 * double(ctx.N) / double(ctx.setup.psdSegment))));
-  return refineLineFrequency(pg, w.fa, w.fb, scan);
-}
-
 /// The line confirmed on the whole record's periodogram: its ordinate at the refined frequency f0
 /// against the median of the record's Fourier ordinates j / T in the window (those within 2 / T
 /// of f0, the line's own main lobe, left out). A continuum's ordinate is S(f) times an Exp(1)
@@ -205,9 +189,9 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
   double lineZ = 0, f0 = 0;
   for (const auto& line : psdLineTest(welchPsd(ctx.y, ctx.record.rate_hz, wo), 4 + ctx.linesTaken.size())) {
     if (line.z <= lineZ) break;  // sorted: no later one can beat the best confirmed z
-    const LineWindow win = lineWindow(ctx, line.freq);
+    const LineWindow win = welchLineWindow(line.freq, ctx.record.rate_hz / double(ctx.setup.psdSegment), ctx.record.rate_hz);
     const LinePeriodogram pg(ctx.y, ctx.mean, ctx.dt, 0.5 * (win.fa + win.fb), 0.5 * (win.fb - win.fa));
-    const double f = refineFrequency(ctx, pg, win);
+    const double f = refineLineFrequency(pg, win, ctx.N, ctx.setup.psdSegment);
     if (!ctx.linesTaken.empty() && nearTaken(f, std::sqrt(pg.power(f)))) continue;
     const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
     if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
@@ -218,7 +202,7 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
     const double T = double(ctx.N) * ctx.dt;
     const LineWindow win{low.freq - 1.0 / T, low.freq + 1.0 / T};
     const LinePeriodogram pg(ctx.y, ctx.mean, ctx.dt, low.freq, 1.0 / T);
-    const double f = refineFrequency(ctx, pg, win);
+    const double f = refineLineFrequency(pg, win, ctx.N, ctx.setup.psdSegment);
     if (ctx.linesTaken.empty() || !nearTaken(f, std::sqrt(pg.power(f)))) lineZ = low.z, f0 = f;
   }
   if (!(f0 > 0)) return {};
