@@ -101,9 +101,13 @@ std::vector<Component> componentsOf(const LatentModel& model, double dt, std::si
   return out;
 }
 
-/// The augmented Kalman filter over the block means (block_likelihood.hpp step 3). P is kept in
-/// full (n <= ~16 states); once the gain is steady only the column means are propagated.
-BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps) {
+/// The augmented Kalman filter over the block means (block_likelihood.hpp step 3) with the
+/// columns z_j = (y_j, 1, t_j, extra_0j, ...), t_j the block's centre from the record's middle:
+/// the innovations' cross-products A = sum e e' / F (lower triangle) and sum ln F. P is kept in
+/// full (n <= ~16 states); once the gain is steady only the column means are propagated. False
+/// where an innovation variance is not positive.
+bool whitenColumns(const BlockMeans& b, const std::vector<Component>& comps,
+                   const std::vector<std::vector<double>>& extra, Eigen::MatrixXd& A, double& sumLogF) {
   std::vector<double> f, h, q, c, P;
   double r = 0.0;
   for (const Component& k : comps) {
@@ -111,20 +115,20 @@ BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps)
     if (k.h == 0.0 && k.c == 0.0) continue;  // no state
     f.push_back(k.f), h.push_back(k.h), q.push_back(k.q), c.push_back(k.c);
   }
-  const std::size_t n = f.size();
+  const std::size_t n = f.size(), cols = 3 + extra.size();
   P.assign(n * n, 0.0);
   {
     std::size_t i = 0;
     for (const Component& k : comps)
       if (k.h != 0.0 || k.c != 0.0) P[i * n + i] = k.p0, ++i;
   }
-  std::vector<double> Ph(n), g(n), m(3 * n, 0.0);  // m: state means of the columns y, 1, t
-  double A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  std::vector<double> Ph(n), g(n), m(cols * n, 0.0), z(cols), e(cols);  // m: the columns' state means
+  A = Eigen::MatrixXd::Zero(Eigen::Index(cols), Eigen::Index(cols));
   const std::size_t M = b.y.size();
   const double L = b.dt * double(b.perBlock), mid = 0.5 * double(M - 1);
-  double sumLogF = 0.0, F = 0.0, logF = 0.0;
+  double F = 0.0, logF = 0.0;
+  sumLogF = 0.0;
   bool steady = false;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < M; ++j) {
     if (!steady) {
       F = r;
@@ -134,7 +138,7 @@ BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps)
         Ph[i] = s;
         F += h[i] * s;
       }
-      if (!(F > 0.0) || !std::isfinite(F)) return {kInf, kInf, 0.0, 0.0};
+      if (!(F > 0.0) || !std::isfinite(F)) return false;
       logF = std::log(F);
       for (std::size_t i = 0; i < n; ++i) g[i] = (f[i] * Ph[i] + c[i]) / F;
       double change = 0.0, scale = 1e-300;
@@ -150,28 +154,37 @@ BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps)
       // Steady: the covariance moved by < 1e-11 of the largest variance in a step.
       steady = j > 0 && change <= 1e-11 * scale;
     }
-    const double z[3] = {b.y[j], 1.0, (double(j) - mid) * L};
-    double e[3];
-    for (int col = 0; col < 3; ++col) {
-      double* mc = m.data() + std::size_t(col) * n;  // (m is empty without states)
+    z[0] = b.y[j], z[1] = 1.0, z[2] = (double(j) - mid) * L;
+    for (std::size_t col = 3; col < cols; ++col) z[col] = extra[col - 3][j];
+    for (std::size_t col = 0; col < cols; ++col) {
+      double* mc = m.data() + col * n;  // (m is empty without states)
       double pred = 0.0;
       for (std::size_t i = 0; i < n; ++i) pred += h[i] * mc[i];
       e[col] = z[col] - pred;
       for (std::size_t i = 0; i < n; ++i) mc[i] = f[i] * mc[i] + g[i] * e[col];
     }
     sumLogF += logF;
-    for (int u = 0; u < 3; ++u)
-      for (int v = 0; v <= u; ++v) A[u][v] += e[u] * e[v] / F;
+    for (std::size_t u = 0; u < cols; ++u)
+      for (std::size_t v = 0; v <= u; ++v) A(Eigen::Index(u), Eigen::Index(v)) += e[u] * e[v] / F;
   }
+  return true;
+}
+
+/// The restricted likelihoods and the GLS slope (block_likelihood.hpp step 3).
+BlockLikelihood filter(const BlockMeans& b, const std::vector<Component>& comps) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd A;
+  double sumLogF = 0.0;
+  if (!whitenColumns(b, comps, {}, A, sumLogF)) return {kInf, kInf, 0.0, 0.0};
   // Columns 1 and t: X = their innovation products, a their products with y's. Without drift the
   // level alone is profiled out (X = [1]); with drift the level and the slope.
-  const double x11 = A[1][1], x12 = A[2][1], x22 = A[2][2], a1 = A[1][0], a2 = A[2][0];
+  const double x11 = A(1, 1), x12 = A(2, 1), x22 = A(2, 2), a1 = A(1, 0), a2 = A(2, 0);
   const double det = x11 * x22 - x12 * x12;
   if (!(det > 0.0 && x11 > 0.0)) return {kInf, kInf, 0.0, 0.0};
   const double beta1 = (x22 * a1 - x12 * a2) / det, beta2 = (x11 * a2 - x12 * a1) / det;
   BlockLikelihood out;
-  out.m2LogLik = sumLogF + A[0][0] - a1 * a1 / x11 + std::log(x11);
-  out.m2LogLikDrift = sumLogF + A[0][0] - (a1 * beta1 + a2 * beta2) + std::log(x11);
+  out.m2LogLik = sumLogF + A(0, 0) - a1 * a1 / x11 + std::log(x11);
+  out.m2LogLikDrift = sumLogF + A(0, 0) - (a1 * beta1 + a2 * beta2) + std::log(x11);
   out.slope = beta2;
   out.slopeVariance = x11 / det;
   return out;
@@ -265,6 +278,20 @@ BlockLikelihood blockLikelihood(const BlockMeans& b, const LatentModel& model) {
   const std::vector<Component> fl =
       model.flicker > 0.0 ? flickerComponents(b.dt, b.perBlock, b.y.size()) : std::vector<Component>{};
   return filter(b, componentsOf(model, b.dt, b.perBlock, fl));
+}
+
+Eigen::MatrixXd blockGlsProducts(const BlockMeans& b, const LatentModel& model,
+                                 const std::vector<std::vector<double>>& extra) {
+  if (model.arVariance > 0.0) throw InputError("block likelihood: an AR term is not modelled");
+  for (const auto& col : extra)
+    if (col.size() != b.y.size()) throw InputError("block likelihood: a regressor of another length than the blocks");
+  const std::vector<Component> fl =
+      model.flicker > 0.0 ? flickerComponents(b.dt, b.perBlock, b.y.size()) : std::vector<Component>{};
+  Eigen::MatrixXd A;
+  double sumLogF = 0.0;
+  if (!whitenColumns(b, componentsOf(model, b.dt, b.perBlock, fl), extra, A, sumLogF))
+    throw InputError("block likelihood: the model's block variance is not positive");
+  return A.selfadjointView<Eigen::Lower>();
 }
 
 BlockObjective::BlockObjective(const BlockMeans& b, const WhittleBins* high, double wMax, bool flicker)

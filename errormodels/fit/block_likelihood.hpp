@@ -44,6 +44,8 @@
 #include <cstddef>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "errormodels/fit/latent_fit.hpp"
 #include "errormodels/fit/whittle_selection.hpp"
 
@@ -71,6 +73,15 @@ struct BlockLikelihood {
 };
 /// +inf for a model whose block variance is not positive. Throws InputError for an AR term.
 BlockLikelihood blockLikelihood(const BlockMeans& b, const LatentModel& model);
+
+/// Generalised least squares on the block means under `model` (its drift and AR not modelled):
+/// the whitened cross-products Z' V^-1 Z of the columns Z = [y, 1, t, extra...], V the model's
+/// covariance of the block means, t the blocks' centres [s] from the record's middle; symmetric,
+/// (3 + extra.size()) square. The GLS fit of y on any of the other columns, and its covariance,
+/// follow from its entries. Throws InputError for an AR term, a regressor whose length is not the
+/// blocks' count, or a model whose block variance is not positive.
+Eigen::MatrixXd blockGlsProducts(const BlockMeans& b, const LatentModel& model,
+                                 const std::vector<std::vector<double>>& extra);
 
 /// One state of the block state-space model (step 2), and r, its share of the block's own noise
 /// variance; p0 the state's variance before the first block.

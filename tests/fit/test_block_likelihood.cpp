@@ -117,6 +117,44 @@ TEST_CASE("block likelihood: the Kalman filter equals the dense Gaussian likelih
   }
 }
 
+TEST_CASE("block likelihood: GLS products of extra regressors equal the dense Z' V^-1 Z", "[fit][block]") {
+  // blockGlsProducts (the filter with more columns) against Z' V^-1 Z from the dense covariance
+  // of the block means, Z = [y, 1, t, two settling shapes]: every entry, in the scale of its
+  // diagonal (sqrt(A_ii A_jj)).
+  const std::vector<double> x = someRecord(kM * kB);
+  const BlockMeans b = blockMeans(x, kDt, kB);
+  const auto M = Eigen::Index(kM);
+  const double L = kDt * double(kB);
+  std::vector<std::vector<double>> extra(2, std::vector<double>(kM));
+  for (std::size_t j = 0; j < kM; ++j) extra[0][j] = std::exp(-double(j) * L / 0.15), extra[1][j] = std::exp(-double(j) * L / 1.1);
+  Eigen::MatrixXd Z(M, 5);
+  for (Eigen::Index j = 0; j < M; ++j) {
+    Z(j, 0) = b.y[std::size_t(j)], Z(j, 1) = 1.0, Z(j, 2) = (double(j) - 0.5 * double(M - 1)) * L;
+    Z(j, 3) = extra[0][std::size_t(j)], Z(j, 4) = extra[1][std::size_t(j)];
+  }
+  LatentModel models[3];
+  models[0].white = 0.1;
+  models[1].white = 0.1, models[1].quantization = 0.003, models[1].gm = {{0.6, 0.12}}, models[1].randomWalk = 0.7;
+  models[2].white = 0.1, models[2].gm = {{0.8, 0.02}, {0.5, 0.4}};
+  for (const LatentModel& m : models) {
+    INFO(m.termNames());
+    const Eigen::LLT<Eigen::MatrixXd> llt(blockCovariance(sampleCovariance(m, kM * kB)));
+    REQUIRE(llt.info() == Eigen::Success);
+    const Eigen::MatrixXd dense = Z.transpose() * llt.solve(Z);
+    const Eigen::MatrixXd A = blockGlsProducts(b, m, extra);
+    REQUIRE(A.rows() == 5);
+    for (Eigen::Index i = 0; i < 5; ++i)
+      for (Eigen::Index k = 0; k < 5; ++k) {
+        INFO(i << "," << k);
+        CHECK(std::fabs(A(i, k) - dense(i, k)) <= 1e-9 * std::sqrt(dense(i, i) * dense(k, k)));
+      }
+  }
+  LatentModel ar;
+  ar.white = 0.1, ar.arPolynomial = {1.0, -0.5}, ar.arVariance = 0.01;
+  CHECK_THROWS_AS(blockGlsProducts(b, ar, extra), sinsim::InputError);
+  CHECK_THROWS_AS(blockGlsProducts(b, models[0], {std::vector<double>(kM - 1)}), sinsim::InputError);
+}
+
 TEST_CASE("block likelihood: flicker as the documented sum of GMs", "[fit][block]") {
   // The flicker's GMs (block_likelihood.hpp step 2): sigma^2 = B^2 ln 10 / (2 pi) each, T at
   // dt/10 * 10^((j + 0.5)/2) up to 10 M L. Those faster than L/4 enter the filter as white at the
