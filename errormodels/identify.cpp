@@ -53,6 +53,25 @@ std::string lineMessage(const detail::RecordLine& l, fit::SensorSignal s, bool f
                  "and its `--add sinusoid` adds it to the model";
 }
 
+/// What fit says of a settling at the record's start (fit/start_settling.hpp): its size, its test,
+/// and the --skip (from the file's start, `skipped` [s] already skipped) after which it is settled,
+/// rounded up to two digits; `used` [s] the record's length after the skip.
+std::string settlingMessage(const fit::StartSettling& st, fit::SensorSignal s, double skipped, double used) {
+  const double skip = skipped + st.settledAfter;
+  const double step = std::pow(10.0, std::floor(std::log10(skip)) - 1.0);
+  const double rounded = std::ceil(skip / step - 1e-9) * step;
+  std::string t = "the record starts with a settling: " + friendly(st.amplitude, s, 3) + " decaying with tau " +
+                  significant(st.tau, 3) + " s (its amplitude by generalised least squares against the fitted noise "
+                  "terms: z " + significant(st.z, 3) + ", p " + significant(st.pValue, 2) + " over " +
+                  significant(st.octaves, 3) + " octaves of tau). No noise term is a settling: the fitted terms take "
+                  "what they can of it. Fit the settled part with --skip " +
+                  (rounded >= 10.0 ? std::to_string(std::llround(rounded)) : significant(rounded, 2)) +
+                  " (s), or let `sinsim diagnose` name it (warmup)";
+  if (st.settledAfter > 0.5 * used)
+    t += "; it settles over more than half of the record: record longer, or start recording later";
+  return t;
+}
+
 /// The AR part of an AR + slow fit, for the model comments: order and how it was chosen, the
 /// coefficients with their 1-sigma, Burg's driving sigma beside the jointly refitted one.
 std::string describeArSlow(const fit::ArSlowFit& f, fit::SensorSignal s) {
@@ -537,6 +556,12 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
              " (written: " +
              friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
         ax.written.notes.push_back(s);
+      }
+      if (ax.latent && ax.latent->model.arPolynomial.empty()) {
+        ax.settling = fit::testStartSettling(x, dt, ax.latent->model);
+        if (ax.settling && ax.settling->pValue < fit::kStartSettlingP)
+          warnings[slot].push_back(std::string(c.name) + ": " +
+                                   settlingMessage(*ax.settling, sensor, double(skip) * dt, double(n) * dt));
       }
       const double Q = writtenQuantization(ax.written);
       ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);

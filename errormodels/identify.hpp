@@ -48,6 +48,7 @@
 #include "errormodels/fit/gauss_markov_fit.hpp"
 #include "errormodels/fit/model_writer.hpp"
 #include "errormodels/fit/order_selection.hpp"
+#include "errormodels/fit/start_settling.hpp"
 #include "errormodels/stats/allan.hpp"
 #include "errormodels/stats/record.hpp"
 #include "errormodels/stats/wavelet.hpp"
@@ -124,6 +125,9 @@ struct AxisIdentification {
   std::optional<fit::AllanFit> allanFit;           ///< five-term fit of the whole curve
   /// Allan terms fitted beside an AR on the long-tau part (Auto); the AR carries N and Q.
   std::optional<fit::AllanFit> allanLongTau;
+  /// The start-settling test against the written composite model (fit/start_settling.hpp); unset
+  /// where it was not run (an AR in the model, a record of fewer than 64 blocks).
+  std::optional<fit::StartSettling> settling;
 
   fit::AxisFitResult written;  ///< exactly what goes into the model file for this axis
 

@@ -709,3 +709,48 @@ TEST_CASE("the fit's line test on a long record: no line in noise, a line below 
   CHECK(falseWalk <= 1);
   CHECK(found == 10);
 }
+
+namespace {
+const std::string kSettlingModel =
+    "gyro:\n  all: [{type: white, density: 0.03 deg/s/sqrt(Hz)}, {type: gauss_markov, sigma: 0.01 deg/s, tau: 5 s}]\n"
+    "  x: [{type: warmup, amplitude: 0.08 deg/s, tau: 60 s}]\n";
+
+std::vector<std::string> settlingWarnings(const Identification& id) {
+  std::vector<std::string> out;
+  for (const std::string& w : id.warnings)
+    if (w.find("starts with a settling") != std::string::npos) out.push_back(w);
+  return out;
+}
+}  // namespace
+
+// A warm-up on gx only (0.08 deg/s decaying with tau 60 s beside a GM of 0.01 deg/s): fit warns on
+// gx alone, with the time constant near 60 s and a --skip; with that skip the warning is gone and
+// gx's written terms are the generator's white + GM (fit/start_settling.hpp; the test's statistics
+// are test_fit [settling]).
+TEST_CASE("a settling at the record start is warned with the skip that removes it", "[identify][settling]") {
+  const Record r = staticRecord(kSettlingModel, 100.0, 1200.0, 5);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Gm;
+  o.axes = {"gx", "gy", "gz"};
+  const auto id = identify(r, o);
+  const auto warned = settlingWarnings(id);
+  REQUIRE(warned.size() == 1);
+  INFO(warned[0]);
+  CHECK(warned[0].rfind("gx: the record starts with a settling: 0.0", 0) == 0);
+  const auto& gx = id.axis("gx");
+  REQUIRE(gx.settling);
+  CHECK(gx.settling->tau > 30.0);
+  CHECK(gx.settling->tau < 120.0);
+  CHECK(gx.settling->amplitude * 180 / M_PI > 0.04);
+  CHECK(gx.settling->amplitude * 180 / M_PI < 0.16);
+  const std::size_t at = warned[0].find("--skip ");
+  REQUIRE(at != std::string::npos);
+  const double skip = std::stod(warned[0].substr(at + 7));
+  CHECK(skip >= gx.settling->settledAfter);
+  CHECK(skip < 600.0);
+  o.skipStart = skip;
+  const auto settled = identify(r, o);
+  CHECK(settlingWarnings(settled).empty());
+  REQUIRE(settled.axis("gx").written.latent);
+  CHECK(settled.axis("gx").written.latent->terms.name() == "white + gm");
+}
