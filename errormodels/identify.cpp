@@ -557,7 +557,9 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
              friendly(std::sqrt(ax.written.ar->drivingVariance), sensor) + ")";
         ax.written.notes.push_back(s);
       }
-      if (ax.latent && ax.latent->model.arPolynomial.empty()) {
+      // The settling test needs a model of the record's slow part: the composite fits have one
+      // (an AR alone does not: against it, every record's slow wander would be a settling).
+      if (ax.latent) {
         ax.settling = fit::testStartSettling(x, dt, ax.latent->model);
         if (ax.settling && ax.settling->pValue < fit::kStartSettlingP)
           warnings[slot].push_back(std::string(c.name) + ": " +

@@ -125,8 +125,9 @@ struct AxisIdentification {
   std::optional<fit::AllanFit> allanFit;           ///< five-term fit of the whole curve
   /// Allan terms fitted beside an AR on the long-tau part (Auto); the AR carries N and Q.
   std::optional<fit::AllanFit> allanLongTau;
-  /// The start-settling test against the written composite model (fit/start_settling.hpp); unset
-  /// where it was not run (an AR in the model, a record of fewer than 64 blocks).
+  /// The start-settling test against the written composite model (fit/start_settling.hpp; `gm`,
+  /// `latent`, `ar+slow`, `auto`); unset where it was not run (`ar` and `allan`, whose models
+  /// hold no slow part to test against; an AR slow at the block scale; fewer than 64 blocks).
   std::optional<fit::StartSettling> settling;
 
   fit::AxisFitResult written;  ///< exactly what goes into the model file for this axis

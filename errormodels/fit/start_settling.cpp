@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/fit/block_likelihood.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -22,13 +23,32 @@ std::vector<double> blockShape(std::size_t blocks, std::size_t B, double dt, dou
   return s;
 }
 
+/// The model with its AR term replaced by the white noise of the same long-run variance,
+/// dt E / A(1)^2 per unit density (the sum of the AR's autocovariances): what the means of blocks
+/// much longer than its correlation time see. None when its slowest pole's correlation time is not
+/// below a quarter of a block (there the AR is a slow process at the block scale).
+std::optional<LatentModel> blockLevelModel(const LatentModel& model, double dt, std::size_t B) {
+  if (model.arPolynomial.empty() || !(model.arVariance > 0.0)) return model;
+  const double r = arMaxPoleMagnitude(model.arPolynomial);
+  if (!(r < 1.0) || -dt / std::log(r) >= 0.25 * dt * double(B)) return std::nullopt;
+  double A1 = 0.0;
+  for (double a : model.arPolynomial) A1 += a;
+  LatentModel m = model;
+  m.white = std::sqrt(model.white * model.white + dt * model.arVariance / (A1 * A1));
+  m.arPolynomial.clear();
+  m.arVariance = 0.0;
+  return m;
+}
+
 }  // namespace
 
 std::optional<StartSettling> testStartSettling(const std::vector<double>& x, double dt,
-                                               const LatentModel& model) {
-  if (model.arVariance > 0.0 || !model.arPolynomial.empty()) return std::nullopt;
+                                               const LatentModel& given) {
   const std::size_t B = blockSize(x.size(), 1);
   if (x.size() / B < kMinBlocks) return std::nullopt;
+  const std::optional<LatentModel> blockModel = blockLevelModel(given, dt, B);
+  if (!blockModel) return std::nullopt;
+  const LatentModel& model = *blockModel;
   const BlockMeans b = blockMeans(x, dt, B);
   const std::size_t M = b.y.size();
   const double L = dt * double(B), T = L * double(M);

@@ -45,8 +45,10 @@ struct StartSettling {
 inline constexpr double kStartSettlingP = 1e-3;
 
 /// The test on x (the record's samples, mean removed or not) under `model`, sampled at dt [s].
-/// None when the record has fewer than 64 blocks, the grid is shorter than an octave, or the
-/// model has an AR term (its block law is not modelled).
+/// An AR term is taken as the white noise of its long-run variance (dt E / A(1)^2 per density
+/// squared), which is what means of blocks much longer than its correlation time see. None when
+/// the record has fewer than 64 blocks, the grid is shorter than an octave, or the AR's slowest
+/// pole has a correlation time of a quarter block or more.
 std::optional<StartSettling> testStartSettling(const std::vector<double>& x, double dt,
                                                const LatentModel& model);
 

@@ -92,11 +92,22 @@ TEST_CASE("start settling: a ramp is no settling, with or without a drift in the
   CHECK(fired <= 1);
 }
 
-TEST_CASE("start settling: not tested with an AR term or on a short record", "[fit][settling]") {
-  LatentModel ar = whiteGm();
+TEST_CASE("start settling: a fast AR is its long-run white noise, a slow one is not tested", "[fit][settling]") {
+  // An AR(1) of pole 0.5 (correlation time 1.4 samples; the blocks are 16) in the model is the
+  // white noise of its long-run variance, dt E / (1 - 0.5)^2 per density squared: the same test
+  // as with that white noise given. A pole of 0.99 (100 samples, > a quarter block): not tested.
+  const std::vector<double> x = record(whiteGm(), 1);
+  LatentModel ar = whiteGm(), white = whiteGm();
   ar.arPolynomial = {1.0, -0.5};
   ar.arVariance = 0.01;
-  CHECK_FALSE(testStartSettling(record(whiteGm(), 1), kDt, ar));
+  white.white = std::sqrt(white.white * white.white + kDt * 0.01 / 0.25);
+  const auto withAr = testStartSettling(x, kDt, ar), withWhite = testStartSettling(x, kDt, white);
+  REQUIRE(withAr);
+  REQUIRE(withWhite);
+  CHECK(withAr->z == Approx(withWhite->z).epsilon(1e-9));
+  CHECK(withAr->tau == withWhite->tau);
+  ar.arPolynomial = {1.0, -0.99};
+  CHECK_FALSE(testStartSettling(x, kDt, ar));
   const std::vector<double> shortRecord(63, 0.5);  // fewer than 64 blocks
   CHECK_FALSE(testStartSettling(shortRecord, kDt, whiteGm()));
 }
@@ -126,4 +137,43 @@ TEST_CASE("start settling: a model that understates the noise is rescaled by the
   }
   CHECK(fired <= 3);
   CHECK(unrescaled >= 5);
+}
+
+TEST_CASE("start settling: with an AR model, the bound holds and a settling is found", "[fit][settling]") {
+  // Records of an AR(2) (poles 0.6 and -0.4, unit driving noise) made here, the true AR given:
+  // the block-level white equivalent is exact up to the blocks' edges, so the null bound holds
+  // (p < 1e-3 on at most 3 of 200; p < 0.05 on at most 18: seeds 5001-5200 give 0 and 7), and a
+  // settling of 0.5 with tau 20 s (z about 9: the blocks' sd is 1 / (1 - 0.2 - 0.24) / 4 = 0.45)
+  // is found in at least 49 of 50 (50 on seeds 6001-6050).
+  LatentModel m;
+  m.arPolynomial = {1.0, -0.2, -0.24};  // (1 - 0.6 z^-1)(1 + 0.4 z^-1)
+  m.arVariance = 1.0;
+  auto arRecord = [](unsigned seed, double A) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal;
+    std::vector<double> x(kN);
+    double x1 = 0.0, x2 = 0.0;
+    for (int k = 0; k < 200; ++k) {  // burn-in
+      const double v = 0.2 * x1 + 0.24 * x2 + normal(rng);
+      x2 = x1, x1 = v;
+    }
+    for (std::size_t k = 0; k < kN; ++k) {
+      const double v = 0.2 * x1 + 0.24 * x2 + normal(rng);
+      x2 = x1, x1 = v;
+      x[k] = v + A * std::exp(-(double(k) + 0.5) * kDt / 20.0);
+    }
+    return x;
+  };
+  int below5 = 0, below1e3 = 0, found = 0;
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    const auto s = testStartSettling(arRecord(5000 + seed, 0.0), kDt, m);
+    REQUIRE(s);
+    below5 += s->pValue < 0.05;
+    below1e3 += s->pValue < kStartSettlingP;
+  }
+  for (unsigned seed = 1; seed <= 50; ++seed)
+    found += testStartSettling(arRecord(6000 + seed, 0.5), kDt, m)->pValue < kStartSettlingP;
+  CHECK(below5 <= 18);
+  CHECK(below1e3 <= 3);
+  CHECK(found >= 49);
 }
