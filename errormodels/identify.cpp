@@ -563,7 +563,8 @@ Identification identify(const Record& record, const IdentifyOptions& opt) {
         ax.settling = fit::testStartSettling(x, dt, ax.latent->model);
         if (ax.settling && ax.settling->pValue < fit::kStartSettlingP)
           warnings[slot].push_back(std::string(c.name) + ": " +
-                                   settlingMessage(*ax.settling, sensor, double(skip) * dt, double(n) * dt));
+                                   settlingMessage(*ax.settling, sensor, record.skipped_s + double(skip) * dt,
+                                                   double(n) * dt));
       }
       const double Q = writtenQuantization(ax.written);
       ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);

@@ -79,6 +79,8 @@ struct Record {
   std::vector<TimeIrregularity> irregularities;
   std::size_t irregular_count = 0;  ///< total number of irregular steps found
   std::size_t rows = 0;             ///< number of samples
+  /// [s] the file's start dropped by RecordOptions::skip_s (what a message's "--skip" counts from)
+  double skipped_s = 0.0;
 
   std::size_t size() const { return rows; }
   double duration() const { return rows / rate_hz; }  ///< [s] rows times the nominal step

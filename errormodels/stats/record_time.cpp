@@ -109,6 +109,7 @@ void applyWindow(Record& rec, const RecordOptions& o) {
     v.erase(v.begin() + static_cast<std::ptrdiff_t>(first + count), v.end());
     v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(first));
   };
+  rec.skipped_s = double(first) / rec.rate_hz;
   cut(rec.t);
   for (auto& v : rec.gyro) cut(v);
   for (auto& v : rec.accel) cut(v);

@@ -748,6 +748,13 @@ TEST_CASE("a settling at the record start is warned with the skip that removes i
   const double skip = std::stod(warned[0].substr(at + 7));
   CHECK(skip >= gx.settling->settledAfter);
   CHECK(skip < 600.0);
+  // The skip counts from the file's start: a record already cut at load by 20 s (as `--skip 20`
+  // leaves it, Record::skipped_s) is told a skip 20 s longer than the same samples uncut.
+  Record cut = r;
+  cut.skipped_s = 20.0;
+  const auto cutWarned = settlingWarnings(identify(cut, o));
+  REQUIRE(cutWarned.size() == 1);
+  CHECK(std::stod(cutWarned[0].substr(cutWarned[0].find("--skip ") + 7)) == Approx(skip + 20.0).margin(1.0));
   o.skipStart = skip;
   const auto settled = identify(r, o);
   CHECK(settlingWarnings(settled).empty());

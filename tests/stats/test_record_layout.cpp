@@ -129,6 +129,7 @@ TEST_CASE("record window: --skip and --duration keep the samples from skip to sk
   CHECK(r.gyro[0].back() == Approx(7 * kDeg));
   CHECK(r.t.front() == Approx(0.3));
   CHECK(r.accel[2].size() == 5);
+  CHECK(r.skipped_s == Approx(0.3));  // what a message's suggested --skip counts from
 
   opt.duration_s.reset();
   CHECK(parseRecord(tenRows("t,gx,gy,gz,ax,ay,az", ","), "w.csv", opt).size() == 7);
