@@ -124,7 +124,13 @@ int runFit(const FitArgs& a) {
     throw InputError("--ar-on-denoised (the paper's literal pipeline) needs --kind ar");
   opt.threads = a.threads;
 
-  const errormodels::RecordOptions ro = recordOptions(a.record);
+  // `--skip auto` (fit only): the record from its start; the fit skips a settling it finds.
+  RecordArgs recordArgs = a.record;
+  if (recordArgs.skip == "auto") {
+    opt.skipAuto = true;
+    recordArgs.skip.clear();
+  }
+  const errormodels::RecordOptions ro = recordOptions(recordArgs);
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
   if (rec.irregular_count > 0)
     std::fprintf(stderr, "fit: warning: %zu irregular time steps in %s (fitted as uniform)\n",

@@ -38,7 +38,9 @@ inline void addRecordOptions(CLI::App* c, RecordArgs& r) {
   c->add_option("--columns", r.columns,
                 "column mapping, e.g. \"t=Time[ms],gx=GyroX[deg/s],...,az=7\" (by header name or "
                 "1-based number; only numbers: the file has no header)");
-  c->add_option("--skip", r.skip, "discard the start of the record, e.g. \"10 min\" (a warm-up)");
+  c->add_option("--skip", r.skip,
+                "discard the start of the record, e.g. \"10 min\" (a warm-up); fit also takes auto "
+                "(skip a settling the fit finds)");
   c->add_option("--duration", r.duration, "use only this much of the record after --skip, e.g. \"1 h\"");
 }
 
@@ -58,6 +60,8 @@ inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
   ro.allow_irregular_time = r.allowIrregular;
   ro.separator = errormodels::parseSeparator(r.delimiter);
   if (!r.columns.empty()) ro.columns = errormodels::parseColumnMapping(r.columns);
+  if (r.skip == "auto")
+    throw InputError("--skip auto: only `sinsim fit` finds a settling to skip; give a time, e.g. \"10 min\"");
   if (!r.skip.empty()) ro.skip_s = parseDuration(r.skip, "--skip");
   if (!r.duration.empty()) ro.duration_s = parseDuration(r.duration, "--duration");
   return ro;

@@ -84,6 +84,10 @@ struct IdentifyOptions {
   bool arOnDenoised = false;
   /// [s] discard this much from the start of the record (e.g. a warm-up transient).
   double skipStart = 0.0;
+  /// After the fit, where a channel's record starts with a settling (fit/start_settling.hpp),
+  /// fit again from where the slowest of them has settled (`fit --skip auto`), unless that is
+  /// more than half the record; said in Identification::warnings either way.
+  bool skipAuto = false;
   /// Two-sided confidence level of the Allan bounds.
   double confidence = 0.683;
   /// Largest ACF lag [s] for T_c and the GM fit; 0: min(duration / 10, 100 s).

@@ -59,5 +59,12 @@ TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[id
   CHECK(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --lines all -o " + badModel.string(), err) == 1);
   CHECK(slurp(err).find("--lines: expected fit or warn, got \"all\"") != std::string::npos);
   CHECK_FALSE(fs::exists(badModel));
+  // --skip auto is fit's: fit takes it (a record without a settling: nothing more skipped), the
+  // other commands refuse it with what to give instead.
+  CHECK(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --axes gx --kind gm --skip auto -o " +
+                                    (dir / "auto.yaml").string(), err) == 0);
+  CHECK(slurp(err).find("--skip auto: no channel starts with a settling") != std::string::npos);
+  CHECK(sinsim::test::runSinsim("analyze " + (dir / "s.csv").string() + " --skip auto", err) == 1);
+  CHECK(slurp(err).find("--skip auto: only `sinsim fit` finds a settling to skip") != std::string::npos);
   fs::remove_all(dir);
 }

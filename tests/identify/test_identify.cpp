@@ -755,6 +755,15 @@ TEST_CASE("a settling at the record start is warned with the skip that removes i
   const auto cutWarned = settlingWarnings(identify(cut, o));
   REQUIRE(cutWarned.size() == 1);
   CHECK(std::stod(cutWarned[0].substr(cutWarned[0].find("--skip ") + 7)) == Approx(skip + 20.0).margin(1.0));
+  // --skip auto: the same fit again from where the settling has settled.
+  IdentifyOptions automatic = o;
+  automatic.skipAuto = true;
+  const auto refit = identify(r, automatic);
+  CHECK(double(refit.skipped) / r.rate_hz == Approx(gx.settling->settledAfter).margin(0.02));
+  REQUIRE_FALSE(refit.warnings.empty());
+  CHECK(refit.warnings[0].rfind("--skip auto: fitted from ", 0) == 0);
+  REQUIRE(refit.axis("gx").written.latent);
+  CHECK(refit.axis("gx").written.latent->terms.name() == "white + gm");
   o.skipStart = skip;
   const auto settled = identify(r, o);
   CHECK(settlingWarnings(settled).empty());
