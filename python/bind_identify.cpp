@@ -78,7 +78,10 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
   opt.criterion = em::orderCriterionByName(criterion);
   opt.denoise = denoise ? em::DenoiseChoice::Db5 : em::DenoiseChoice::None;
   opt.axes = axes;
-  opt.skipStart = quantityArg(skip, Dimension::time(), "skip");
+  if (py::isinstance<py::str>(skip) && skip.cast<std::string>() == "auto")
+    opt.skipAuto = true;  // as `fit --skip auto`
+  else
+    opt.skipStart = quantityArg(skip, Dimension::time(), "skip");
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   std::optional<em::Identification> id;
   {

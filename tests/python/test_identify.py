@@ -139,3 +139,17 @@ def test_fit_writes_a_line_as_a_sinusoid_or_leaves_it_in(tmp_path):
     assert not [e for e in kept.effects() if e["type"] == "sinusoid"]
     with pytest.raises(sinsim.InputError, match="lines"):
         sinsim.fit(rec, axes=["gx"], lines="remove")
+
+
+def test_fit_skips_a_settling_with_skip_auto(tmp_path):
+    # The fixture's white noise plus a warm-up of 0.05 deg/s decaying with tau 60 s (0.6 sample sd
+    # at t = 0): the fit warns of it; skip="auto" fits again from where it has settled.
+    white = dict(TRUE_MODEL["gyro"]["x"][0])
+    model = {"gyro": {"x": [white, {"type": "warmup", "amplitude": "0.05 deg/s", "tau": "60 s"}]}}
+    rec = sinsim.synth(model, rate=RATE, duration="2000 s", path=str(tmp_path / "warm.csv"), seed=7)
+    with pytest.warns(UserWarning, match="starts with a settling"):
+        sinsim.fit(rec, axes=["gx"], kind="gm")
+    with pytest.warns(UserWarning, match="--skip auto: fitted from"):
+        sinsim.fit(rec, axes=["gx"], kind="gm", skip="auto")
+    with pytest.raises(sinsim.InputError, match="skip"):
+        sinsim.fit(rec, axes=["gx"], skip="soon")
