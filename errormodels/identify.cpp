@@ -281,49 +281,7 @@ double latticeLsb(double Q, double lattice, double dt) {
   return lsb > 0.0 && std::fabs(std::log(lsb / fitted)) < std::log(1.5) ? lsb : 0.0;
 }
 
-}  // namespace
-
-namespace {
-Identification identifyOnce(const Record& record, const IdentifyOptions& opt);
-}  // namespace
-
-Identification identify(const Record& record, const IdentifyOptions& opt) {
-  Identification first = identifyOnce(record, opt);
-  if (!opt.skipAuto) return first;
-  // The slowest settling decides: one skip serves every channel of the record.
-  double settle = 0.0;
-  std::string which;
-  for (const AxisIdentification& ax : first.axes)
-    if (ax.settling && ax.settling->pValue < fit::kStartSettlingP) {
-      settle = std::max(settle, ax.settling->settledAfter);
-      which += (which.empty() ? "" : ", ") + ax.channel;
-    }
-  if (settle == 0.0) {
-    first.warnings.push_back("--skip auto: no channel starts with a settling; nothing more skipped");
-    return first;
-  }
-  const double used = first.duration();
-  if (settle > 0.5 * used) {
-    first.warnings.push_back("--skip auto: not applied: the settling of " + which + " lasts " + significant(settle, 3) +
-                             " s, more than half of the " + significant(used, 4) + " s used");
-    return first;
-  }
-  IdentifyOptions again = opt;
-  again.skipStart = opt.skipStart + settle;
-  again.skipAuto = false;
-  Identification second = identifyOnce(record, again);
-  second.warnings.insert(second.warnings.begin(),
-                         "--skip auto: fitted from " + significant(record.skipped_s + again.skipStart, 4) +
-                             " s of the file on (" + significant(settle, 3) + " s more skipped for the settling of " +
-                             which + "), where the first fit said:");
-  std::ptrdiff_t at = 1;
-  for (const std::string& w : first.warnings)
-    if (w.find("starts with a settling") != std::string::npos)
-      second.warnings.insert(second.warnings.begin() + at++, "  " + w);
-  return second;
-}
-
-namespace {
+/// One identification of the record as `opt` says (skipAuto aside).
 Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
   if (!(record.rate_hz > 0.0 && std::isfinite(record.rate_hz)))
     throw InputError(record.source + ": the record has no valid sample rate");
@@ -625,5 +583,41 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
 }
 
 }  // namespace
+
+Identification identify(const Record& record, const IdentifyOptions& opt) {
+  Identification first = identifyOnce(record, opt);
+  if (!opt.skipAuto) return first;
+  // The slowest settling decides: one skip serves every channel of the record.
+  double settle = 0.0;
+  std::string which;
+  for (const AxisIdentification& ax : first.axes)
+    if (ax.settling && ax.settling->pValue < fit::kStartSettlingP) {
+      settle = std::max(settle, ax.settling->settledAfter);
+      which += (which.empty() ? "" : ", ") + ax.channel;
+    }
+  if (settle == 0.0) {
+    first.warnings.push_back("--skip auto: no channel starts with a settling; nothing more skipped");
+    return first;
+  }
+  const double used = first.duration();
+  if (settle > 0.5 * used) {
+    first.warnings.push_back("--skip auto: not applied: the settling of " + which + " lasts " + significant(settle, 3) +
+                             " s, more than half of the " + significant(used, 4) + " s used");
+    return first;
+  }
+  IdentifyOptions again = opt;
+  again.skipStart = opt.skipStart + settle;
+  again.skipAuto = false;
+  Identification second = identifyOnce(record, again);
+  second.warnings.insert(second.warnings.begin(),
+                         "--skip auto: fitted from " + significant(record.skipped_s + again.skipStart, 4) +
+                             " s of the file on (" + significant(settle, 3) + " s more skipped for the settling of " +
+                             which + "), where the first fit said:");
+  std::ptrdiff_t at = 1;
+  for (const std::string& w : first.warnings)
+    if (w.find("starts with a settling") != std::string::npos)
+      second.warnings.insert(second.warnings.begin() + at++, "  " + w);
+  return second;
+}
 
 }  // namespace sinsim::errormodels

@@ -571,12 +571,14 @@ const std::string kLineModel =
     "gyro:\n  all: [{type: white, density: 0.03 deg/s/sqrt(Hz)}]\n"
     "  x: [{type: sinusoid, amplitude: 0.05 deg/s, frequency: 7.3 Hz, phase: 40 deg}]\n";
 
-std::vector<std::string> lineWarnings(const Identification& id) {
-  std::vector<std::string> lines;
+/// The fit's warnings that hold `what`.
+std::vector<std::string> warningsOf(const Identification& id, const std::string& what) {
+  std::vector<std::string> out;
   for (const std::string& w : id.warnings)
-    if (w.find("narrow line") != std::string::npos) lines.push_back(w);
-  return lines;
+    if (w.find(what) != std::string::npos) out.push_back(w);
+  return out;
 }
+std::vector<std::string> lineWarnings(const Identification& id) { return warningsOf(id, "narrow line"); }
 }  // namespace
 
 TEST_CASE("a vibration line left in the record is warned, with its frequency and size", "[identify][lines]") {
@@ -716,10 +718,7 @@ const std::string kSettlingModel =
     "  x: [{type: warmup, amplitude: 0.08 deg/s, tau: 60 s}]\n";
 
 std::vector<std::string> settlingWarnings(const Identification& id) {
-  std::vector<std::string> out;
-  for (const std::string& w : id.warnings)
-    if (w.find("starts with a settling") != std::string::npos) out.push_back(w);
-  return out;
+  return warningsOf(id, "starts with a settling");
 }
 }  // namespace
 
