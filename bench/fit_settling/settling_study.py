@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "fit_lines"))
 from auto_grid import records  # noqa: E402  (the generator's stream: a JSON line, then n float64)
 from latent_lines import truth_terms, written  # noqa: E402
 
-WARN = re.compile(r"settling: (\S+) (\S+) decaying with tau (\S+) s.*?--skip (\S+) \(s\)")
+WARN = re.compile(r"settling: (\S+) (\S+) decaying with tau (\S+) s.*?z (\S+),.*?--skip (\S+) \(s\)")
 
 
 def adev(x, m):
@@ -43,7 +43,7 @@ def fit(sinsim, csv, out, skip=None):
     r = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, check=True)
     m = WARN.search(r.stderr)
     terms, _ = written(out)
-    return terms, (None if not m else {"tau": float(m.group(3)), "skip": float(m.group(4))})
+    return terms, (None if not m else {"tau": float(m.group(3)), "z": float(m.group(4)), "skip": float(m.group(5))})
 
 
 def one(a, i, meta, x):
