@@ -43,7 +43,8 @@ struct StartSettling {
 
 /// A settling is reported below this p (the look-elsewhere bound above). 1e-4, not 1e-3: fits
 /// whose terms cannot hold the record (ar+slow on the diagnosis generators' walks and AR bases)
-/// warned on 8 of 540 null channels at 1e-3, on 4 at 1e-4; true settlings of 1.5x had z >= 7.
+/// warned on 8 of 540 null channels at 1e-3, on 4 at 1e-4; the 200 settlings of 1.5x in issue
+/// 11's round trips had |z| 4.5-44 (bench/fit_settling).
 inline constexpr double kStartSettlingP = 1e-4;
 
 /// The test on x (the record's samples, mean removed or not) under `model`, sampled at dt [s].
