@@ -9,7 +9,14 @@ Each record is fitted with --kind latent and --kind gm; a channel counts when fi
 settling on it (a warning names the channel). The AR bases are where --kind latent approximates
 the record with the terms it has.
 
+With --effects 1 each record has one hidden effect on one channel, drawn from the generator's
+whole pool (its catalogue: warm-up, ramp, walk, temperature, ...; and out of it: telegraph, bias
+step, ...) at its own sizes: the warnings are counted per hidden effect, on the hidden channel
+and on the five others.
+
   /usr/bin/python3 bench/fit_settling/null_records.py --generator main --records 40 --work /tmp/null
+  /usr/bin/python3 bench/fit_settling/null_records.py --generator alt --effects 1 --kinds latent \
+      --records 60 --work /tmp/hidden
 """
 import argparse, os, re, subprocess, sys
 from collections import defaultdict
@@ -25,11 +32,14 @@ WARN = re.compile(r"warning: (\w\w): the record starts with a settling: .*?tau (
 
 def one(a, i):
     rng = np.random.default_rng([a.seed, i])
+    null = a.effects == 0
+    effects = None if null else a.effects
     if a.generator == "main":
-        row = challenge.make(rng, i, a.work, a.max_samples, null=True)
+        row = challenge.make(rng, i, a.work, a.max_samples, null=null, effects=effects)
     else:
-        row = challenge.gen_module(a.generator).make(rng, i, a.work, a.max_samples, None, True)
-    out = {"rate": row["rate_hz"], "samples": row["samples"], "kinds": {}}
+        row = challenge.gen_module(a.generator).make(rng, i, a.work, a.max_samples, None, null, effects)
+    out = {"rate": row["rate_hz"], "samples": row["samples"], "kinds": {}, "channel": row["channel"],
+           "hidden": [h["effect"] for h in row["hidden"]]}
     for kind in a.kinds.split(","):
         r = subprocess.run([a.sinsim, "fit", row["record"], "--kind", kind, "-o", row["record"][:-4] + f".{kind}.yaml"],
                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -48,9 +58,11 @@ def main():
     ap.add_argument("--sinsim", default="build/sinsim")
     ap.add_argument("--work", default="/tmp/settling_null")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--effects", type=int, default=0, choices=[0, 1])
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
     count = defaultdict(lambda: defaultdict(int))
+    hidden = defaultdict(lambda: defaultdict(int))  # (kind, effect) -> counts
     with ThreadPoolExecutor(a.jobs) as pool:
         for k, r in enumerate(pool.map(lambda i: one(a, i), range(a.records))):
             for kind, v in r["kinds"].items():
@@ -59,12 +71,20 @@ def main():
                 c["errors"] += v["error"]
                 c["channels"] += 0 if v["error"] else 6
                 c["warned"] += len(v["warned"])
-            print(f"record {k}: {r['rate']:g} Hz, {r['samples']} samples: "
-                  + "; ".join(f"{kind} {v['warned'] or '-'}" for kind, v in r["kinds"].items()),
+                for effect in r["hidden"]:
+                    h = hidden[(kind, effect)]
+                    h["records"] += not v["error"]
+                    h["on"] += any(ch == r["channel"] for ch, _, _ in v["warned"])
+                    h["off"] += sum(ch != r["channel"] for ch, _, _ in v["warned"])
+            print(f"record {k}: {r['rate']:g} Hz, {r['samples']} samples, hidden {r['hidden']} on "
+                  f"{r['channel']}: " + "; ".join(f"{kind} {v['warned'] or '-'}" for kind, v in r["kinds"].items()),
                   file=sys.stderr, flush=True)
     for kind, c in count.items():
         print(f"{a.generator} --kind {kind}: settling warned on {c['warned']}/{c['channels']} channels "
               f"({c['records']} records, {c['errors']} fits failed)")
+    for (kind, effect), h in sorted(hidden.items()):
+        print(f"  --kind {kind}, hidden {effect}: warned on its channel {h['on']}/{h['records']}, "
+              f"on the others {h['off']}/{5 * h['records']}")
 
 
 if __name__ == "__main__":
