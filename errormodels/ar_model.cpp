@@ -29,6 +29,12 @@ double largestPoleMagnitude(const std::vector<double>& a) {
   return m;
 }
 
+double longRunVariance(const std::vector<double>& a, double drivingVariance) {
+  double A1 = 1.0;
+  for (double v : a) A1 += v;
+  return drivingVariance / (A1 * A1);
+}
+
 std::vector<double> autocovarianceOfVariance(const std::vector<double>& a, double drivingVariance,
                                              std::size_t maxLag) {
   if (!(largestPoleMagnitude(a) < 1.0))

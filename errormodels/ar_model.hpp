@@ -21,6 +21,10 @@ namespace sinsim::errormodels::ar {
 std::vector<std::complex<double>> poles(const std::vector<double>& a);
 /// max |pole|; the model is stable (stationary) iff this is < 1. 0 for p = 0.
 double largestPoleMagnitude(const std::vector<double>& a);
+/// The long-run variance E / A(1)^2 [U²] (A(1) = 1 + a1 + ... + ap): the sum of the stationary
+/// process's autocovariances over every lag, i.e. m times the variance of a mean of m samples for
+/// m much longer than its correlation time.
+double longRunVariance(const std::vector<double>& a, double drivingVariance);
 
 /// Autocovariance r(0..maxLag) [U²] of the stationary process with driving variance E [U²], from
 /// the Yule-Walker equations

@@ -320,6 +320,10 @@ double arMaxPoleMagnitude(const std::vector<double>& a) {
   return ar::largestPoleMagnitude(arCoefficients(a));
 }
 
+double arLongRunVariance(const std::vector<double>& a, double drivingVariance) {
+  return ar::longRunVariance(arCoefficients(a), drivingVariance);
+}
+
 std::vector<double> arAutocovariance(const std::vector<double>& a, double drivingVariance,
                                      std::size_t maxLag) {
   return ar::autocovarianceOfVariance(arCoefficients(a), drivingVariance, maxLag);

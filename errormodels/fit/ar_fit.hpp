@@ -106,6 +106,8 @@ std::vector<double> arCoefficients(const std::vector<double>& a);
 std::vector<std::complex<double>> arPoles(const std::vector<double>& a);
 /// ar::largestPoleMagnitude of [1, a1..ap] (< 1 for a stable, stationary model).
 double arMaxPoleMagnitude(const std::vector<double>& a);
+/// ar::longRunVariance of [1, a1..ap] [U^2].
+double arLongRunVariance(const std::vector<double>& a, double drivingVariance);
 /// ar::autocovarianceOfVariance of [1, a1..ap]: gamma_0..gamma_maxLag [U^2].
 std::vector<double> arAutocovariance(const std::vector<double>& a, double drivingVariance,
                                      std::size_t maxLag);

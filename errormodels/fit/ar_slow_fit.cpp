@@ -91,9 +91,7 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
   for (int round = 0; round < 3; ++round) {
     const double q = out.joint.model.randomWalk * out.joint.model.randomWalk * dt;
     if (!(q > 0.0)) break;
-    double a1 = 0.0;
-    for (double v : out.joint.model.arPolynomial) a1 += v;
-    const double r = out.joint.model.arVariance / (a1 * a1);
+    const double r = arLongRunVariance(out.joint.model.arPolynomial, out.joint.model.arVariance);
     // The smoother must stay much slower than the AR (else it eats the AR's correlation): its
     // time constant dt / g >= slowGmMinTc T_c, g ~ sqrt(q / r).
     if (!(dt / std::sqrt(q / r) >= options.slowGmMinTc * out.arCorrelationTime)) break;

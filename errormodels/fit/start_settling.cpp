@@ -31,10 +31,8 @@ std::optional<LatentModel> blockLevelModel(const LatentModel& model, double dt, 
   if (model.arPolynomial.empty() || !(model.arVariance > 0.0)) return model;
   const double r = arMaxPoleMagnitude(model.arPolynomial);
   if (!(r < 1.0) || -dt / std::log(r) >= 0.25 * dt * double(B)) return std::nullopt;
-  double A1 = 0.0;
-  for (double a : model.arPolynomial) A1 += a;
   LatentModel m = model;
-  m.white = std::sqrt(model.white * model.white + dt * model.arVariance / (A1 * A1));
+  m.white = std::sqrt(model.white * model.white + dt * arLongRunVariance(model.arPolynomial, model.arVariance));
   m.arPolynomial.clear();
   m.arVariance = 0.0;
   return m;

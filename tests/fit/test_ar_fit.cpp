@@ -203,6 +203,16 @@ TEST_CASE("Model autocovariance and Allan variance of an AR process", "[fit][ar]
     const double want = q / (2.0 * double(m) * double(m));
     CHECK(arAllanVariance(a, 1.0, {m})[0] == Approx(want).epsilon(1e-10));
   }
+  // Long-run variance E / A(1)^2 against the sum of the autocovariances over every lag
+  // (gamma_0 + 2 sum_k gamma_k, to lag 4000 where the paper's Gx poles have decayed below 1e-15)
+  // and, for the AR(1), against E / (1 - phi)^2.
+  CHECK(arLongRunVariance({1.0, -phi}, E) == Approx(E / ((1 - phi) * (1 - phi))).epsilon(1e-12));
+  {
+    const auto gam = arAutocovariance(a, 1.0, 4000);
+    double sum = gam[0];
+    for (std::size_t k = 1; k < gam.size(); ++k) sum += 2.0 * gam[k];
+    CHECK(arLongRunVariance(a, 1.0) == Approx(sum).epsilon(1e-9));
+  }
   // The paper's table: every polynomial is stable with the stated largest pole magnitude.
   const std::vector<double> poles = {0.982, 0.965, 0.980, 0.911, 0.833, 0.922};
   for (std::size_t i = 0; i < 6; ++i)
