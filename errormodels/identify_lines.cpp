@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "errormodels/stats/spectrum.hpp"
 
@@ -11,6 +12,12 @@ namespace {
 
 constexpr double kLineP = 1e-3;
 constexpr std::size_t kLowestBin = 12;
+/// Below the Welch test's lowest bin, the whole record's periodogram (lowLineTest) and a stricter
+/// look-elsewhere p: its continuum is predicted from 44 neighbouring ordinates, and a red
+/// continuum's curvature (a Gauss-Markov's corner in the band) is not a straight line in log-log.
+/// The diagnosis reports such a line from z 5.5 (p 4e-8); here p < 1e-6 (z 4.9): on ... null
+/// channels the largest was ... (identify_lines's test and docs/fitting.md, "Lines").
+constexpr double kLowLineP = 1e-6;
 constexpr std::size_t kMaxLines = 8;
 
 /// The Welch segment of the fit's line test on n samples: the diagnosis's (lineTestSegment, at
@@ -41,10 +48,40 @@ std::vector<RecordLine> welchLines(const std::vector<double>& x, double rate, st
   return out;
 }
 
+/// A low line proposed within this many Fourier spacings 1 / T of a low line taken is what is left
+/// of that one (as the diagnosis's kResolved); the whole record's periodogram resolves lines closer
+/// than the Welch test's 3 bins (3 N / L spacings: two slow lines 0.05 Hz apart in 20 min at 100 Hz
+/// were one before).
+constexpr double kLowResolved = 5.0;
+
+/// The line below the Welch test's reach (below its bin kLowestBin: fewer than 12 N / L cycles
+/// per record) that lowLineTest finds at p < kLowLineP, its frequency refined within one Fourier
+/// spacing either side and its amplitude fitted on the whole record; none when it lies within
+/// 3 Welch bins of a Welch line taken or within kLowResolved / T of a low one.
+std::optional<RecordLine> lowLine(const std::vector<double>& x, double rate, std::size_t L,
+                                  const std::vector<RecordLine>& taken) {
+  const LowLine low = lowLineTest(x, rate, L, kLowestBin);
+  if (low.ordinate == 0 || !(low.p < kLowLineP)) return std::nullopt;
+  const double dt = 1.0 / rate, T = double(x.size()) * dt, bin = rate / double(L);
+  const LinePeriodogram pg(x, 0.0, dt, low.freq, 1.0 / T);
+  const double f = refineLineFrequency(pg, {low.freq - 1.0 / T, low.freq + 1.0 / T}, x.size(), L);
+  if (std::any_of(taken.begin(), taken.end(), [&](const RecordLine& t) {
+        return std::fabs(f - t.fitted.frequency) <= (t.welch.bin > 0 ? 3 * bin : kLowResolved / T);
+      }))
+    return std::nullopt;
+  RecordLine line{{low.p, low.ratio, low.freq, 0}, 0.0, fitLineAt(x, 0.0, dt, f)};
+  line.welchAmplitude = line.fitted.amplitude;
+  return line;
+}
+
 }  // namespace
 
 std::vector<RecordLine> recordLines(const std::vector<double>& x, double rate) {
-  return welchLines(x, rate, segmentFor(x.size()), 4);
+  const std::size_t L = segmentFor(x.size());
+  std::vector<RecordLine> out = welchLines(x, rate, L, 4);
+  if (L >= 128)
+    if (auto low = lowLine(x, rate, L, {})) out.push_back(*low);
+  return out;
 }
 
 std::vector<RecordLine> takeOutLines(std::vector<double>& x, double rate) {
@@ -59,12 +96,18 @@ std::vector<RecordLine> takeOutLines(std::vector<double>& x, double rate) {
         return std::fabs(l.welch.freq - t.fitted.frequency) <= 3 * bin;
       });
     });
-    if (next == found.end()) break;
-    // Refined on the whole record, as the diagnosis's sinusoid detector does.
-    RecordLine line = *next;
-    const LineWindow w = welchLineWindow(line.welch.freq, bin, rate);
-    const LinePeriodogram pg(x, 0.0, dt, 0.5 * (w.fa + w.fb), 0.5 * (w.fb - w.fa));
-    line.fitted = fitLineAt(x, 0.0, dt, refineLineFrequency(pg, w, x.size(), L));
+    RecordLine line;
+    if (next != found.end()) {
+      // Refined on the whole record, as the diagnosis's sinusoid detector does.
+      line = *next;
+      const LineWindow w = welchLineWindow(line.welch.freq, bin, rate);
+      const LinePeriodogram pg(x, 0.0, dt, 0.5 * (w.fa + w.fb), 0.5 * (w.fb - w.fa));
+      line.fitted = fitLineAt(x, 0.0, dt, refineLineFrequency(pg, w, x.size(), L));
+    } else if (auto low = L >= 128 ? lowLine(x, rate, L, taken) : std::nullopt) {
+      line = *low;
+    } else {
+      break;
+    }
     const std::vector<double> s = lineSamples(line.fitted, dt, x.size());
     for (std::size_t k = 0; k < x.size(); ++k) x[k] -= s[k];
     taken.push_back(line);

@@ -14,14 +14,17 @@ namespace sinsim::errormodels::detail {
 /// A line the Welch test finds in a record (spectral_lines.hpp; segments of lineTestSegment(N), or
 /// of the largest power of two <= N / 16 where that is longer: identify_lines.cpp): from the 12th
 /// bin up, where its neighbourhood is two-sided (below it a red continuum can stand
-/// out), at a look-elsewhere p below 1e-3.
+/// out), at a look-elsewhere p below 1e-3; below that bin (fewer than 12 N / L cycles per record)
+/// by the whole record's periodogram (lowLineTest) at p below 1e-6. For a low line `welch` holds
+/// that test's p, ratio and ordinate frequency (bin 0) and welchAmplitude the fitted amplitude.
 struct RecordLine {
   WelchLine welch;           ///< the Welch bin and its ratio
   double welchAmplitude = 0; ///< [signal] welchLineAmplitude of that bin
   FittedLine fitted;         ///< on the whole record (set when taken out)
 };
 
-/// The lines of x (mean removed) without taking them out: the Welch test once.
+/// The lines of x (mean removed) without taking them out: the Welch test once, and the strongest
+/// line below its reach.
 std::vector<RecordLine> recordLines(const std::vector<double>& x, double rate);
 
 /// Finds lines in x (mean removed) one at a time, each refined and sized on the whole record

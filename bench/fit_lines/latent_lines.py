@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Issue 11's round-trip records (bench/latent_study/generate.py, NumPy only, written in an earlier
-session for the latent fit) with one or two point-sampled lines added (0.3 Hz .. 0.4 x rate,
-amplitude --line-size x the record's sample sd, random phase), fitted by `sinsim fit --kind latent`
+session for the latent fit) with one or two point-sampled lines added (0.3 Hz .. 0.4 x rate, or
+--line-freq, log-uniform; amplitude --line-size x the record's sample sd, random phase), fitted by `sinsim fit --kind latent`
 with `--lines fit` (the default) and `--lines warn`. Counts, per case, the records whose written
 noise terms are the generator's term set, and the lines written (frequency within 2 / T of a true
 one) and written where there is none.
 
   /usr/bin/python3 bench/latent_study/generate.py --rate 100 --duration 1200 --seeds 20 \\
       | /usr/bin/python3 bench/fit_lines/latent_lines.py --work /tmp/latent_lines
+  (lines below the fit's Welch reach at 20 min, 100 Hz: --line-freq 0.01 0.29)
 """
 import argparse, math, os, re, subprocess, sys
 from collections import defaultdict
@@ -50,6 +51,8 @@ def main():
     ap.add_argument("--work", default="/tmp/latent_lines")
     ap.add_argument("--sinsim", default="build/sinsim")
     ap.add_argument("--line-size", type=float, nargs=2, default=[0.5, 3.0], metavar=("LO", "HI"))
+    ap.add_argument("--line-freq", type=float, nargs=2, default=[0.3, 0.0], metavar=("LO", "HI"),
+                    help="line frequency range [Hz] (HI 0: 0.4 x rate)")
     ap.add_argument("--seed", type=int, default=7)
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
@@ -62,7 +65,8 @@ def main():
         y = x.copy()
         true_lines = []
         for _ in range(int(rng.integers(1, 3))):
-            f = math.exp(rng.uniform(math.log(0.3), math.log(0.4 * rate)))
+            hi = a.line_freq[1] if a.line_freq[1] > 0 else 0.4 * rate
+            f = math.exp(rng.uniform(math.log(a.line_freq[0]), math.log(hi)))
             y += rng.uniform(*a.line_size) * sd * np.sin(2 * math.pi * f * t + rng.uniform(0, 2 * math.pi))
             true_lines.append(f)
         csv = os.path.join(a.work, "r.csv")

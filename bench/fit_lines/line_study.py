@@ -2,15 +2,18 @@
 """Does `sinsim fit` take a record's narrow lines out before fitting its noise terms, and does that
 help? Records made here with NumPy alone (no sinsim code): on each gyro channel white noise plus a
 first-order Gauss-Markov bias (tau 2-60 s, its Allan hump 3-10x the white noise's Allan deviation
-at 1.89 tau), and 0, 1 or 2 point-sampled lines at 0.3 Hz .. 0.4 x rate with amplitude 0.05-0.5 x
-the white noise's sample sd (--line-size). Each record is fitted twice with `fit --kind gm` (white + GM, + random
-walk where selected): `--lines fit` (the default) and `--lines warn` (lines left in).
+at 1.89 tau), and 0, 1 or 2 point-sampled lines at 0.3 Hz .. 0.4 x rate (--line-freq; log-uniform)
+with amplitude 0.05-0.5 x the white noise's sample sd (--line-size). Each record is fitted twice
+with `fit --kind gm` (white + GM, + random walk where selected): `--lines fit` (the default) and
+`--lines warn` (lines left in); with --before, a third time by that binary with `--lines fit`.
 
 Per channel it counts: the term set white + gm chosen; the GM's tau and sigma within 2 of their
 stated 1-sigma of the truth; lines found (frequency within 2 Fourier spacings 1/T of a true one) and
 their sampled amplitude within 20 %; lines written that are not there.
 
   /usr/bin/python3 bench/fit_lines/line_study.py --records 60 --rate 100 --work /tmp/lines100
+  /usr/bin/python3 bench/fit_lines/line_study.py --records 60 --rate 100 --line-freq 0.01 0.29 \
+      --line-size 0.1 1 --work /tmp/lowlines     # below the fit's Welch reach at 20 min
 """
 import argparse, json, math, os, re, subprocess, sys
 import numpy as np
@@ -22,7 +25,7 @@ def gm_sigma_for(k, white_density, T):
     return k * white_density / math.sqrt(1.89 * T) / 0.617
 
 
-def make(seed, rate, seconds, size):
+def make(seed, rate, seconds, size, freq):
     rng = np.random.default_rng(seed)
     n = int(round(rate * seconds))
     dt = 1.0 / rate
@@ -41,7 +44,7 @@ def make(seed, rate, seconds, size):
         y = rng.normal(0, sd, n) + gm
         lines = []
         for _ in range(int(rng.integers(0, 3))):
-            f = math.exp(rng.uniform(math.log(0.3), math.log(0.4 * rate)))
+            f = math.exp(rng.uniform(math.log(freq[0]), math.log(freq[1] if freq[1] > 0 else 0.4 * rate)))
             A = rng.uniform(size[0], size[1]) * sd
             ph = rng.uniform(0, 2 * math.pi)
             y += A * np.sin(2 * math.pi * f * t + ph)
@@ -115,6 +118,9 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--line-size", type=float, nargs=2, default=[0.05, 0.5], metavar=("LO", "HI"),
                     help="line amplitude range, in units of the white noise's sample sd")
+    ap.add_argument("--line-freq", type=float, nargs=2, default=[0.3, 0.0], metavar=("LO", "HI"),
+                    help="line frequency range [Hz] (HI 0: 0.4 x rate)")
+    ap.add_argument("--before", default=None, help="another sinsim binary, fitted with --lines fit as 'before'")
     ap.add_argument("--work", default="/tmp/line_study")
     ap.add_argument("--sinsim", default="build/sinsim")
     a = ap.parse_args()
@@ -122,22 +128,22 @@ def main():
     rows = []
     for i in range(a.records):
         seed = a.seed * 100000 + i
-        data, truth = make(seed, a.rate, a.seconds, a.line_size)
+        data, truth = make(seed, a.rate, a.seconds, a.line_size, a.line_freq)
         csv = os.path.join(a.work, "r%04d.csv" % i)
         np.savetxt(csv, data, delimiter=",", fmt="%.9g",
                    header="t[s],gx[deg/s],gy[deg/s],gz[deg/s],ax[g],ay[g],az[g]", comments="")
         res = {}
-        for mode in ("fit", "warn"):
+        runs = [("fit", a.sinsim, "fit"), ("warn", a.sinsim, "warn")] + ([("before", a.before, "fit")] if a.before else [])
+        for mode, binary, lines in runs:
             out = os.path.join(a.work, "r%04d-%s.yaml" % (i, mode))
-            subprocess.run([a.sinsim, "fit", csv, "--kind", "gm", "--axes", "gx,gy,gz", "--lines", mode,
+            subprocess.run([binary, "fit", csv, "--kind", "gm", "--axes", "gx,gy,gz", "--lines", lines,
                             "-o", out, "--quiet"], check=True, stdout=subprocess.DEVNULL,
                            stderr=subprocess.DEVNULL)
             res[mode] = parse(out, a.rate)
         os.remove(csv)
         for c, ax in enumerate("xyz"):
             rows.append({"record": i, "axis": ax, "truth": truth[c],
-                         "fit": judge(res["fit"][ax], truth[c], a.seconds),
-                         "warn": judge(res["warn"][ax], truth[c], a.seconds)})
+                         **{mode: judge(res[mode][ax], truth[c], a.seconds) for mode in res}})
         print("record %d/%d" % (i + 1, a.records), file=sys.stderr, flush=True)
     json.dump(rows, open(os.path.join(a.work, "results.json"), "w"), indent=1)
     report(rows)
@@ -150,7 +156,7 @@ def report(rows):
         if not rs:
             continue
         print("%s: %d" % (label, len(rs)))
-        for mode in ("fit", "warn"):
+        for mode in [m for m in ("fit", "warn", "before") if m in rs[0]]:
             n = len(rs)
             s = sum(r[mode]["set"] for r in rs)
             t = sum(r[mode]["tau_ok"] for r in rs)
@@ -159,7 +165,7 @@ def report(rows):
             lf = sum(r[mode]["lines_found"] for r in rs)
             la = sum(r[mode]["amp_ok"] for r in rs)
             fa = sum(r[mode]["lines_false"] for r in rs)
-            print("  --lines %-4s white+gm %d/%d, tau within 2 sd %d/%d, sigma within 2 sd %d/%d, "
+            print("  %-6s white+gm %d/%d, tau within 2 sd %d/%d, sigma within 2 sd %d/%d, "
                   "lines found %d/%d (amplitude within 20 %%: %d), lines not there %d"
                   % (mode, s, n, t, n, g, n, lf, lt, la, fa))
 

@@ -7,7 +7,8 @@ and the others' own families, rates 50 Hz - 2 kHz, 20 min - 4 h capped at --max-
 
 Each record is fitted with --kind latent and --kind gm; a channel counts when fit warns of a
 settling on it (a warning names the channel). The AR bases are where --kind latent approximates
-the record with the terms it has.
+the record with the terms it has. The narrow lines fit writes (its line warnings) are counted too:
+on a null record each is a false line.
 
 With --effects 1 each record has one hidden effect on one channel, drawn from the generator's
 whole pool (its catalogue: warm-up, ramp, walk, temperature, ...; and out of it: telegraph, bias
@@ -28,6 +29,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "diagnose_challenge"))
 import challenge  # noqa: E402
 
 WARN = re.compile(r"warning: (\w\w): the record starts with a settling: .*?tau (\S+) s.*?z (\S+),")
+LINE = re.compile(r"warning: (\w\w): a narrow line at (\S+) Hz")
 
 
 def one(a, i):
@@ -39,11 +41,16 @@ def one(a, i):
     else:
         row = challenge.gen_module(a.generator).make(rng, i, a.work, a.max_samples, None, null, effects)
     out = {"rate": row["rate_hz"], "samples": row["samples"], "kinds": {}, "channel": row["channel"],
-           "hidden": [h["effect"] for h in row["hidden"]]}
+           "hidden": [h["effect"] for h in row["hidden"]],
+           "sizes": [f'{h["effect"]} {h["size"]:.3g}x' + (f' tau {h.get("tau_c", h.get("tau_s")):.3g} s' if "tau_c" in h or "tau_s" in h else "")
+                     for h in row["hidden"]]}
     for kind in a.kinds.split(","):
         r = subprocess.run([a.sinsim, "fit", row["record"], "--kind", kind, "-o", row["record"][:-4] + f".{kind}.yaml"],
                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        out["kinds"][kind] = {"error": r.returncode != 0, "warned": WARN.findall(r.stderr)}
+        out["kinds"][kind] = {"error": r.returncode != 0, "warned": WARN.findall(r.stderr),
+                              "lines": LINE.findall(r.stderr)}
+        if r.returncode != 0:
+            out["kinds"][kind]["message"] = r.stderr.strip().splitlines()[-1:] if r.stderr.strip() else ["exit %d" % r.returncode]
     os.remove(row["record"])
     return out
 
@@ -71,17 +78,20 @@ def main():
                 c["errors"] += v["error"]
                 c["channels"] += 0 if v["error"] else 6
                 c["warned"] += len(v["warned"])
+                c["lines"] += len(v["lines"])
                 for effect in r["hidden"]:
                     h = hidden[(kind, effect)]
                     h["records"] += not v["error"]
                     h["on"] += any(ch == r["channel"] for ch, _, _ in v["warned"])
                     h["off"] += sum(ch != r["channel"] for ch, _, _ in v["warned"])
-            print(f"record {k}: {r['rate']:g} Hz, {r['samples']} samples, hidden {r['hidden']} on "
-                  f"{r['channel']}: " + "; ".join(f"{kind} {v['warned'] or '-'}" for kind, v in r["kinds"].items()),
+            print(f"record {k}: {r['rate']:g} Hz, {r['samples']} samples, hidden {r['sizes']} on "
+                  f"{r['channel']}: " + "; ".join(f"{kind} {v['warned'] or '-'}" + (f" lines {v['lines']}" if v["lines"] else "")
+                             + (f" FAILED {v['message']}" if v["error"] else "")
+                             for kind, v in r["kinds"].items()),
                   file=sys.stderr, flush=True)
     for kind, c in count.items():
         print(f"{a.generator} --kind {kind}: settling warned on {c['warned']}/{c['channels']} channels "
-              f"({c['records']} records, {c['errors']} fits failed)")
+              f"({c['records']} records, {c['errors']} fits failed); lines written {c['lines']}")
     for (kind, effect), h in sorted(hidden.items()):
         print(f"  --kind {kind}, hidden {effect}: warned on its channel {h['on']}/{h['records']}, "
               f"on the others {h['off']}/{5 * h['records']}")

@@ -53,4 +53,43 @@ double welchLineAmplitude(double psd, double ratio, double enbw_hz) {
   return std::sqrt(2.0 * std::max(0.0, psd - psd / ratio) * enbw_hz);
 }
 
+LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin) {
+  if (y.size() < 16 || segment == 0) return {};
+  const Periodogram pg = taperedPeriodogram(y, 0.1, Detrend::Linear);
+  const std::size_t n = pg.taper.size();
+  constexpr std::ptrdiff_t kReach = 24;
+  const std::size_t jLo = 12;
+  const std::size_t jHi = std::min(pg.I.size() > kReach + 1 ? pg.I.size() - kReach - 1 : 0,
+                                   std::size_t(std::ceil(double(lowestBin) * double(n) / double(segment))) + 2);
+  if (jHi < jLo) return {};
+  constexpr double kGamma = 0.5772156649015329, kVarLogExp = M_PI * M_PI / 6;
+  double bestR = 0, bestS = 0;
+  std::size_t bestJ = 0;
+  for (std::size_t j = jLo; j <= jHi; ++j) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+    for (std::ptrdiff_t d = -kReach; d <= kReach; ++d) {
+      if (std::abs(d) < 3 || std::ptrdiff_t(j) + d < 3) continue;
+      const double I = pg.I[std::size_t(std::ptrdiff_t(j) + d)];
+      if (!(I > 0)) continue;
+      const double x = std::log(double(std::ptrdiff_t(j) + d) / double(j)), v = std::log(I);
+      sx += x, sy += v, sxx += x * x, sxy += x * v, m += 1;
+    }
+    if (m < 20) continue;
+    const double xm = sx / m, Sxx = sxx - sx * xm;
+    const double b = Sxx > 0 ? (sxy - sx * sy / m) / Sxx : 0.0;
+    const double a = sy / m - b * xm;  // the fit at x = 0 (j itself)
+    const double r = pg.I[j] / std::exp(a + kGamma);
+    if (r > bestR) bestR = r, bestJ = j, bestS = std::sqrt(kVarLogExp * (1 / m + (Sxx > 0 ? xm * xm / Sxx : 0.0)));
+  }
+  if (bestJ == 0) return {};
+  // P(Exp(1) e^{-e} > x) = E exp(-x e^e), e ~ N(0, s^2): midpoint rule over +-8 s.
+  double p = 0;
+  const int steps = 800;
+  for (int i = 0; i < steps; ++i) {
+    const double u = -8.0 + 16.0 * (i + 0.5) / steps;
+    p += std::exp(-bestR * std::exp(u * bestS) - 0.5 * u * u) * (16.0 / steps) / std::sqrt(2 * M_PI);
+  }
+  return {std::min(1.0, p * double(jHi - jLo + 1)), bestR, double(bestJ) * rate / double(n), bestJ};
+}
+
 }  // namespace sinsim::errormodels

@@ -33,6 +33,26 @@ std::size_t lineTestSegment(std::size_t n);
 /// on the whole record before calling it one. Empty below 40 bins.
 std::vector<WelchLine> welchLineTest(const PowerSpectrum& p, std::size_t count);
 
+/// A line below a Welch test's reach: the whole record's periodogram ordinate that stands out most.
+struct LowLine {
+  double p = 1.0;              ///< probability of so large an ordinate among those scanned (Bonferroni)
+  double ratio = 0.0;          ///< the ordinate over the continuum predicted from its neighbours
+  double freq = 0.0;           ///< [Hz] its frequency, j / T
+  std::size_t ordinate = 0;    ///< j, cycles per record (0: nothing scanned)
+};
+
+/// The line test below a Welch test's lowest bin `lowestBin` (segments of `segment` samples): on
+/// the whole record's tapered periodogram (taperedPeriodogram, 10 % split-cosine bell, line
+/// removed: a steep continuum's power stays local), each ordinate I_j, j = 12 .. lowestBin n /
+/// segment + 2 (n the periodogram's length), against the continuum there: a least-squares line in
+/// log I over log j fitted to its neighbours j +- 3..24 from j = 3 up (the line's own main lobe
+/// left out; a red continuum's slope followed, not taken for a peak), predicting ln S_j - gamma
+/// (E ln of an Exp(1) ordinate is -gamma, its variance pi^2 / 6). Then r = I_j / S_j-hat is Exp(1)
+/// times exp(-e), e the prediction's error (~ N(0, s^2), s from the fit), so P(r > x) = E exp(-x
+/// e^e), integrated numerically, and Bonferroni over the ordinates scanned. Returns the largest r.
+/// The diagnosis's sinusoid detector scans below its Welch bin 3, the fit below its bin 12.
+LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin);
+
 /// The amplitude [signal] of a sinusoid whose line stands `ratio` times above the continuum in a
 /// bin of density `psd` [signal²/Hz]: its power A²/2 is (psd − psd / ratio) times the bin's
 /// equivalent noise bandwidth, exact for a line at a bin's centre (Hann: up to 16 % low between

@@ -58,54 +58,13 @@ double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const Li
 }
 
 /// A line below the Welch test's reach (its bins k >= 3, f >= 3 rate / L: on a record of n
-/// samples the lowest 3 n / L Fourier frequencies, up to ~730 cycles per record at 1e6 samples).
-/// On the whole record's tapered periodogram (taperedPeriodogram, 10 % split-cosine bell, line
-/// removed: a steep continuum's power stays local), each ordinate I_j, j = 12 .. 3 n / L + 2,
-/// against the continuum there: a least-squares line in log I over log j fitted to its neighbours
-/// j +- 3..24 from j = 3 up (the line's own main lobe left out; a red continuum's slope followed,
-/// not taken for a peak), predicting ln S_j - gamma (E ln of an Exp(1) ordinate is -gamma, its variance
-/// pi^2 / 6). Then r = I_j / S_j-hat is Exp(1) times exp(-e), e the prediction's error
-/// (~ N(0, s^2), s from the fit), so P(r > x) = E exp(-x e^e), integrated numerically, and
-/// Bonferroni over the ordinates scanned. Returns the largest r's z and its frequency (z 0: none).
+/// samples the lowest 3 n / L Fourier frequencies, up to ~730 cycles per record at 1e6 samples):
+/// the shared test on the whole record's periodogram (stats/spectral_lines.hpp, lowLineTest).
+/// Returns its z and frequency (z 0: none scanned).
 WelchLine lowLineTest(const DetectorContext& ctx) {
-  const std::size_t L = ctx.setup.psdSegment;
-  if (ctx.N < 16) return {};
-  const Periodogram pg = taperedPeriodogram(ctx.y, 0.1, Detrend::Linear);
-  const std::size_t n = pg.taper.size();
-  constexpr std::ptrdiff_t kReach = 24;
-  const std::size_t jLo = 12;
-  const std::size_t jHi = std::min(pg.I.size() > kReach + 1 ? pg.I.size() - kReach - 1 : 0,
-                                   std::size_t(std::ceil(3.0 * double(n) / double(L))) + 2);
-  if (jHi < jLo) return {};
-  constexpr double kGamma = 0.5772156649015329, kVarLogExp = M_PI * M_PI / 6;
-  double bestR = 0, bestS = 0;
-  std::size_t bestJ = 0;
-  for (std::size_t j = jLo; j <= jHi; ++j) {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
-    for (std::ptrdiff_t d = -kReach; d <= kReach; ++d) {
-      if (std::abs(d) < 3 || std::ptrdiff_t(j) + d < 3) continue;
-      const double I = pg.I[std::size_t(std::ptrdiff_t(j) + d)];
-      if (!(I > 0)) continue;
-      const double x = std::log(double(std::ptrdiff_t(j) + d) / double(j)), y = std::log(I);
-      sx += x, sy += y, sxx += x * x, sxy += x * y, m += 1;
-    }
-    if (m < 20) continue;
-    const double xm = sx / m, Sxx = sxx - sx * xm;
-    const double b = Sxx > 0 ? (sxy - sx * sy / m) / Sxx : 0.0;
-    const double a = sy / m - b * xm;  // the fit at x = 0 (j itself)
-    const double r = pg.I[j] / std::exp(a + kGamma);
-    if (r > bestR) bestR = r, bestJ = j, bestS = std::sqrt(kVarLogExp * (1 / m + (Sxx > 0 ? xm * xm / Sxx : 0.0)));
-  }
-  if (bestJ == 0) return {};
-  // P(Exp(1) e^{-e} > x) = E exp(-x e^e), e ~ N(0, s^2): midpoint rule over +-8 s.
-  double p = 0;
-  const int steps = 800;
-  for (int i = 0; i < steps; ++i) {
-    const double u = -8.0 + 16.0 * (i + 0.5) / steps;
-    p += std::exp(-bestR * std::exp(u * bestS) - 0.5 * u * u) * (16.0 / steps) / std::sqrt(2 * M_PI);
-  }
-  const double pAll = std::min(1.0, p * double(jHi - jLo + 1));
-  return {pAll > 0 ? zFromTwoSidedP(pAll) : 40.0, double(bestJ) * ctx.record.rate_hz / double(n)};
+  const LowLine low = errormodels::lowLineTest(ctx.y, ctx.record.rate_hz, ctx.setup.psdSegment, 3);
+  if (low.ordinate == 0) return {};
+  return {low.p > 0 ? zFromTwoSidedP(low.p) : 40.0, low.freq};
 }
 
 /// A line proposed at f within the Welch test's separation of a line taken out at `taken` [Hz] is
