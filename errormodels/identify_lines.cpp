@@ -60,9 +60,12 @@ constexpr double kLowResolved = 5.0;
 /// 3 Welch bins of a Welch line taken or within kLowResolved / T of a low one.
 std::optional<RecordLine> lowLine(const std::vector<double>& x, double rate, std::size_t L,
                                   const std::vector<RecordLine>& taken) {
-  const LowLine low = lowLineTest(x, rate, L, kLowestBin);
-  if (low.ordinate == 0 || !(low.p < kLowLineP)) return std::nullopt;
   const double dt = 1.0 / rate, T = double(x.size()) * dt, bin = rate / double(L);
+  std::vector<double> lowTaken;  // what is left of a low line taken is not proposed again
+  for (const RecordLine& t : taken)
+    if (t.welch.bin == 0) lowTaken.push_back(t.fitted.frequency);
+  const LowLine low = lowLineTest(x, rate, L, kLowestBin, lowTaken, kLowResolved / T);
+  if (low.ordinate == 0 || !(low.p < kLowLineP)) return std::nullopt;
   const LinePeriodogram pg(x, 0.0, dt, low.freq, 1.0 / T);
   const double f = refineLineFrequency(pg, {low.freq - 1.0 / T, low.freq + 1.0 / T}, x.size(), L);
   if (std::any_of(taken.begin(), taken.end(), [&](const RecordLine& t) {

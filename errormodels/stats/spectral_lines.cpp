@@ -53,7 +53,8 @@ double welchLineAmplitude(double psd, double ratio, double enbw_hz) {
   return std::sqrt(2.0 * std::max(0.0, psd - psd / ratio) * enbw_hz);
 }
 
-LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin) {
+LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin,
+                    const std::vector<double>& taken, double skip) {
   if (y.size() < 16 || segment == 0) return {};
   const Periodogram pg = taperedPeriodogram(y, 0.1, Detrend::Linear);
   const std::size_t n = pg.taper.size();
@@ -65,7 +66,12 @@ LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segme
   constexpr double kGamma = 0.5772156649015329, kVarLogExp = M_PI * M_PI / 6;
   double bestR = 0, bestS = 0;
   std::size_t bestJ = 0;
+  auto nearTaken = [&](std::size_t j) {
+    const double f = double(j) * rate / double(n);
+    return std::any_of(taken.begin(), taken.end(), [&](double t) { return std::fabs(f - t) <= skip; });
+  };
   for (std::size_t j = jLo; j <= jHi; ++j) {
+    if (!taken.empty() && nearTaken(j)) continue;
     double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
     for (std::ptrdiff_t d = -kReach; d <= kReach; ++d) {
       if (std::abs(d) < 3 || std::ptrdiff_t(j) + d < 3) continue;

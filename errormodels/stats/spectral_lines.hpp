@@ -51,7 +51,11 @@ struct LowLine {
 /// times exp(-e), e the prediction's error (~ N(0, s^2), s from the fit), so P(r > x) = E exp(-x
 /// e^e), integrated numerically, and Bonferroni over the ordinates scanned. Returns the largest r.
 /// The diagnosis's sinusoid detector scans below its Welch bin 3, the fit below its bin 12.
-LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin);
+/// Ordinates within `skip` [Hz] of a frequency in `taken` [Hz] (lines already taken out: what
+/// is left of them) are not proposed; they stay among the neighbours, and the Bonferroni count
+/// stays that of every ordinate scanned.
+LowLine lowLineTest(const std::vector<double>& y, double rate, std::size_t segment, std::size_t lowestBin,
+                    const std::vector<double>& taken = {}, double skip = 0.0);
 
 /// The amplitude [signal] of a sinusoid whose line stands `ratio` times above the continuum in a
 /// bin of density `psd` [signal²/Hz]: its power A²/2 is (psd − psd / ratio) times the bin's

@@ -226,3 +226,45 @@ TEST_CASE("Welch line test: a sinusoid is found and sized, white and red continu
   CHECK(gm <= 2);
   CHECK(walk <= 2);
 }
+
+// The line test below the Welch bins (lowLineTest): records of 2^15 samples at 100 Hz (T 328 s),
+// segments of 4096, Welch bin 12: ordinates 12..98 scanned. On 200 white records its p is at
+// least as large as its law says (Bonferroni over the ordinates is conservative): p < 0.05 on at
+// most 20 (expected <= 10; binomial P(> 20) = 1e-3), p < 0.01 on at most 6. A line of 40 cycles
+// (0.1 x the white sd: its ordinate ~N A^2 / 4 = 80 times the continuum) is found at its
+// frequency (within 1 / T) at p < 1e-8; given as taken (skipped within 5 / T), the next line,
+// 70 cycles at 0.05, is found instead; with both taken, nothing at p < 1e-3.
+TEST_CASE("low-line test: conservative on white noise, a line at its ordinate, a taken one skipped",
+          "[psd][lines]") {
+  const double fs = 100.0;
+  const std::size_t n = std::size_t(1) << 15;
+  const double T = double(n) / fs;
+  std::mt19937_64 rng(2031);  // stream "low-lines"
+  std::normal_distribution<double> g(0.0, 1.0);
+  int below05 = 0, below01 = 0;
+  for (int s = 0; s < 200; ++s) {
+    const LowLine l = lowLineTest(draws(rng, g, n), fs, 4096, 12);
+    REQUIRE(l.ordinate >= 12);
+    REQUIRE(l.ordinate <= 98);
+    below05 += l.p < 0.05;
+    below01 += l.p < 0.01;
+  }
+  INFO("white: p < 0.05 on " << below05 << ", p < 0.01 on " << below01 << " of 200");
+  CHECK(below05 <= 20);
+  CHECK(below01 <= 6);
+  for (int s = 0; s < 5; ++s) {
+    std::vector<double> x = draws(rng, g, n);
+    const double f0 = 40 / T, f1 = 70 / T;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double t = double(k) / fs;
+      x[k] += 0.1 * std::sin(2 * M_PI * f0 * t + s) + 0.05 * std::sin(2 * M_PI * f1 * t + 2 * s);
+    }
+    const LowLine first = lowLineTest(x, fs, 4096, 12);
+    CHECK(first.p < 1e-8);
+    CHECK(std::fabs(first.freq - f0) <= 1 / T);
+    const LowLine second = lowLineTest(x, fs, 4096, 12, {f0}, 5 / T);
+    CHECK(second.p < 1e-3);
+    CHECK(std::fabs(second.freq - f1) <= 1 / T);
+    CHECK(lowLineTest(x, fs, 4096, 12, {f0, f1}, 5 / T).p > 1e-3);
+  }
+}
