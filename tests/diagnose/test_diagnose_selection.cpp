@@ -463,7 +463,7 @@ TEST_CASE("a line at the lowest Welch bins is still a line", "[diagnose][selecti
   }
 }
 
-// A line below the Welch bins (detectors/sinusoid.cpp, lowLineTest): 25 cycles in 300 s
+// A line below the Welch bins (stats/spectral_lines.hpp, lowLineTest; detectors/sinusoid.cpp): 25 cycles in 300 s
 // (0.0833 Hz, 1.7 Welch bins: the Welch test, bins >= 3, cannot see it; before the whole-record
 // scan no sinusoid candidate was proposed on any of these seeds), A = 0.01 deg/s on the white
 // floor: its ordinate over the continuum's mean is A^2 N / (4 s^2) = 75 (s^2 = 0.01 (deg/s)^2),

@@ -61,7 +61,7 @@ double fineLineZ(const DetectorContext& ctx, const LinePeriodogram& pg, const Li
 /// samples the lowest 3 n / L Fourier frequencies, up to ~730 cycles per record at 1e6 samples):
 /// the shared test on the whole record's periodogram (stats/spectral_lines.hpp, lowLineTest).
 /// Returns its z and frequency (z 0: none scanned).
-WelchLine lowLineTest(const DetectorContext& ctx) {
+WelchLine lowLineZ(const DetectorContext& ctx) {
   const LowLine low = errormodels::lowLineTest(ctx.y, ctx.record.rate_hz, ctx.setup.psdSegment, 3);
   if (low.ordinate == 0) return {};
   return {low.p > 0 ? zFromTwoSidedP(low.p) : 40.0, low.freq};
@@ -155,9 +155,9 @@ std::vector<Candidate> detect_sinusoid(const DetectorContext& ctx) {
     const double z = std::min(line.z, fineLineZ(ctx, pg, win, f));
     if (z > lineZ || f0 == 0) lineZ = z, f0 = f;
   }
-  // Below the Welch bins: the whole record's periodogram (lowLineTest), refined within one
+  // Below the Welch bins: the whole record's periodogram (lowLineZ), refined within one
   // Fourier spacing either side.
-  if (const WelchLine low = lowLineTest(ctx); low.z > lineZ) {
+  if (const WelchLine low = lowLineZ(ctx); low.z > lineZ) {
     const double T = double(ctx.N) * ctx.dt;
     const LineWindow win{low.freq - 1.0 / T, low.freq + 1.0 / T};
     const LinePeriodogram pg(ctx.y, ctx.mean, ctx.dt, low.freq, 1.0 / T);
