@@ -921,6 +921,67 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
 
 namespace {
 
+/// Whether the record's Allan points below a scanned start refute the fit's quantization: the
+/// terms' Allan variances add and none is negative, so no term's own may exceed the whole
+/// record's, yet 3 Q^2 / tau^2, fitted from a start far above dt, is extrapolated down with slope
+/// -1. On the 1000-s ADIS16405 run-2 window a quantization fitted from 0.64 s up (beside white
+/// noise and a walk) was 41x the record's Allan variance at 10 ms (the issue's "an LSB whose noise
+/// at one sample is 10x the record's"). Refuted beyond kRefutedBelow: the estimates there scatter
+/// by a few % and an internal filter lowers a record's shortest tau by tens of %, not by 2x.
+bool quantizationRefutedBelow(const LatentFit& fit, const std::vector<std::size_t>& m,
+                              const std::vector<double>& avar) {
+  constexpr double kRefutedBelow = 2.0;
+  if (!(fit.model.quantization > 0.0) || fit.tau.empty()) return false;
+  LatentModel q;
+  q.quantization = fit.model.quantization;
+  q.lattice = fit.model.lattice;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const double tau = double(m[i]) * fit.sampleInterval;
+    if (tau >= fit.tau.front() * (1.0 - 1e-9)) break;
+    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
+    if (latentAllanVariance(q, fit.sampleInterval, {m[i]}).front() > kRefutedBelow * avar[i]) return true;
+  }
+  return false;
+}
+
+/// fitRange from a scanned start, again without the quantization sets where the points below
+/// the start refute the quantization fitted (quantizationRefutedBelow).
+RangeFit fitStart(const std::vector<std::size_t>& m, const std::vector<double>& avar, std::size_t samples,
+                  const LatentFitOptions& o, const WhittleBins* bins, const std::vector<double>* record) {
+  RangeFit f = fitRange(m, avar, samples, o, bins, record);
+  if (!quantizationRefutedBelow(f.fit, m, avar)) return f;
+  LatentFitOptions without = o;
+  without.candidates.clear();
+  for (const LatentTermSet& s : o.candidates.empty() ? latentCandidateSets(true, 2, true, true, true) : o.candidates)
+    if (!s.quantization) without.candidates.push_back(s);
+  if (without.candidates.empty()) return f;  // (empty would mean every set)
+  RangeFit g = fitRange(m, avar, samples, without, bins, record);
+  g.fit.warnings.push_back("quantization left out: fitted from " + fmt(f.fit.tau.front()) +
+                           " s up, its Allan variance exceeded the whole record's below that start");
+  return g;
+}
+
+/// A scanned fit's model against the record below its start, where the model is extrapolated:
+/// the largest ADEV ratio either way, warned beyond 25 %. The 1000-s ADIS16405 windows' accelerometers
+/// (white noise behind the sensor's low-pass filter) fit from 1.28 s up and their models were
+/// 1.3-1.5x the record at 10 ms; the gyros' filter hump left the model 0.72x at 20 ms.
+void warnBelowStart(LatentFit& fit, const std::vector<std::size_t>& m, const std::vector<double>& avar) {
+  double worst = 1.0, at = 0.0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const double tau = double(m[i]) * fit.sampleInterval;
+    if (fit.tau.empty() || tau >= fit.tau.front() * (1.0 - 1e-9)) break;
+    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
+    const double r = std::sqrt(latentAllanVariance(fit.model, fit.sampleInterval, {m[i]}).front() / avar[i]);
+    if (std::fabs(std::log(r)) > std::fabs(std::log(worst))) worst = r, at = tau;
+  }
+  if (std::fabs(std::log(worst)) <= std::log(1.25)) return;
+  fit.warnings.push_back("below the fitted range (tau < " + fmt(fit.tau.front()) + " s) the model's ADEV is " +
+                         fmt(worst, 3) + "x the record's at " + fmt(at) + " s: " +
+                         (worst > 1.0 ? "the record falls below white noise there, as behind a sensor's low-pass "
+                                        "filter (an AR carries such a shape: --kind ar+slow or auto)"
+                                      : "the record holds a short-tau feature no term carries"));
+}
+
 LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double>& avar, std::size_t samples,
                      const LatentFitOptions& options, const WhittleBins* bins,
                      const std::vector<double>* record = nullptr) {
@@ -934,16 +995,19 @@ LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double
     RangeFit f;
     progress::checkpoint("scanning the start of the tau range", start, fit.tau.size());
     try {
-      f = fitRange(m, avar, samples, o, bins, record);
+      f = fitStart(m, avar, samples, o, bins, record);
     } catch (const Error&) {
       break;
     }
     if (f.fit.consistent) {
+      LatentFit kept;
       try {  // as when the averaging was part of the start's fit: a failure ends the scan
-        return std::move(f).withAveraged();
+        kept = std::move(f).withAveraged();
       } catch (const Error&) {
         break;
       }
+      warnBelowStart(kept, m, avar);
+      return kept;
     }
     if (f.fit.chi2 / double(std::max<std::size_t>(f.fit.dof, 1)) <
         best.fit.chi2 / double(std::max<std::size_t>(best.fit.dof, 1)))
@@ -952,6 +1016,7 @@ LatentFit fitScanned(const std::vector<std::size_t>& m, const std::vector<double
   LatentFit kept = std::move(best).withAveraged();
   kept.warnings.push_back("no start of the tau range gives a consistent fit (p >= 0.001): least-bad start " +
                           fmt(kept.tau.front()) + " s kept");
+  warnBelowStart(kept, m, avar);
   return kept;
 }
 

@@ -152,27 +152,34 @@ TEST_CASE("ADIS16405: GM model inside the 99 % band of its run, run 1 predicts r
 // model's ADEV at 2 samples (where it is extrapolated from the fitted range) is asserted within
 // a factor 2 of the record's on every channel of both windows (an internal filter or the LSB
 // lattice moves real sensors' shortest tau by tens of percent, not by factors).
-TEST_CASE("ADIS16405 windows: the GM model keeps the record's short-tau noise", "[identify][adis16405][latent]") {
+// `--kind latent` has quantization among its terms: on run 2's window it fitted one to ay from
+// 0.64 s up, whose ADEV at 2 samples was 4.1x the record's (the issue's "an LSB whose noise at one
+// sample is 10x the record's"); the points below a scanned start now refute such a term
+// (latent_fit.cpp, quantizationRefutedBelow), and the same bound is asserted for that kind.
+TEST_CASE("ADIS16405 windows: the GM and latent models keep the record's short-tau noise",
+          "[identify][adis16405][latent]") {
   const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
   if (!std::ifstream(dir + "run1.csv.gz") || !std::ifstream(dir + "run2.csv.gz")) {
     WARN("ADIS16405 data not found in " << dir << ": skipped");
     return;
   }
-  for (const char* run : {"run1.csv.gz", "run2.csv.gz"}) {
-    const RecordOptions ro = sinsim::test::adisOptions(600.0, 1000.0);
-    IdentifyOptions o;
-    o.kind = IdentifyKind::Gm;
-    const Identification id = identify(loadRecord(dir + run, ro), o);
-    for (const auto& a : id.axes) {
-      REQUIRE(a.latent);
-      std::size_t i = 0;
-      while (i < a.allan.size() && a.allan.tau[i] < 0.02 * (1 - 1e-9)) ++i;
-      REQUIRE(i < a.allan.size());
-      const double ratio = a.modelAdev({a.allan.tau[i]})[0] / a.allan.dev[i];
-      INFO(run << " " << a.channel << " " << a.latent->terms.name() << " from " << a.latent->tau.front()
-               << " s: model / record ADEV at " << a.allan.tau[i] << " s = " << ratio);
-      CHECK(ratio > 0.5);
-      CHECK(ratio < 2.0);
+  for (const IdentifyKind kind : {IdentifyKind::Gm, IdentifyKind::Latent})
+    for (const char* run : {"run1.csv.gz", "run2.csv.gz"}) {
+      const RecordOptions ro = sinsim::test::adisOptions(600.0, 1000.0);
+      IdentifyOptions o;
+      o.kind = kind;
+      const Identification id = identify(loadRecord(dir + run, ro), o);
+      for (const auto& a : id.axes) {
+        REQUIRE(a.latent);
+        std::size_t i = 0;
+        while (i < a.allan.size() && a.allan.tau[i] < 0.02 * (1 - 1e-9)) ++i;
+        REQUIRE(i < a.allan.size());
+        const double ratio = a.modelAdev({a.allan.tau[i]})[0] / a.allan.dev[i];
+        INFO((kind == IdentifyKind::Gm ? "gm " : "latent ")
+             << run << " " << a.channel << " " << a.latent->terms.name() << " from " << a.latent->tau.front()
+             << " s: model / record ADEV at " << a.allan.tau[i] << " s = " << ratio);
+        CHECK(ratio > 0.5);
+        CHECK(ratio < 2.0);
+      }
     }
-  }
 }

@@ -898,3 +898,37 @@ TEST_CASE("a record on a lattice five times coarser than its noise is fitted", "
     }
   }
 }
+
+// White noise behind a low-pass filter (a 4-sample moving average, as a decimating sensor's) with
+// a random walk: no start from the first Allan point fits, the scanned start leaves the short end
+// to the white noise, and the model is extrapolated there above the record (at tau = dt the
+// moving average keeps a quarter of the white noise's ADEV). The fit says so, with the ratio; the
+// same record unfiltered starts at the first point and says nothing.
+TEST_CASE("a model extrapolated below its scanned start is warned with its ratio to the record",
+          "[identify][latent]") {
+  const double rate = 100.0;
+  for (std::uint64_t seed = 61; seed < 64; ++seed) {
+    const Record plain = staticRecord(
+        "gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}, {type: random_walk, K: 3 deg/h/sqrt(h)}]}", rate,
+        1200.0, seed);
+    Record filtered = plain;
+    const std::vector<double>& x = plain.gyro[0];
+    for (std::size_t k = 3; k < x.size(); ++k) filtered.gyro[0][k] = 0.25 * (x[k] + x[k - 1] + x[k - 2] + x[k - 3]);
+    for (IdentifyKind kind : {IdentifyKind::Gm, IdentifyKind::Latent}) {
+      IdentifyOptions o;
+      o.kind = kind;
+      o.axes = {"gx"};
+      const auto f = identify(filtered, o);
+      const auto p = identify(plain, o);
+      const auto warned = warningsOf(f, "below the fitted range");
+      INFO("seed " << seed << (kind == IdentifyKind::Gm ? " gm" : " latent") << ": filtered fitted from "
+                   << f.axis("gx").latent->tau.front() << " s, "
+                   << f.axis("gx").modelAdev({1 / rate})[0] / f.axis("gx").allan.dev.front()
+                   << "x the record at dt");
+      CHECK(f.axis("gx").latent->tau.front() > 1.5 / rate);
+      REQUIRE(warned.size() == 1);
+      CHECK(warned[0].find("falls below white noise") != std::string::npos);
+      CHECK(warningsOf(p, "below the fitted range").empty());
+    }
+  }
+}
