@@ -77,6 +77,8 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--realisations", type=int, default=32)
     ap.add_argument("--sizes", default="1.5,3,6,10", help="k values, comma separated")
+    ap.add_argument("--kind", default="gm",
+                    help="the plain window's model: sinsim fit --kind (gm, latent, auto, ...)")
     ap.add_argument("--report", nargs="+", metavar="RESULTS_JSON",
                     help="only print the scores of earlier runs' results.json files, pooled")
     a = ap.parse_args()
@@ -89,9 +91,9 @@ def main():
     base = load(a.data, int(a.skip * FS), n)
     plain = os.path.join(a.work, "plain.csv")
     write(plain, base)
-    model = os.path.join(a.work, "plain-gm.yaml")
+    model = os.path.join(a.work, f"plain-{a.kind}.yaml")
     run([a.sinsim, "fit", plain, "--rate", "100", "--gyro-unit", "deg/s", "--accel-unit", "g",
-         "--kind", "gm", "-o", model, "-q"])
+         "--kind", a.kind, "-o", model, "-q"])
     ref = diagnose(a, plain, model, os.path.join(a.work, "plain.json"))
     print("plain window: " + "; ".join(f"{c} {v['findings']}" for c, v in ref.items()))
     t = np.arange(1, n + 1) / FS
