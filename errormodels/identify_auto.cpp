@@ -87,10 +87,18 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
                 double dt, const fit::RoundingLattice& lattice, const fit::OrderSelectionOptions& os,
                 const IdentifyOptions& opt) {
   const std::size_t n = x.size();
-  const RangedFit whole = fitTermsFrom(pts, dt, n, {true, true, true, true, true}, 0.0, 7);
-  out.allanFit = whole.fit;
-  out.decision.push_back("Allan terms on " + describeRange(whole) + ": " + describeAllan(*out.allanFit));
-  const bool rw = out.allanFit->term(fit::AllanTermKind::RandomWalk).detected;
+  // The Allan-term description only decides whether the AR is screened beside a walk; a record
+  // too short for it (fewer than 7 octave points: under ~1300 samples) is fitted without it, as
+  // --kind gm and latent fit it, rather than refused.
+  bool rw = false;
+  try {
+    const RangedFit whole = fitTermsFrom(pts, dt, n, {true, true, true, true, true}, 0.0, 7);
+    out.allanFit = whole.fit;
+    out.decision.push_back("Allan terms on " + describeRange(whole) + ": " + describeAllan(*out.allanFit));
+    rw = out.allanFit->term(fit::AllanTermKind::RandomWalk).detected;
+  } catch (const InputError& e) {
+    out.decision.push_back(std::string("no Allan-term description (") + e.what() + "): no random walk screened");
+  }
 
   fit::OrderSelection screen;
   if (rw) {

@@ -932,3 +932,23 @@ TEST_CASE("a model extrapolated below its scanned start is warned with its ratio
     }
   }
 }
+
+// A record too short for auto's Allan-term description (fewer than 7 octave points: 300 samples
+// give 5) was refused by --kind auto ("fewer than 7 Allan points") while gm and latent fit it.
+// Now auto fits it the same way: white noise, its density within 3 sigma, on 5 seeds.
+TEST_CASE("auto fits a record too short for the Allan-term description", "[identify][roundtrip]") {
+  for (std::uint64_t seed = 71; seed < 76; ++seed) {
+    const Record r = staticRecord("gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}]}", 100.0, 3.0, seed);
+    IdentifyOptions o;
+    o.kind = IdentifyKind::Auto;
+    o.axes = {"gx"};
+    std::optional<Identification> id;
+    REQUIRE_NOTHROW(id = identify(r, o));
+    const auto& gx = id->axis("gx");
+    INFO("seed " << seed);
+    REQUIRE(gx.written.latent);
+    CHECK(gx.written.latent->terms.name() == "white");
+    requireWithin3Sigma(gx.written.latent->model.white, 0.3 * kDegPerSqrtH, gx.written.latent->parameter("white").stdError,
+                        "N");
+  }
+}
