@@ -101,6 +101,17 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   }
 
   fit::OrderSelection screen;
+  if (!out.ar) {  // no stable AR of the record (identify.cpp): the latent terms alone
+    fit::LatentFitOptions lo;
+    lo.sampleInterval = dt;
+    lo.lattice = lattice;
+    out.latent = fit::fitLatentModel(x, lo);
+    out.kind = IdentifyKind::Latent;
+    out.written.latent = out.latent;
+    out.decision.push_back("written: the latent terms " + out.latent->terms.name() +
+                           " (no stable AR of the record to screen against)");
+    return;
+  }
   if (rw) {
     fit::ArRandomWalkFitOptions co;
     co.sampleInterval = dt;

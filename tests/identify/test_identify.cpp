@@ -952,3 +952,26 @@ TEST_CASE("auto fits a record too short for the Allan-term description", "[ident
                         "N");
   }
 }
+
+// A noiseless ramp has no stable AR (Burg's reflection coefficient reaches 1): --kind auto
+// refused it ("the polynomial is not stable") while gm and latent fit it. Auto now writes the
+// latent terms there, as latent does, with the reason in the model's notes.
+TEST_CASE("auto writes the latent terms where the record has no stable AR", "[identify]") {
+  Record r;
+  r.source = "ramp";
+  r.rate_hz = 100.0;
+  r.rows = 20000;
+  r.gyro[0].resize(r.rows);
+  for (std::size_t k = 0; k < r.rows; ++k) r.gyro[0][k] = 1e-6 * double(k);
+  IdentifyOptions o;
+  o.kind = IdentifyKind::Auto;
+  o.axes = {"gx"};
+  std::optional<Identification> id;
+  REQUIRE_NOTHROW(id = identify(r, o));
+  const auto& gx = id->axis("gx");
+  CHECK(gx.kind == IdentifyKind::Latent);
+  REQUIRE(gx.written.latent);
+  o.kind = IdentifyKind::Latent;
+  CHECK(identify(r, o).axis("gx").written.latent->terms.name() == gx.written.latent->terms.name());
+  CHECK(id->modelYaml().find("auto: no AR") != std::string::npos);
+}
