@@ -176,6 +176,26 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
                            "): the AR alone");
     return;
   }
+  // The AR branch exists for the short tau the terms miss. A joint fit whose scanned start left
+  // its model more than 25 % off the record below that start (the AR's driving variance set by
+  // the longer tau, where it trades with a flicker or walk) has lost that reason; where the
+  // latent terms fit the whole range consistently they are written instead. A blind white +
+  // flicker + walk record (bench/fit_blind, 100 Hz, 20 min, #700): ar + flicker + random_walk
+  // from 0.32 s, 0.55x the record's ADEV at 10 ms and a PSD 4.3x low above 2 Hz, against latent
+  // terms consistent from 10 ms (p 0.89).
+  const double off = out.arSlow->joint.belowStartRatio;
+  if (std::fabs(std::log(off)) > std::log(1.25) && latent.consistent) {
+    out.decision.push_back("AR + slow terms fitted from " + significant(out.arSlow->joint.tau.front(), 4) +
+                           " s, " + significant(off, 3) + "x the record's ADEV below that: the latent terms, "
+                           "consistent over the whole range, written instead");
+    out.arSlow.reset();
+    out.latent = std::move(latent);
+    out.kind = IdentifyKind::Latent;
+    out.written.latent = out.latent;
+    out.decision.push_back("written: the latent terms " + out.latent->terms.name() +
+                           ", fitted over the whole tau range");
+    return;
+  }
   out.latent = out.arSlow->joint;
   out.kind = IdentifyKind::ArSlow;
   out.written.latent = out.latent;

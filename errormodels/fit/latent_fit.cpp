@@ -974,6 +974,7 @@ void warnBelowStart(LatentFit& fit, const std::vector<std::size_t>& m, const std
     const double r = std::sqrt(latentAllanVariance(fit.model, fit.sampleInterval, {m[i]}).front() / avar[i]);
     if (std::fabs(std::log(r)) > std::fabs(std::log(worst))) worst = r, at = tau;
   }
+  fit.belowStartRatio = worst;
   if (std::fabs(std::log(worst)) <= std::log(1.25)) return;
   fit.warnings.push_back("below the fitted range (tau < " + fmt(fit.tau.front()) + " s) the model's ADEV is " +
                          fmt(worst, 3) + "x the record's at " + fmt(at) + " s: " +

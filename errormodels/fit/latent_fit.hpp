@@ -235,6 +235,10 @@ struct LatentFit {
   std::vector<LatentAveragedParameter> averaged;
   /// Sanity findings (GM tau < 2 dt or > duration / 3, uncertainty above the value).
   std::vector<std::string> warnings;
+  /// With a scanned start above the record's first Allan point: the model's ADEV over the
+  /// record's at the point below the start where they differ most (1: no point below, or not
+  /// scanned). Warned beyond 25 % either way.
+  double belowStartRatio = 1.0;
 
   const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
   const LatentCandidate* runnerUp() const;  ///< second valid candidate, nullptr if none
