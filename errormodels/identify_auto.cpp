@@ -83,6 +83,29 @@ ArVerdict shortCorrelation(const fit::OrderSelection& screen, const fit::LatentF
 ///     range of the record is dropped. Such correlation: write the AR with the slow terms (GM,
 ///     random walk, flicker) fitted jointly beside it (fit/ar_slow_fit.hpp, as --kind ar+slow),
 ///     so that the AR does not hide the drift-relevant long tau.
+namespace {
+
+/// The latent terms over the whole tau range (no start scan): every term that dominates some tau
+/// range of the record stays in the model (issue 11: the Allan-term description alone could keep
+/// a flicker floor and drop the white noise above it).
+fit::LatentFit wholeRangeLatent(const std::vector<double>& x, double dt, const fit::RoundingLattice& lattice) {
+  fit::LatentFitOptions lo;
+  lo.sampleInterval = dt;
+  lo.lattice = lattice;
+  return fit::fitLatentModel(x, lo);
+}
+
+/// Writes the whole-range latent terms, saying why.
+void writeLatent(AxisIdentification& out, fit::LatentFit latent, const std::string& why) {
+  out.arSlow.reset();
+  out.latent = std::move(latent);
+  out.kind = IdentifyKind::Latent;
+  out.written.latent = out.latent;
+  out.decision.push_back("written: the latent terms " + out.latent->terms.name() + why);
+}
+
+}  // namespace
+
 void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const CurvePoints& pts,
                 double dt, const fit::RoundingLattice& lattice, const fit::OrderSelectionOptions& os,
                 const IdentifyOptions& opt) {
@@ -102,14 +125,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
 
   fit::OrderSelection screen;
   if (!out.ar) {  // no stable AR of the record (identify.cpp): the latent terms alone
-    fit::LatentFitOptions lo;
-    lo.sampleInterval = dt;
-    lo.lattice = lattice;
-    out.latent = fit::fitLatentModel(x, lo);
-    out.kind = IdentifyKind::Latent;
-    out.written.latent = out.latent;
-    out.decision.push_back("written: the latent terms " + out.latent->terms.name() +
-                           " (no stable AR of the record to screen against)");
+    writeLatent(out, wholeRangeLatent(x, dt, lattice), " (no stable AR of the record to screen against)");
     return;
   }
   if (rw) {
@@ -141,22 +157,12 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   } else {
     screen = *out.ar;
   }
-  // The composite latent fit over the whole tau range (no start scan): every term that
-  // dominates some tau range of the record stays in the model (issue 11: the Allan-term
-  // description alone could keep a flicker floor and drop the white noise above it).
-  fit::LatentFitOptions lo;
-  lo.sampleInterval = dt;
-  lo.lattice = lattice;
-  fit::LatentFit latent = fit::fitLatentModel(x, lo);
+  fit::LatentFit latent = wholeRangeLatent(x, dt, lattice);
   const ArVerdict verdict = shortCorrelation(screen, latent, dt, opt.autoMinPredictionGain);
   const bool shortCorr = verdict.ar;
   out.decision.push_back(verdict.why);
   if (!shortCorr) {
-    out.latent = std::move(latent);
-    out.kind = IdentifyKind::Latent;
-    out.written.latent = out.latent;
-    out.decision.push_back("written: the latent terms " + out.latent->terms.name() +
-                           ", fitted over the whole tau range");
+    writeLatent(out, std::move(latent), ", fitted over the whole tau range");
     return;
   }
   // Short correlation: the paper's AR with the slow terms beside it, fitted jointly
@@ -188,12 +194,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     out.decision.push_back("AR + slow terms fitted from " + significant(out.arSlow->joint.tau.front(), 4) +
                            " s, " + significant(off, 3) + "x the record's ADEV below that: the latent terms, "
                            "consistent over the whole range, written instead");
-    out.arSlow.reset();
-    out.latent = std::move(latent);
-    out.kind = IdentifyKind::Latent;
-    out.written.latent = out.latent;
-    out.decision.push_back("written: the latent terms " + out.latent->terms.name() +
-                           ", fitted over the whole tau range");
+    writeLatent(out, std::move(latent), ", fitted over the whole tau range");
     return;
   }
   out.latent = out.arSlow->joint;

@@ -936,15 +936,23 @@ TEST_CASE("a model extrapolated below its scanned start is warned with its ratio
 // A record too short for auto's Allan-term description (fewer than 7 octave points: 300 samples
 // give 5) was refused by --kind auto ("fewer than 7 Allan points") while gm and latent fit it.
 // Now auto fits it the same way: white noise, its density within 3 sigma, on 5 seeds.
+namespace {
+/// identify(r) of gx alone with `kind`, required not to throw.
+Identification identifyGx(const Record& r, IdentifyKind kind) {
+  IdentifyOptions o;
+  o.kind = kind;
+  o.axes = {"gx"};
+  std::optional<Identification> id;
+  REQUIRE_NOTHROW(id = identify(r, o));
+  return *id;
+}
+}  // namespace
+
 TEST_CASE("auto fits a record too short for the Allan-term description", "[identify][roundtrip]") {
   for (std::uint64_t seed = 71; seed < 76; ++seed) {
     const Record r = staticRecord("gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}]}", 100.0, 3.0, seed);
-    IdentifyOptions o;
-    o.kind = IdentifyKind::Auto;
-    o.axes = {"gx"};
-    std::optional<Identification> id;
-    REQUIRE_NOTHROW(id = identify(r, o));
-    const auto& gx = id->axis("gx");
+    const Identification id = identifyGx(r, IdentifyKind::Auto);
+    const auto& gx = id.axis("gx");
     INFO("seed " << seed);
     REQUIRE(gx.written.latent);
     CHECK(gx.written.latent->terms.name() == "white");
@@ -963,15 +971,11 @@ TEST_CASE("auto writes the latent terms where the record has no stable AR", "[id
   r.rows = 20000;
   r.gyro[0].resize(r.rows);
   for (std::size_t k = 0; k < r.rows; ++k) r.gyro[0][k] = 1e-6 * double(k);
-  IdentifyOptions o;
-  o.kind = IdentifyKind::Auto;
-  o.axes = {"gx"};
-  std::optional<Identification> id;
-  REQUIRE_NOTHROW(id = identify(r, o));
-  const auto& gx = id->axis("gx");
+  const Identification id = identifyGx(r, IdentifyKind::Auto);
+  const auto& gx = id.axis("gx");
   CHECK(gx.kind == IdentifyKind::Latent);
   REQUIRE(gx.written.latent);
-  o.kind = IdentifyKind::Latent;
-  CHECK(identify(r, o).axis("gx").written.latent->terms.name() == gx.written.latent->terms.name());
-  CHECK(id->modelYaml().find("auto: no AR") != std::string::npos);
+  CHECK(identifyGx(r, IdentifyKind::Latent).axis("gx").written.latent->terms.name() ==
+        gx.written.latent->terms.name());
+  CHECK(id.modelYaml().find("auto: no AR") != std::string::npos);
 }
