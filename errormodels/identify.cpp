@@ -432,17 +432,15 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
       if (ax.correlationTime)
         os.correlationTime = *ax.correlationTime;
 
-      if (opt.kind == IdentifyKind::Ar) ax.ar = fit::selectArOrder(x, os);
-      if (opt.kind == IdentifyKind::Auto) {
+      if (opt.kind == IdentifyKind::Ar || opt.kind == IdentifyKind::Auto) {
         // A (nearly) deterministic record -- a noiseless ramp -- has no stable AR; auto then
         // writes the latent terms (identify_auto.cpp), as --kind gm and latent fit it.
         try {
           ax.ar = fit::selectArOrder(x, os);
         } catch (const InputError& e) {
+          if (opt.kind == IdentifyKind::Ar) throw;
           ax.written.notes.push_back(std::string("auto: no AR (") + e.what() + ")");
         }
-      }
-      if (opt.kind == IdentifyKind::Ar || opt.kind == IdentifyKind::Auto) {
         // The denoised AR is the paper's variant beside the written one: --kind ar only (auto
         // writes the AR with slow terms, not a bare AR to compare it with).
         if (!den.empty() && opt.kind == IdentifyKind::Ar)

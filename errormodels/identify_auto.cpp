@@ -189,10 +189,10 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
   // flicker + walk record (bench/fit_blind, 100 Hz, 20 min, #700): ar + flicker + random_walk
   // from 0.32 s, 0.55x the record's ADEV at 10 ms and a PSD 4.3x low above 2 Hz, against latent
   // terms consistent from 10 ms (p 0.89).
-  const double off = out.arSlow->joint.belowStartRatio;
-  if (std::fabs(std::log(off)) > std::log(1.25) && latent.consistent) {
+  if (fit::offBelowStart(out.arSlow->joint) && latent.consistent) {
     out.decision.push_back("AR + slow terms fitted from " + significant(out.arSlow->joint.tau.front(), 4) +
-                           " s, " + significant(off, 3) + "x the record's ADEV below that: the latent terms, "
+                           " s, " + significant(out.arSlow->joint.belowStartRatio, 3) +
+                           "x the record's ADEV below that: the latent terms, "
                            "consistent over the whole range, written instead");
     writeLatent(out, std::move(latent), ", fitted over the whole tau range");
     return;

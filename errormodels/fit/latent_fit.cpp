@@ -80,6 +80,10 @@ const LatentParameter& LatentFit::parameter(const std::string& name) const {
   throw InputError("latent fit has no parameter \"" + name + "\" (model: " + terms.name() + ")");
 }
 
+bool offBelowStart(const LatentFit& fit) {
+  return std::fabs(std::log(fit.belowStartRatio)) > std::log(kBelowStartTolerance);
+}
+
 const LatentCandidate* LatentFit::runnerUp() const {
   int seen = 0;
   for (const auto& c : candidates)
@@ -921,6 +925,24 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
 
 namespace {
 
+/// The record's Allan points below a scanned fit's start (where the model is extrapolated): their
+/// averaging factors and Allan variances, the finite positive ones.
+struct BelowStart {
+  std::vector<std::size_t> m;
+  std::vector<double> avar;
+};
+BelowStart pointsBelowStart(const LatentFit& fit, const std::vector<std::size_t>& m,
+                            const std::vector<double>& avar) {
+  BelowStart b;
+  for (std::size_t i = 0; i < m.size() && !fit.tau.empty(); ++i) {
+    if (double(m[i]) * fit.sampleInterval >= fit.tau.front() * (1.0 - 1e-9)) break;
+    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
+    b.m.push_back(m[i]);
+    b.avar.push_back(avar[i]);
+  }
+  return b;
+}
+
 /// Whether the record's Allan points below a scanned start refute the fit's quantization: the
 /// terms' Allan variances add and none is negative, so no term's own may exceed the whole
 /// record's, yet 3 Q^2 / tau^2, fitted from a start far above dt, is extrapolated down with slope
@@ -931,16 +953,15 @@ namespace {
 bool quantizationRefutedBelow(const LatentFit& fit, const std::vector<std::size_t>& m,
                               const std::vector<double>& avar) {
   constexpr double kRefutedBelow = 2.0;
-  if (!(fit.model.quantization > 0.0) || fit.tau.empty()) return false;
+  if (!(fit.model.quantization > 0.0)) return false;
+  const BelowStart b = pointsBelowStart(fit, m, avar);
+  if (b.m.empty()) return false;
   LatentModel q;
   q.quantization = fit.model.quantization;
   q.lattice = fit.model.lattice;
-  for (std::size_t i = 0; i < m.size(); ++i) {
-    const double tau = double(m[i]) * fit.sampleInterval;
-    if (tau >= fit.tau.front() * (1.0 - 1e-9)) break;
-    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
-    if (latentAllanVariance(q, fit.sampleInterval, {m[i]}).front() > kRefutedBelow * avar[i]) return true;
-  }
+  const std::vector<double> qAvar = latentAllanVariance(q, fit.sampleInterval, b.m);
+  for (std::size_t i = 0; i < b.m.size(); ++i)
+    if (qAvar[i] > kRefutedBelow * b.avar[i]) return true;
   return false;
 }
 
@@ -962,20 +983,21 @@ RangeFit fitStart(const std::vector<std::size_t>& m, const std::vector<double>& 
 }
 
 /// A scanned fit's model against the record below its start, where the model is extrapolated:
-/// the largest ADEV ratio either way, warned beyond 25 %. The 1000-s ADIS16405 windows' accelerometers
-/// (white noise behind the sensor's low-pass filter) fit from 1.28 s up and their models were
-/// 1.3-1.5x the record at 10 ms; the gyros' filter hump left the model 0.72x at 20 ms.
+/// LatentFit::belowStartRatio, warned beyond kBelowStartTolerance. The 1000-s ADIS16405 windows'
+/// accelerometers (white noise behind the sensor's low-pass filter) fit from 1.28 s up and their
+/// models were 1.3-1.5x the record at 10 ms; the gyros' filter hump left the model 0.72x at 20 ms.
 void warnBelowStart(LatentFit& fit, const std::vector<std::size_t>& m, const std::vector<double>& avar) {
-  double worst = 1.0, at = 0.0;
-  for (std::size_t i = 0; i < m.size(); ++i) {
-    const double tau = double(m[i]) * fit.sampleInterval;
-    if (fit.tau.empty() || tau >= fit.tau.front() * (1.0 - 1e-9)) break;
-    if (!(std::isfinite(avar[i]) && avar[i] > 0.0)) continue;
-    const double r = std::sqrt(latentAllanVariance(fit.model, fit.sampleInterval, {m[i]}).front() / avar[i]);
-    if (std::fabs(std::log(r)) > std::fabs(std::log(worst))) worst = r, at = tau;
+  const BelowStart b = pointsBelowStart(fit, m, avar);
+  if (b.m.empty()) return;
+  const std::vector<double> model = latentAllanVariance(fit.model, fit.sampleInterval, b.m);
+  double at = 0.0;
+  for (std::size_t i = 0; i < b.m.size(); ++i) {
+    const double r = std::sqrt(model[i] / b.avar[i]);
+    if (std::fabs(std::log(r)) > std::fabs(std::log(fit.belowStartRatio)))
+      fit.belowStartRatio = r, at = double(b.m[i]) * fit.sampleInterval;
   }
-  fit.belowStartRatio = worst;
-  if (std::fabs(std::log(worst)) <= std::log(1.25)) return;
+  if (!offBelowStart(fit)) return;
+  const double worst = fit.belowStartRatio;
   fit.warnings.push_back("below the fitted range (tau < " + fmt(fit.tau.front()) + " s) the model's ADEV is " +
                          fmt(worst, 3) + "x the record's at " + fmt(at) + " s: " +
                          (worst > 1.0 ? "the record falls below white noise there, as behind a sensor's low-pass "

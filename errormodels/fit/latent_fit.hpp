@@ -211,6 +211,10 @@ struct LatentCandidate {
   double blockScore = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// How far (as an ADEV ratio, either way) a scanned fit's model may be off the record below its
+/// start before fit warns and `--kind auto` prefers whole-range terms to its AR branch.
+inline constexpr double kBelowStartTolerance = 1.25;
+
 struct LatentFit {
   LatentTermSet terms;
   LatentModel model;
@@ -237,7 +241,7 @@ struct LatentFit {
   std::vector<std::string> warnings;
   /// With a scanned start above the record's first Allan point: the model's ADEV over the
   /// record's at the point below the start where they differ most (1: no point below, or not
-  /// scanned). Warned beyond 25 % either way.
+  /// scanned). Warned beyond kBelowStartTolerance either way (offBelowStart).
   double belowStartRatio = 1.0;
 
   const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
@@ -251,6 +255,9 @@ struct LatentAllanPoints {
 };
 /// Throws InputError for dt <= 0, fewer than 40 samples or non-finite samples.
 LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleInterval);
+
+/// Whether the model is off the record below a scanned start beyond kBelowStartTolerance.
+bool offBelowStart(const LatentFit& fit);
 
 /// Fits the record x [U] (any mean; sampled at options.sampleInterval). Throws InputError for bad
 /// options, non-finite samples, or too few Allan points for the smallest candidate.
