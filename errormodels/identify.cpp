@@ -174,6 +174,11 @@ std::vector<double> AxisIdentification::modelAdev(const std::vector<double>& tau
   }
   for (const FittedLine& l : written.lines)
     for (std::size_t i = 0; i < tau.size(); ++i) avar[i] += sinusoidAllanVariance(l.amplitude, l.frequency, tau[i]);
+  if (written.roundedRateLsb > 0.0 && written.latent) {
+    // each sample rounded onto the lattice of a busy input: white, q^2 / 12 per sample
+    const double q = written.roundedRateLsb, dtl = written.latent->sampleInterval;
+    for (std::size_t i = 0; i < tau.size(); ++i) avar[i] += q * q / 12.0 * dtl / tau[i];
+  }
   for (double& v : avar) v = std::sqrt(v);
   return avar;
 }
@@ -279,6 +284,42 @@ bool quantizationIsDithered(double Q, double lattice, double dt) {
 double latticeLsb(double Q, double lattice, double dt) {
   const double lsb = lattice * dt, fitted = std::sqrt(12.0) * Q;
   return lsb > 0.0 && std::fabs(std::log(lsb / fitted)) < std::log(1.5) ? lsb : 0.0;
+}
+
+/// A value lattice of step q [SI] the diagnosis sees (latticeVisible, either rounding) that no written term rounds
+/// onto: a composite fit's model gets it as the record's rate LSB, each sample rounded, so that
+/// `diagnose` of the same record finds no quantization the model lacks. To the Allan fit that
+/// rounding is white noise of variance q^2 / 12 per sample, which the white term (else the AR's
+/// driving noise) took in: that share moves out of it where at least half the term remains.
+void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, double q, double dt) {
+  if (!w.latent || writtenQuantization(w) > 0.0 || !latticeVisible(x, q, true)) return;
+  fit::LatentModel& m = w.latent->model;
+  const double v = q * q / 12.0;  // [U^2] per sample
+  const fit::SensorSignal s = w.sensor;
+  double var = 0.0;  // x is mean-removed
+  for (double v2 : x) var += v2 * v2;
+  var /= double(x.size());
+  // A white density in the unit the fit's comments use: deg/sqrt(h), m/s/sqrt(h).
+  auto density = [s](double N) {
+    return s == fit::SensorSignal::Gyro ? significant(N * kDegPerRad * 60.0, 6) + " deg/sqrt(h)"
+                                        : significant(N * 60.0, 6) + " m/s/sqrt(h)";
+  };
+  std::string note = "values on a lattice of " + friendly(q, s) + ": a quantization of that LSB written (each "
+                     "sample rounded; its variance " + significant(v / var * 100.0, 3) + " % of the record's)";
+  if (m.white > 0.0 && v * dt <= 0.5 * m.white * m.white) {
+    const double before = m.white;
+    m.white = std::sqrt(m.white * m.white - v * dt);
+    note += "; the white density lowered by that share, " + density(before) + " -> " + density(m.white);
+  } else if (m.arVariance > 0.0 && v <= 0.5 * m.arVariance) {
+    const double before = std::sqrt(m.arVariance);
+    m.arVariance -= v;
+    note += "; the AR's driving sigma lowered by that share, " + friendly(before, s) + " -> " +
+            friendly(std::sqrt(m.arVariance), s);
+  } else {
+    note += "; no white or AR term holds that share: the model's variance includes it twice";
+  }
+  w.notes.push_back(note);
+  w.roundedRateLsb = q;
 }
 
 /// One identification of the record as `opt` says (skipAuto aside).
@@ -572,6 +613,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
                                    settlingMessage(*ax.settling, sensor, record.skipped_s + double(skip) * dt,
                                                    double(n) * dt));
       }
+      writeVisibleLattice(ax.written, x, lattice, dt);
       const double Q = writtenQuantization(ax.written);
       ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);
       if (ax.written.latent && Q > 0.0 && !ax.written.ditheredQuantization)

@@ -20,6 +20,7 @@
 #include "errormodels/diagnose/selection.hpp"
 #include "errormodels/diagnose/whiteness.hpp"
 #include "errormodels/model_io.hpp"
+#include "errormodels/stats/lattice.hpp"
 #include "errormodels/stats/special.hpp"
 
 namespace sinsim::errormodels::diagnose {
@@ -188,7 +189,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     const double q = latticeStep(y);
     const double offset = q > 0 ? y.front() - q * std::nearbyint(y.front() / q) : 0.0;
     steps.push_back(q);
-    const bool visible = latticeVisible(y, q, setup.rate) && std::isfinite(offset);
+    const bool visible = latticeVisible(y, q) && std::isfinite(offset);
     seen.push_back(visible ? Lattice{q, offset} : Lattice{});
   }
   const auto mc = monteCarlo(m, record, channels, setup, o,

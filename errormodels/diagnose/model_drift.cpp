@@ -58,7 +58,7 @@ std::optional<DriftFree> withoutModelDrift(const Record& record, const ErrorMode
   for (int c = 0; c < 6; ++c) {
     const auto& y = channelData(record, c);
     auto& d = drift[std::size_t(c)];
-    if (!y.empty() && d.any() && latticeVisible(y, latticeStep(y), record.rate_hz)) {
+    if (!y.empty() && d.any() && latticeVisible(y, latticeStep(y))) {
       kept[std::size_t(c)] = true;
       d = ChannelDrift{};
     }

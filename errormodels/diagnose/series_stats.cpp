@@ -100,19 +100,6 @@ std::vector<double> allanVariance(const std::vector<double>& y, const Setup& s) 
   return v;
 }
 
-double oneSampleAvarScatter(const std::vector<double>& y, const Setup& s) {
-  Setup one = s;
-  one.factors = {1};
-  const auto avar1 = allanVariance(y, one);
-  return avar1.empty() ? 0.0 : std::sqrt(3.0 / double(y.size())) * avar1.front();
-}
-
-bool latticeVisible(const std::vector<double>& y, double q, double rate) {
-  Setup s;
-  s.rate = rate;
-  return q > 0 && q * q / 12.0 > oneSampleAvarScatter(y, s);
-}
-
 SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
   SeriesStats out;
   out.avar = allanVariance(y, s);

@@ -40,13 +40,5 @@ Setup makeSetup(double rate, std::size_t n, const DiagnoseOptions& o);
 SeriesStats seriesStats(const std::vector<double>& y, const Setup& s);
 /// Overlapping AVAR of y at the factors of s [SI^2].
 std::vector<double> allanVariance(const std::vector<double>& y, const Setup& s);
-/// The scatter of y's Allan variance at one sample, sqrt(3 / N) AVAR(1) as for white noise
-/// [SI^2]: a rounding whose nominal variance there (q^2/12 rounded per sample) is below it is no
-/// effect any statistic of the record can see (a CSV's printing precision, not a sensor's LSB).
-double oneSampleAvarScatter(const std::vector<double>& y, const Setup& s);
-/// Whether the rounding onto a value lattice of step q [SI] (latticeStep) could be seen in y at all:
-/// its variance q^2 / 12 above the scatter of y's own one-sample Allan variance (a CSV's printing
-/// precision is no quantization).
-bool latticeVisible(const std::vector<double>& y, double q, double rate);
 
 }  // namespace sinsim::errormodels::diagnose::detail

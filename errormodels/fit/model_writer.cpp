@@ -371,6 +371,11 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
          withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
   }
   if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization, ax.latticeLsb);
+  if (ax.roundedRateLsb > 0.0) {
+    b.line << "quantization lsb: the record's value lattice, exact; each sample rounded (a rate output)";
+    b.endComment();
+    b.add(EffectSpec::make("quantization", {ParamSpec::quantity("lsb", ax.roundedRateLsb, signal)}));
+  }
   if (ax.allan) {
     b.line << "Allan-term fit: " << ax.allan->pointsUsed << " points, tau "
            << num(ax.allan->tau.front(), 4) << ".." << num(ax.allan->tau.back(), 6) << " s, chi2 "

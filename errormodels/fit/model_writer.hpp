@@ -62,6 +62,10 @@ struct AxisFitResult {
   /// dithered (latticeLsb, identify.cpp). Written as the lsb, exact, in place of the Allan fit's
   /// (which strong rounding biases low: successive rounding errors are correlated); 0: none.
   double latticeLsb = 0.0;
+  /// The record's value lattice [signal] where no fitted term rounds onto it and the diagnosis
+  /// would see it (writeVisibleLattice, identify.cpp): written as a quantization of that rate LSB,
+  /// each sample rounded; 0: none.
+  double roundedRateLsb = 0.0;
   /// Narrow lines taken out of the record before the terms above were fitted, written as
   /// `sinusoid` effects (identify_lines.hpp).
   std::vector<FittedLine> lines;

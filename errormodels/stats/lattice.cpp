@@ -1,6 +1,8 @@
 // The value lattice of a recorded series (lattice.hpp).
 #include "errormodels/stats/lattice.hpp"
 
+#include "errormodels/stats/allan.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,6 +40,20 @@ double latticeStep(const std::vector<double>& y) {
   auto mid = refined.begin() + std::ptrdiff_t(refined.size() / 2);
   std::nth_element(refined.begin(), mid, refined.end());
   return *mid;  // the median step
+}
+
+double oneSampleAvarScatter(const std::vector<double>& y) {
+  if (y.size() < 3) return 0.0;
+  AllanOptions ao;
+  ao.factors = {1};
+  ao.confidence_intervals = false;
+  // AVAR at one sample is half the mean squared difference: the rate given does not enter.
+  const auto c = allanDeviation(y, 1.0, AllanVariant::Overlapping, ao);
+  return c.dev.empty() ? 0.0 : std::sqrt(3.0 / double(y.size())) * c.dev.front() * c.dev.front();
+}
+
+bool latticeVisible(const std::vector<double>& y, double q, bool carried) {
+  return q > 0 && q * q / (carried ? 4.0 : 12.0) > oneSampleAvarScatter(y);
 }
 
 }  // namespace sinsim::errormodels

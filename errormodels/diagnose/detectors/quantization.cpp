@@ -16,6 +16,7 @@
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/rounding.hpp"
 #include "errormodels/diagnose/significance.hpp"
+#include "errormodels/stats/lattice.hpp"
 
 #include <cmath>
 
@@ -115,10 +116,9 @@ std::vector<Candidate> detect_quantization(const DetectorContext& ctx) {
   // with 7 digits sits on a 1e-6 lattice whose rounding is 1e-10 of a MEMS accelerometer's
   // variance), not a sensor's LSB. Nominal, not the variance the rounding added to this record: on
   // a lattice coarser than the noise that can be ~0 while the rounding shapes every sample.
-  const double seen = oneSampleAvarScatter(ctx.y, ctx.setup);
   std::vector<Candidate> out;
-  if (q * q / 12.0 > seen) out.push_back(std::move(rateLsb));
-  if (q * q / 4.0 > seen) out.push_back(std::move(carry));
+  if (latticeVisible(ctx.y, q)) out.push_back(std::move(rateLsb));
+  if (latticeVisible(ctx.y, q, true)) out.push_back(std::move(carry));
   if (out.empty()) out.push_back(quantizationNoise(ctx));  // a lattice no rounding of it can show
   return out;
 }
