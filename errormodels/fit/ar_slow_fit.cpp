@@ -36,18 +36,14 @@ std::vector<double> minusLevel(const std::vector<double>& x, double q, double r)
   return u;
 }
 
-/// The series the first Burg fit sees: the record minus a level smoothed at the tau of the last
-/// interior local minimum of its ADEV c (gain dt / tau_min), where a rise at long tau begins, so
-/// that a strong random walk does not pull an AR pole to 1 (the walk would then ride as a slow AR
-/// mode, hidden from the slow terms). The global minimum can be m = 1: a positively correlated
-/// AR's ADEV first rises to its hump. No interior minimum (no rise at long tau): the record.
-std::vector<double> startingSeries(const std::vector<double>& x, const LatentAllanPoints& c, double dt) {
+/// The tau [s] of the last interior local minimum of the record's ADEV c, where a rise at long tau
+/// begins (0: none, no rise at long tau). The global minimum can be m = 1: a positively
+/// correlated AR's ADEV first rises to its hump.
+double levelMinimumTau(const LatentAllanPoints& c) {
   std::size_t iMin = 0;
   for (std::size_t i = 1; i + 1 < c.dev.size(); ++i)
     if (c.dev[i] < c.dev[i - 1] && c.dev[i] < c.dev[i + 1]) iMin = i;
-  if (iMin == 0) return x;
-  const double g = dt / c.tau[iMin];
-  return minusLevel(x, g * g, 1.0);
+  return iMin == 0 ? 0.0 : c.tau[iMin];
 }
 
 }  // namespace
@@ -80,8 +76,27 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
     out.joint = fitLatentModel(c.m, c.avar, x.size(), lo);
   };
 
+  // The first Burg fit sees the record minus a level smoothed at that minimum (gain dt / tau_min),
+  // so that a strong random walk does not pull an AR pole to 1 (the walk would then ride as a slow
+  // AR mode, hidden from the slow terms) -- where the smoother stays much slower than the AR it
+  // leaves (tau_min >= slowGmMinTc T_c, the rule of the rounds below). An oscillating AR's ADEV has
+  // a minimum of its own a few samples in: smoothed there, Burg saw the record high-passed and
+  // wrote an AR(20) 2.3x the record at one sample (a challenge null record's AR(5) at 500 Hz).
   ArSlowFit out;
-  jointWith(startingSeries(x, c, dt), out);
+  const double tauMin = levelMinimumTau(c);
+  if (tauMin > 0.0) {
+    const double g = dt / tauMin;
+    jointWith(minusLevel(x, g * g, 1.0), out);
+  }
+  if (tauMin == 0.0 || !(tauMin >= options.slowGmMinTc * out.arCorrelationTime)) {
+    try {
+      ArSlowFit raw;
+      jointWith(x, raw);
+      out = std::move(raw);
+    } catch (const InputError&) {
+      if (tauMin == 0.0) throw;  // a pole at ~1 in the record itself, and no level to take out
+    }
+  }
   // Then, while a random walk is selected: Burg on the record minus the walk's level smoothed
   // with the fitted model (q = K^2 dt, r = the AR's long-tau white variance per sample
   // E / A(1)^2), the joint fit again; at most 3 rounds, until the chosen set repeats. Only the
