@@ -286,11 +286,12 @@ double latticeLsb(double Q, double lattice, double dt) {
   return lsb > 0.0 && std::fabs(std::log(lsb / fitted)) < std::log(1.5) ? lsb : 0.0;
 }
 
-/// A value lattice of step q [SI] the diagnosis sees (latticeVisible, either rounding) that no written term rounds
-/// onto: a composite fit's model gets it as the record's rate LSB, each sample rounded, so that
-/// `diagnose` of the same record finds no quantization the model lacks. To the Allan fit that
+/// A value lattice of step q [SI] the diagnosis sees (latticeVisible, either rounding) that no
+/// written term rounds onto: a composite fit's model gets it as the record's rate LSB, each sample
+/// rounded, so that `diagnose` of the same record finds no quantization the model lacks. To the Allan fit that
 /// rounding is white noise of variance q^2 / 12 per sample, which the white term (else the AR's
-/// driving noise) took in: that share moves out of it where at least half the term remains.
+/// driving noise) took in: that share moves out of it. Where neither keeps half of itself, the
+/// lattice is as coarse as the noise, its rounding no white noise: not written.
 void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, double q, double dt) {
   if (!w.latent || writtenQuantization(w) > 0.0 || !latticeVisible(x, q, true)) return;
   fit::LatentModel& m = w.latent->model;
@@ -316,7 +317,12 @@ void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, do
     note += "; the AR's driving sigma lowered by that share, " + friendly(before, s) + " -> " +
             friendly(std::sqrt(m.arVariance), s);
   } else {
-    note += "; no white or AR term holds that share: the model's variance includes it twice";
+    // A lattice as coarse as the noise: rounding is no white noise there (it may hide variance),
+    // and no term holds its share. Not written, as before; the diagnosis sizes it on the record.
+    w.notes.push_back("values on a lattice of " + friendly(q, s) + ", as coarse as the noise (q^2 / 12 " +
+                      significant(v / var * 100.0, 3) + " % of the record's variance, more than half of its " +
+                      "white or AR term): no quantization written; `sinsim diagnose` sizes it against the record");
+    return;
   }
   w.notes.push_back(note);
   w.roundedRateLsb = q;
