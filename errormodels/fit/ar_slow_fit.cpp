@@ -37,13 +37,14 @@ std::vector<double> minusLevel(const std::vector<double>& x, double q, double r)
 }
 
 /// The tau [s] of the last interior local minimum of the record's ADEV c, where a rise at long tau
-/// begins (0: none, no rise at long tau). The global minimum can be m = 1: a positively
-/// correlated AR's ADEV first rises to its hump.
+/// begins: one that lasts, the longest tau above the minimum (0: none, no rise at long tau). The
+/// global minimum can be m = 1: a positively correlated AR's ADEV first rises to its hump. A hump
+/// that falls again is the AR's (or a GM's) own, not a walk's rise: the minimum before it no level.
 double levelMinimumTau(const LatentAllanPoints& c) {
   std::size_t iMin = 0;
   for (std::size_t i = 1; i + 1 < c.dev.size(); ++i)
     if (c.dev[i] < c.dev[i - 1] && c.dev[i] < c.dev[i + 1]) iMin = i;
-  return iMin == 0 ? 0.0 : c.tau[iMin];
+  return iMin == 0 || !(c.dev.back() > c.dev[iMin]) ? 0.0 : c.tau[iMin];
 }
 
 }  // namespace
@@ -78,10 +79,11 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
 
   // The first Burg fit sees the record minus a level smoothed at that minimum (gain dt / tau_min),
   // so that a strong random walk does not pull an AR pole to 1 (the walk would then ride as a slow
-  // AR mode, hidden from the slow terms) -- where the smoother stays much slower than the AR it
-  // leaves (tau_min >= slowGmMinTc T_c, the rule of the rounds below). An oscillating AR's ADEV has
-  // a minimum of its own a few samples in: smoothed there, Burg saw the record high-passed and
-  // wrote an AR(20) 2.3x the record at one sample (a challenge null record's AR(5) at 500 Hz).
+  // AR mode, hidden from the slow terms) -- for a rise that lasts (levelMinimumTau) and where the
+  // smoother stays much slower than the AR it leaves (tau_min >= slowGmMinTc T_c, the rule of the
+  // rounds below). An oscillating AR's ADEV has a minimum of its own a few samples in, white noise
+  // beside a slow AR pole one before the AR's hump: smoothed there, Burg saw the record high-passed
+  // and wrote an AR(20) 2.3x the record at one sample (challenge null records, docs/fitting.md).
   ArSlowFit out;
   const double tauMin = levelMinimumTau(c);
   if (tauMin > 0.0) {

@@ -9,8 +9,9 @@
 //     pole to 1 (and ride inside the AR, hidden from the slow terms), so when the octave ADEV has
 //     an interior local minimum (a rise at long tau begins there, at tau_min) Burg sees the record
 //     minus its level from the RTS local-level smoother of gain dt / tau_min (composite_fit.hpp),
-//     kept where that smoother is much slower than the AR it leaves (tau_min >= slowGmMinTc T_c;
-//     an oscillating AR's own ADEV minimum a few samples in is no such rise: Burg on the record).
+//     for a rise that lasts (the longest tau's ADEV above the minimum's) and a smoother much
+//     slower than the AR it leaves (tau_min >= slowGmMinTc T_c): an oscillating AR's own ADEV
+//     minimum a few samples in, or one before an AR's hump, is no such rise (Burg on the record).
 //     T_c = the AR model's 1/e time.
 //  2. The composite latent GLS fit (fit/latent_fit.hpp) on the octave Allan variance over all tau,
 //     with the AR as one of its terms: the AR's Allan variance in closed form at the record's
