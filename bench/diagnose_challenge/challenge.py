@@ -157,6 +157,13 @@ def make(rng, idx, work, max_samples, bases=BASES, null=False, effects=None, poo
             "hidden": truth}
 
 
+def null_record(generator, rng, idx, work, max_samples):
+    """A record of the named generator with no hidden effect (its --null draw), as a row."""
+    if generator == "main":
+        return make(rng, idx, work, max_samples, BASES, True)
+    return gen_module(generator).make(rng, idx, work, max_samples, None, True)
+
+
 def diagnose(sinsim, row, opts, add=None):
     """Runs sinsim diagnose on the row's record; per channel the reported findings in acceptance
     order, the best drop score of any candidate (the first trial round when nothing is reported:

@@ -59,10 +59,7 @@ def inject(row, rng):
 
 def run_one(a, i):
     rng = np.random.default_rng([a.seed, i])
-    if a.generator == "main":
-        row = C.make(rng, i, a.work, a.max_samples, C.BASES, True)
-    else:
-        row = C.gen_module(a.generator).make(rng, i, a.work, a.max_samples, None, True)
+    row = C.null_record(a.generator, rng, i, a.work, a.max_samples)
     row["channel"], h = inject(row, rng)
     row["hidden"] = [h]
     row["result"] = C.diagnose(a.sinsim, row, a)
