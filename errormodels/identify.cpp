@@ -288,43 +288,35 @@ double latticeLsb(double Q, double lattice, double dt) {
 
 /// A value lattice of step q [SI] the diagnosis sees (latticeVisible, either rounding) that no
 /// written term rounds onto: a composite fit's model gets it as the record's rate LSB, each sample
-/// rounded, so that `diagnose` of the same record finds no quantization the model lacks. To the Allan fit that
-/// rounding is white noise of variance q^2 / 12 per sample, which the white term (else the AR's
-/// driving noise) took in: that share moves out of it. Where neither keeps half of itself, the
-/// lattice is as coarse as the noise, its rounding no white noise: not written.
-void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, double q, double dt) {
+/// rounded, so that `diagnose` of the same record finds no quantization the model lacks. To the
+/// Allan fit that rounding is white noise of variance q^2 / 12 per sample, which the white term
+/// (else the AR's driving noise) took in: that share moves out of it. Where neither keeps half of
+/// itself, the lattice is as coarse as the noise, its rounding no white noise: not written. x is the
+/// record as fitted, sd its standard deviation [SI].
+void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, double sd, double q, double dt) {
   if (!w.latent || writtenQuantization(w) > 0.0 || !latticeVisible(x, q, true)) return;
   fit::LatentModel& m = w.latent->model;
   const double v = q * q / 12.0;  // [U^2] per sample
-  const fit::SensorSignal s = w.sensor;
-  double var = 0.0;  // x is mean-removed
-  for (double v2 : x) var += v2 * v2;
-  var /= double(x.size());
-  // A white density in the unit the fit's comments use: deg/sqrt(h), m/s/sqrt(h).
-  auto density = [s](double N) {
-    return s == fit::SensorSignal::Gyro ? significant(N * kDegPerRad * 60.0, 6) + " deg/sqrt(h)"
-                                        : significant(N * 60.0, 6) + " m/s/sqrt(h)";
-  };
-  std::string note = "values on a lattice of " + friendly(q, s) + ": a quantization of that LSB written (each "
-                     "sample rounded; its variance " + significant(v / var * 100.0, 3) + " % of the record's)";
+  const std::string lattice = "values on a lattice of " + friendly(q, w.sensor) + " (q^2 / 12 " +
+                              significant(v / (sd * sd) * 100.0, 3) + " % of the record's variance)";
+  std::string moved;
   if (m.white > 0.0 && v * dt <= 0.5 * m.white * m.white) {
     const double before = m.white;
     m.white = std::sqrt(m.white * m.white - v * dt);
-    note += "; the white density lowered by that share, " + density(before) + " -> " + density(m.white);
+    moved = "the white density x" + significant(m.white / before, 4);
   } else if (m.arVariance > 0.0 && v <= 0.5 * m.arVariance) {
     const double before = std::sqrt(m.arVariance);
     m.arVariance -= v;
-    note += "; the AR's driving sigma lowered by that share, " + friendly(before, s) + " -> " +
-            friendly(std::sqrt(m.arVariance), s);
+    moved = "the AR's driving sigma x" + significant(std::sqrt(m.arVariance) / before, 4);
   } else {
-    // A lattice as coarse as the noise: rounding is no white noise there (it may hide variance),
-    // and no term holds its share. Not written, as before; the diagnosis sizes it on the record.
-    w.notes.push_back("values on a lattice of " + friendly(q, s) + ", as coarse as the noise (q^2 / 12 " +
-                      significant(v / var * 100.0, 3) + " % of the record's variance, more than half of its " +
-                      "white or AR term): no quantization written; `sinsim diagnose` sizes it against the record");
+    // As coarse as the noise: rounding is no white noise there (it may hide variance), and no
+    // term holds its share. Not written, as before; the diagnosis sizes it on the record.
+    w.notes.push_back(lattice + ", as coarse as the noise (more than half of its white or AR term): no " +
+                      "quantization written; `sinsim diagnose` sizes it against the record");
     return;
   }
-  w.notes.push_back(note);
+  w.notes.push_back(lattice + ": a quantization of that LSB written (each sample rounded), its share moved out of " +
+                    moved);
   w.roundedRateLsb = q;
 }
 
@@ -619,7 +611,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
                                    settlingMessage(*ax.settling, sensor, record.skipped_s + double(skip) * dt,
                                                    double(n) * dt));
       }
-      writeVisibleLattice(ax.written, x, lattice, dt);
+      writeVisibleLattice(ax.written, x, ax.stddev, lattice, dt);
       const double Q = writtenQuantization(ax.written);
       ax.written.ditheredQuantization = Q > 0.0 && quantizationIsDithered(Q, lattice, dt);
       if (ax.written.latent && Q > 0.0 && !ax.written.ditheredQuantization)

@@ -64,7 +64,7 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
   lo.scanStart = options.scanStart;
   lo.penaltyPerTerm = options.penaltyPerTerm;
   lo.penaltyPerParameter = options.penaltyPerParameter;
-  auto jointWith = [&](const std::vector<double>& series, ArSlowFit& out) {
+  auto burg = [&](const std::vector<double>& series, ArSlowFit& out) {
     out.ar = selectArOrder(series, os);
     try {
       out.arCorrelationTime = arCorrelationTime(out.ar.fit.a, dt);
@@ -72,9 +72,15 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
       throw InputError(std::string("AR + slow terms fit: the Burg AR has a pole at ~1 (") + e.what() +
                        "): a slow process rides inside the AR; try --kind latent");
     }
+  };
+  auto joint = [&](ArSlowFit& out) {
     lo.arPolynomial = out.ar.fit.a;
     lo.minGmTauSamples = std::max(options.slowGmMinTc * out.arCorrelationTime / dt, 0.5);
     out.joint = fitLatentModel(c.m, c.avar, x.size(), lo);
+  };
+  auto jointWith = [&](const std::vector<double>& series, ArSlowFit& out) {
+    burg(series, out);
+    joint(out);
   };
 
   // The first Burg fit sees the record minus a level smoothed at that minimum (gain dt / tau_min),
@@ -84,21 +90,25 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
   // rounds below). An oscillating AR's ADEV has a minimum of its own a few samples in, white noise
   // beside a slow AR pole one before the AR's hump: smoothed there, Burg saw the record high-passed
   // and wrote an AR(20) 2.3x the record at one sample (challenge null records, docs/fitting.md).
+  // Only Burg decides which series; the joint fit runs once, on the one kept.
   ArSlowFit out;
   const double tauMin = levelMinimumTau(c);
+  bool smoothed = false;
   if (tauMin > 0.0) {
     const double g = dt / tauMin;
-    jointWith(minusLevel(x, g * g, 1.0), out);
+    burg(minusLevel(x, g * g, 1.0), out);
+    smoothed = tauMin >= options.slowGmMinTc * out.arCorrelationTime;
   }
-  if (tauMin == 0.0 || !(tauMin >= options.slowGmMinTc * out.arCorrelationTime)) {
+  if (!smoothed) {
     try {
       ArSlowFit raw;
-      jointWith(x, raw);
+      burg(x, raw);
       out = std::move(raw);
     } catch (const InputError&) {
       if (tauMin == 0.0) throw;  // a pole at ~1 in the record itself, and no level to take out
     }
   }
+  joint(out);
   // Then, while a random walk is selected: Burg on the record minus the walk's level smoothed
   // with the fitted model (q = K^2 dt, r = the AR's long-tau white variance per sample
   // E / A(1)^2), the joint fit again; at most 3 rounds, until the chosen set repeats. Only the
