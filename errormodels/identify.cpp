@@ -22,6 +22,7 @@
 #include "errormodels/identify_terms.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/lattice.hpp"
+#include "errormodels/stats/trend.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/line_fit.hpp"
 #include "errormodels/stats/spectrum.hpp"
@@ -488,6 +489,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
 
       ax.written.sensor = sensor;
       ax.written.axis = ax.axis;
+      ax.written.trendSlope = trendSlope(x, dt);
       ax.written.notes.push_back(
           "mean removed (not written): " + friendly(mean, sensor) + " = " +
           significant(mean, 8) + " (SI); sd " + friendly(ax.stddev, sensor));

@@ -1,5 +1,5 @@
 // Small tools on one recorded series shared by the detectors: window and block means, the median
-// and a least-squares solve (the value lattice: errormodels/stats/lattice.hpp).
+// and a least-squares solve (the value lattice and the trend: errormodels/stats/lattice.hpp, trend.hpp).
 #pragma once
 
 #include <cstddef>
@@ -8,17 +8,10 @@
 #include <Eigen/Dense>
 
 #include "errormodels/stats/lattice.hpp"
+#include "errormodels/stats/trend.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
-/// Least-squares slope of y against t = (k + 0.5) dt [SI/s]: a ramp's size, and the trend whose
-/// scatter under the model the ramp's conditional test compares it with.
-double trendSlope(const std::vector<double>& y, double dt);
-/// Variance of trendSlope over n samples of a stationary series whose autocovariance at lags
-/// 0, 1, ... is acov [SI^2] (0 beyond its end, which may be shorter than n): exact, the sum over
-/// lags of acov(h) times the trend weights' autocorrelation (a cubic in h) [SI^2/s^2]. White
-/// noise of variance s2: 12 s2 / (dt^2 n (n^2 - 1)).
-double trendVarianceFromAcov(const std::vector<double>& acov, std::size_t n, double dt);
 /// Mean of y over consecutive windows of m samples.
 std::vector<double> windowMeans(const std::vector<double>& y, std::size_t m);
 

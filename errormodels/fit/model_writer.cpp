@@ -128,8 +128,9 @@ EffectSpec quantizationSpec(ParamSpec lsb, bool dithered) {
   return EffectSpec::make("quantization", std::move(params));
 }
 
+/// `rampSign` (+-1) signs a ramp: the record's trend's (AxisFitResult::trendSlope).
 void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const Units& u,
-                  Dimension signal, bool dithered) {
+                  Dimension signal, bool dithered, double rampSign) {
   const AllanTerm& t = fit.term(kind);
   if (!t.enabled) return;
   std::string unit;
@@ -163,7 +164,10 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
           {value("B"), ParamSpec::quantities("tau_range", {fit.tau.front(), fit.tau.back()}, time)}));
       break;
     case AllanTermKind::RandomWalk: b.add(EffectSpec::make("random_walk", {value("K")})); break;
-    case AllanTermKind::Ramp: b.add(EffectSpec::make("ramp", {value("slope")})); break;
+    case AllanTermKind::Ramp:
+      b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", rampSign * scale * t.value, dim),
+                                                {scale * t.stdError})}));
+      break;
   }
 }
 
@@ -207,9 +211,10 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
   }
 }
 
-/// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec.
+/// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec;
+/// a drift signed by `rampSign` (+-1, the record's trend's).
 void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal, bool dithered,
-               double latticeLsb) {
+               double latticeLsb, double rampSign) {
   const double rate = 1.0 / f.sampleInterval;
   b.line << "composite latent-process fit (GLS on the octave Allan variance, tau "
          << num(f.tau.front(), 4) << ".." << num(f.tau.back(), 6) << " s): " << f.terms.name()
@@ -325,9 +330,9 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
   }
   if (m.drift > 0.0) {
     b.line << "drift (ramp) +- " << q(sd("drift"), u.slope) << " (1 sigma" << ln("drift", 1.0, u.slope)
-           << "; the Allan variance does not give its sign)";
+           << "; its size from the Allan variance, its sign the record's least-squares trend's)";
     b.endComment();
-    b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", m.drift, signal / time),
+    b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", rampSign * m.drift, signal / time),
                                               {sd("drift")})}));
   }
 }
@@ -370,7 +375,8 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
         {withSigma(ParamSpec::quantity("sigma", g.sigma, signal), {g.sigmaStdError}),
          withSigma(ParamSpec::quantity("tau", g.tau, Dimension::time()), {g.tauStdError})}));
   }
-  if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization, ax.latticeLsb);
+  const double rampSign = ax.trendSlope < 0.0 ? -1.0 : 1.0;
+  if (ax.latent) addLatent(b, *ax.latent, u, signal, ax.ditheredQuantization, ax.latticeLsb, rampSign);
   if (ax.roundedRateLsb > 0.0) {
     b.line << "quantization lsb: the record's value lattice, exact; each sample rounded (a rate output)";
     b.endComment();
@@ -384,7 +390,7 @@ void addAxis(ListBuilder& b, const AxisFitResult& ax, const std::string& what) {
     b.endComment();
     for (std::size_t j = 0; j < kAllanTermCount; ++j)
       if (ax.allanWrite[j])
-        addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal, ax.ditheredQuantization);
+        addAllanTerm(b, *ax.allan, static_cast<AllanTermKind>(j), u, signal, ax.ditheredQuantization, rampSign);
   }
   for (const FittedLine& l : ax.lines) {
     b.line << "a narrow line, taken out of the record before the noise terms were fitted (phase at "

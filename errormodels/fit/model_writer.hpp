@@ -69,6 +69,9 @@ struct AxisFitResult {
   /// Narrow lines taken out of the record before the terms above were fitted, written as
   /// `sinusoid` effects (identify_lines.hpp).
   std::vector<FittedLine> lines;
+  /// [signal/s] The least-squares trend of the fitted series (stats/trend.hpp): the sign of a written
+  /// ramp (the Allan variance gives a drift's square only, its sign is the record's); 0 reads as +.
+  double trendSlope = 0.0;
 };
 
 struct ModelProvenance {

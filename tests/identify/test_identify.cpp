@@ -1016,3 +1016,29 @@ TEST_CASE("auto writes the latent terms where the record has no stable AR", "[id
         gx.written.latent->terms.name());
   CHECK(id.modelYaml().find("auto: no AR") != std::string::npos);
 }
+
+// The Allan variance holds a drift's square (R^2 tau^2 / 2), not its sign: every fit wrote a
+// ramp rising whichever way the record drifted, so a model fitted to a falling record drifted
+// the other way in simulation, and the diagnosis of the same record found the record's drift
+// twice the model's, reversed (challenge null records, docs/fitting-log.md). The written ramp
+// takes the record's least-squares trend's sign; its size stays the fit's.
+TEST_CASE("a fitted ramp has the sign of the record's trend", "[identify]") {
+  const double R = 2000.0;  // deg/h^2: ~14x the white noise's ADEV at tau = 120 s
+  for (const double sign : {-1.0, 1.0})
+    for (const IdentifyKind kind : {IdentifyKind::Latent, IdentifyKind::Allan, IdentifyKind::Auto})  // gm: no drift
+      for (std::uint64_t seed = 81; seed < 84; ++seed) {
+        const Record r = staticRecord("gyro: {x: [{type: white, density: 0.3 deg/sqrt(h)}, {type: ramp, slope: " +
+                                          std::to_string(sign * R) + " deg/h/h}]}",
+                                      100.0, 1200.0, seed);
+        const ErrorModelSpec spec = identifyGx(r, kind).modelSpec();
+        const EffectSpec* ramp = nullptr;
+        for (const auto& e : spec.gyro.x)
+          if (e.type == "ramp") ramp = &e;
+        INFO("kind " << int(kind) << ", true slope " << sign * R << " deg/h^2, seed " << seed);
+        REQUIRE(ramp);
+        REQUIRE(ramp->find("slope"));
+        const double slope = ramp->find("slope")->values.at(0) * 3600.0 * 3600.0 / kDeg;
+        CHECK(slope * sign > 0.0);
+        CHECK(std::fabs(slope - sign * R) < 0.2 * R);
+      }
+}
