@@ -84,6 +84,14 @@ bool offBelowStart(const LatentFit& fit) {
   return std::fabs(std::log(fit.belowStartRatio)) > std::log(kBelowStartTolerance);
 }
 
+double worstAdevLogRatio(const LatentFit& fit) {
+  double worst = std::fabs(std::log(fit.belowStartRatio));
+  for (std::size_t i = 0; i < fit.avar.size() && i < fit.modelAvar.size(); ++i)
+    if (fit.avar[i] > 0.0 && fit.modelAvar[i] > 0.0)
+      worst = std::max(worst, 0.5 * std::fabs(std::log(fit.modelAvar[i] / fit.avar[i])));
+  return worst;
+}
+
 const LatentCandidate* LatentFit::runnerUp() const {
   int seen = 0;
   for (const auto& c : candidates)

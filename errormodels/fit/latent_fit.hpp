@@ -258,6 +258,9 @@ LatentAllanPoints latentAllanPoints(const std::vector<double>& x, double sampleI
 
 /// Whether the model is off the record below a scanned start beyond kBelowStartTolerance.
 bool offBelowStart(const LatentFit& fit);
+/// How far the model's ADEV is from the record's at its worst point, fitted or below a scanned
+/// start: the largest |ln(model / record)| (0 for a perfect fit).
+double worstAdevLogRatio(const LatentFit& fit);
 
 /// Fits the record x [U] (any mean; sampled at options.sampleInterval). Throws InputError for bad
 /// options, non-finite samples, or too few Allan points for the smallest candidate.

@@ -1042,3 +1042,31 @@ TEST_CASE("a fitted ramp has the sign of the record's trend", "[identify]") {
         CHECK(std::fabs(slope - sign * R) < 0.2 * R);
       }
 }
+
+// White noise beside a GM per decade (the alternative challenge generator's flicker; 0.034 s to
+// 883 s at 125 Hz, 3200 s): Burg's AR(20) holds some of the slow GMs' power, so the AR + slow-terms
+// fit scanned its start up to ~1 s and set the AR's driving variance there, 0.31-0.35x the record's
+// ADEV at one sample, while the latent terms, though not consistent (chi2 46-56 / 9-10 dof), were
+// within 1.2-1.3x at every point. Auto now writes the terms where they are within 25 %, or half as
+// far off (in ln) at their worst as the AR branch. Rate over 10 seeds: the written model within
+// 1.5x of the record at every octave point in >= 8 (before: 5; after: 9, the tenth AR + slow terms
+// at 2.35x, its terms 1.7x), and never 3x off (before: 3.03x and 3.22x).
+TEST_CASE("auto writes the terms where its AR branch is further off the record than they are", "[identify]") {
+  const std::string truth =
+      "gyro: {x: [{type: white, density: 8.53e-5 rad/s/sqrt(Hz)}, {type: gauss_markov, sigma: 1.33e-4 rad/s, tau: "
+      "0.0344 s}, {type: gauss_markov, sigma: 1.77e-4 rad/s, tau: 1.28 s}, {type: gauss_markov, sigma: 1.57e-4 rad/s, "
+      "tau: 28 s}, {type: gauss_markov, sigma: 1.28e-4 rad/s, tau: 883 s}]}";
+  int near = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Record r = staticRecord(truth, 125.0, 3200.0, seed);
+    const Identification id = identifyGx(r, IdentifyKind::Auto);
+    const auto& gx = id.axis("gx");
+    const auto model = gx.modelAdev(gx.allan.tau);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < model.size(); ++i) worst = std::max(worst, std::fabs(std::log(model[i] / gx.allan.dev[i])));
+    INFO("seed " << seed << ": written " << toString(gx.kind) << ", worst ADEV ratio " << std::exp(worst));
+    near += worst < std::log(1.5);
+    CHECK(worst < std::log(3.0));
+  }
+  CHECK(near >= 8);
+}
