@@ -22,10 +22,10 @@
 #include "errormodels/identify_terms.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/lattice.hpp"
-#include "errormodels/stats/trend.hpp"
 #include "errormodels/stats/special.hpp"
 #include "errormodels/stats/line_fit.hpp"
 #include "errormodels/stats/spectrum.hpp"
+#include "errormodels/stats/trend.hpp"
 
 namespace sinsim::errormodels {
 

@@ -152,8 +152,8 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
   }
   b.line << toString(kind) << " +- " << q(scale * t.stdError, unit) << " (1 sigma)";
   b.endComment();
-  auto value = [&](const char* key) {
-    return withSigma(ParamSpec::quantity(key, scale * t.value, dim), {scale * t.stdError});
+  auto value = [&](const char* key, double sign = 1.0) {
+    return withSigma(ParamSpec::quantity(key, sign * scale * t.value, dim), {scale * t.stdError});
   };
   switch (kind) {
     case AllanTermKind::Quantization: b.add(quantizationSpec(value("lsb"), dithered)); break;
@@ -164,10 +164,7 @@ void addAllanTerm(ListBuilder& b, const AllanFit& fit, AllanTermKind kind, const
           {value("B"), ParamSpec::quantities("tau_range", {fit.tau.front(), fit.tau.back()}, time)}));
       break;
     case AllanTermKind::RandomWalk: b.add(EffectSpec::make("random_walk", {value("K")})); break;
-    case AllanTermKind::Ramp:
-      b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", rampSign * scale * t.value, dim),
-                                                {scale * t.stdError})}));
-      break;
+    case AllanTermKind::Ramp: b.add(EffectSpec::make("ramp", {value("slope", rampSign)})); break;
   }
 }
 

@@ -14,10 +14,11 @@
 
 #include "errormodels/diagnose/low_frequency.hpp"
 #include "errormodels/diagnose/series_tools.hpp"
-#include "errormodels/stats/trend.hpp"
 #include "errormodels/diagnose/significance.hpp"
+#include "errormodels/stats/trend.hpp"
 
 namespace d = sinsim::errormodels::diagnose::detail;
+namespace em = sinsim::errormodels;
 
 namespace {
 
@@ -121,7 +122,7 @@ TEST_CASE("the exact trend variance of a stationary noise is its definition", "[
     std::vector<double> white(N, 0.0);
     white[0] = 2.5;
     const double n = double(N);
-    CHECK(sinsim::errormodels::trendVarianceFromAcov(white, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
+    CHECK(em::trendVarianceFromAcov(white, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
     for (double phi : {0.3, 0.95, 0.999}) {
       std::vector<double> gm(N);
       for (std::size_t h = 0; h < N; ++h) gm[h] = 0.7 * std::pow(phi, double(h));
@@ -133,15 +134,15 @@ TEST_CASE("the exact trend variance of a stationary noise is its definition", "[
       double direct = 0;
       for (std::size_t i = 0; i < N; ++i)
         for (std::size_t j = 0; j < N; ++j) direct += a[i] * a[j] * gm[i > j ? i - j : j - i];
-      CHECK(sinsim::errormodels::trendVarianceFromAcov(gm, N, dt) == Approx(direct).epsilon(1e-9));
+      CHECK(em::trendVarianceFromAcov(gm, N, dt) == Approx(direct).epsilon(1e-9));
     }
     // An autocovariance given only where it is not negligible (the rest 0): the same.
-    CHECK(sinsim::errormodels::trendVarianceFromAcov({2.5}, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
+    CHECK(em::trendVarianceFromAcov({2.5}, N, dt) == Approx(12 * 2.5 / (dt * dt * n * (n * n - 1))).epsilon(1e-10));
   }
   std::vector<double> gm(400), head(40);
   for (std::size_t h = 0; h < gm.size(); ++h) gm[h] = std::pow(0.3, double(h));
   std::copy(gm.begin(), gm.begin() + 40, head.begin());  // 0.3^40 = 1.2e-21
-  CHECK(sinsim::errormodels::trendVarianceFromAcov(head, 400, dt) == Approx(sinsim::errormodels::trendVarianceFromAcov(gm, 400, dt)).epsilon(1e-14));
+  CHECK(em::trendVarianceFromAcov(head, 400, dt) == Approx(em::trendVarianceFromAcov(gm, 400, dt)).epsilon(1e-14));
 }
 
 // ... and against the scatter of simulated trends: 4000 stationary AR(1) records of 500 samples
@@ -155,7 +156,7 @@ TEST_CASE("the exact trend variance of a Gauss-Markov matches simulated trends",
   const double phi = 0.98, s2 = 1.0, dt = 0.01;
   std::vector<double> acov(N);
   for (std::size_t h = 0; h < N; ++h) acov[h] = s2 * std::pow(phi, double(h));
-  const double exact = sinsim::errormodels::trendVarianceFromAcov(acov, N, dt);
+  const double exact = em::trendVarianceFromAcov(acov, N, dt);
   std::mt19937_64 rng(20261201);
   std::normal_distribution<double> n01(0.0, 1.0);
   double ms = 0;
@@ -163,7 +164,7 @@ TEST_CASE("the exact trend variance of a Gauss-Markov matches simulated trends",
   for (std::size_t r = 0; r < R; ++r) {
     y[0] = n01(rng) * std::sqrt(s2);
     for (std::size_t k = 1; k < N; ++k) y[k] = phi * y[k - 1] + n01(rng) * std::sqrt(s2 * (1 - phi * phi));
-    const double b = sinsim::errormodels::trendSlope(y, dt);
+    const double b = em::trendSlope(y, dt);
     ms += b * b / double(R);
   }
   CHECK(std::fabs(ms / exact - 1) < 3.5 * std::sqrt(2.0 / double(R)));
