@@ -10,6 +10,9 @@ and, only when asked by --case (the `--kind ar+slow` study, fit/ar_slow_fit.hpp)
   ar2+rw              AR(2) + random walk
   ar2+gm              AR(2) + a slow first-order GM
   qn+white            white noise + quantization noise as GMWM makes it (no value lattice)
+  white+drift         white + a deterministic ramp R t
+  white+gm+drift      white + GM + the ramp
+  white+rw+drift      white + random walk + a ramp above the walk's chance trend
 
 How each process is made (on purpose not the way the fit models it, where there is a choice):
   white        N / sqrt(dt) * normal samples
@@ -25,6 +28,7 @@ How each process is made (on purpose not the way the fit models it, where there 
   quantization the angle (cumulative increment) rounded to an LSB, the rate = difference / dt;
                qn+white: GMWM's (simts) QN process sqrt(12) Q (U_k - U_{k-1}) / dt, U uniform on
                (0, 1), added to the white noise (the same Q; the record has no value lattice)
+  drift        R t with t = k dt from the record's first sample (the fit sees no sign; R > 0 here)
   AR(2)        scipy.signal.lfilter of normal driving noise through 1 / A(z), after a burn-in of
                20 x the slower pole's time constant (the fit uses Burg and closed forms)
 
@@ -44,6 +48,7 @@ import numpy as np
 
 CASES = ["white+gm", "white+gm+rw", "white+2gm", "white+flicker+rw", "quantization+white"]
 AR_CASES = ["ar2+rw", "ar2+gm", "qn+white"]
+DRIFT_CASES = ["white+drift", "white+gm+drift", "white+rw+drift"]
 DEG = math.pi / 180.0
 
 
@@ -93,8 +98,21 @@ def parameters(case, rate, duration):
             # near 2 tau) is ~5x the AR's white level there.
             terms["gm"] = 1
             p.update({"gm1.sigma": 0.002 * DEG, "gm1.tau": duration / 60.0})
+    elif case in DRIFT_CASES:
+        # The ramp's Allan variance R^2 tau^2 / 2 is 4x the white's (N^2 / tau) at the top octave
+        # tau_top = duration / 10 (beside the walk: 4x the walk's K^2 tau / 3 there; the walk's
+        # own least-squares trend over the record has sd ~1.1 K / sqrt(duration), the ramp ~5x it).
+        tau_top = duration / 10.0
+        terms["drift"] = True
+        p = {"white": N, "drift": math.sqrt(8.0) * N * tau_top ** -1.5}
+        if case == "white+gm+drift":
+            terms["gm"] = 1
+            p.update({"gm1.sigma": s1, "gm1.tau": T1})
+        elif case == "white+rw+drift":
+            terms["random_walk"] = True
+            p.update({"random_walk": K, "drift": math.sqrt(8.0 / 3.0) * K / math.sqrt(tau_top)})
     else:
-        raise SystemExit(f"unknown case {case!r}; known: {', '.join(CASES + AR_CASES)}")
+        raise SystemExit(f"unknown case {case!r}; known: {', '.join(CASES + AR_CASES + DRIFT_CASES)}")
     return terms, p
 
 
@@ -134,7 +152,7 @@ def record(case, rate, duration, seed):
     terms, p = parameters(case, rate, duration)
     dt = 1.0 / rate
     n = int(round(duration * rate))
-    rng = np.random.default_rng([seed, (CASES + AR_CASES).index(case), int(rate), int(duration)])
+    rng = np.random.default_rng([seed, (CASES + AR_CASES + DRIFT_CASES).index(case), int(rate), int(duration)])
     if "ar.a" in p:
         x = ar_process(rng, n, p["ar.a"], p["ar.sigma"])
     else:
@@ -146,6 +164,8 @@ def record(case, rate, duration, seed):
         x += np.cumsum(p["random_walk"] * math.sqrt(dt) * rng.standard_normal(n))
     if "flicker" in p:
         x += flicker(rng, n, dt, p["flicker"])
+    if "drift" in p:
+        x += p["drift"] * dt * np.arange(n)
     if "quantization" in p and case == "qn+white":
         u = rng.uniform(0.0, 1.0, n + 1)
         x += math.sqrt(12.0) * p["quantization"] / dt * (u[1:] - u[:-1])
