@@ -509,6 +509,9 @@ struct Tally {
   /// Records with a walk whose chosen set is the truth with the walk read as one more GM (drift
   /// aside): the swap withoutWalkLikeGms (latent_fit.cpp) holds to the nested test's 1 %.
   int walkAsGm = 0;
+  /// Fits whose drift the trend alone added (LatentFit::trendDrift: the likelihood's slope test
+  /// chose it, the Allan fit of that set put it at zero).
+  int trendDrift = 0;
   /// STUDY_ORACLE (oracleProbe): records right for the same penalties at best, for any penalty
   /// monotone in the parameter count at best, block-detectable, and right among those.
   int oracled = 0, oracleSame = 0, oracleMonotone = 0, oracleDetectable = 0, oracleRightDetectable = 0;
@@ -589,6 +592,7 @@ struct Tally {
       for (const auto& [name, c] : o.mlCovers) mlCovered[name] += c;
     }
     ++chosen[f.terms.name()];
+    trendDrift += f.trendDrift;
     if (truth.randomWalk) {
       fit::LatentTermSet swapped = truth, got = f.terms;
       swapped.randomWalk = false, swapped.gm += 1, got.drift = swapped.drift;
@@ -653,6 +657,7 @@ struct Tally {
       }
     }
     if (walkAsGm > 0) std::printf("\n   the walk read as a GM: %d/%d", walkAsGm, fitted + failed);
+    if (trendDrift > 0) std::printf("\n   a drift added from the trend alone: %d/%d", trendDrift, fitted + failed);
     if (arOnlyMissed + jointMissed > 0)
       std::printf("\n   a long-tau point (tau >= duration/40) outside the 99 %% band: AR alone %d/%d, AR + slow %d/%d",
                   arOnlyMissed, fitted, jointMissed, fitted);

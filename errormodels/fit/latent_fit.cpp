@@ -13,6 +13,7 @@
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/fit/ar_fit.hpp"
 #include "errormodels/fit/block_likelihood.hpp"
+#include "errormodels/fit/drift_gls.hpp"
 #include "errormodels/fit/golden_section.hpp"
 #include "errormodels/fit/nnls.hpp"
 #include "errormodels/fit/whittle_selection.hpp"
@@ -657,36 +658,49 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
 }
 
 
+/// firstValid's choice: the index into cands, its i in `order`, and whether the likelihood wanted
+/// S + drift where only S's Allan fit is valid (the Allan variance, which sees a ramp through its
+/// last octaves alone, put the drift at zero): S chosen, its drift then the record's trend's alone
+/// (LatentCandidate::trendDrift, drift_gls.hpp).
+struct ValidChoice {
+  std::size_t chosen = 0, i = 0;
+  bool trendDrift = false;
+};
+
 /// In `order` (indices into cands, best first), the first set S, or S + drift where drift(i), whose
-/// Allan fit is valid (the other of the two when only it is): {the chosen index, its i in order}.
+/// Allan fit is valid (the other of the two when only it is).
 template <class Drift>
-std::optional<std::pair<std::size_t, std::size_t>> firstValid(const std::vector<LatentCandidate>& cands,
-                                                              const std::vector<std::size_t>& order, Drift drift) {
-  auto find = [&](const LatentTermSet& t) -> std::optional<std::size_t> {
+std::optional<ValidChoice> firstValid(const std::vector<LatentCandidate>& cands, const std::vector<std::size_t>& order,
+                                      Drift drift) {
+  auto find = [&](const LatentTermSet& t, bool valid) -> std::optional<std::size_t> {
     for (std::size_t k = 0; k < cands.size(); ++k)
-      if (cands[k].terms == t && cands[k].valid) return k;
+      if (cands[k].terms == t && (cands[k].valid || !valid)) return k;
     return std::nullopt;
   };
   for (std::size_t i : order) {
     LatentTermSet withDrift = cands[i].terms;
     withDrift.drift = true;
-    const auto plain = find(cands[i].terms), drifted = find(withDrift);
-    const auto chosen = drift(i) ? (drifted ? drifted : plain) : (plain ? plain : drifted);
-    if (chosen) return std::make_pair(*chosen, i);
+    const auto plain = find(cands[i].terms, true), drifted = find(withDrift, true);
+    const bool want = drift(i);
+    const auto chosen = want ? (drifted ? drifted : plain) : (plain ? plain : drifted);
+    if (chosen) return ValidChoice{*chosen, i, want && !drifted && find(withDrift, false).has_value()};
   }
   return std::nullopt;
 }
 
-/// cands reordered: the chosen, then `order` without it, then the sets in neither.
-std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& cands, std::size_t chosen,
+/// cands reordered: the chosen (its trendDrift set, every other's cleared), then `order` without
+/// it, then the sets in neither.
+std::vector<LatentCandidate> chosenFirst(const std::vector<LatentCandidate>& cands, const ValidChoice& chosen,
                                          const std::vector<std::size_t>& order) {
-  std::vector<LatentCandidate> out{cands[chosen]};
+  std::vector<LatentCandidate> out{cands[chosen.chosen]};
   std::vector<bool> placed(cands.size(), false);
-  placed[chosen] = true;
+  placed[chosen.chosen] = true;
   for (std::size_t i : order)
     if (!placed[i]) out.push_back(cands[i]), placed[i] = true;
   for (std::size_t i = 0; i < cands.size(); ++i)
     if (!placed[i]) out.push_back(cands[i]);
+  for (auto& c : out) c.trendDrift = false;
+  out.front().trendDrift = chosen.trendDrift;
   return out;
 }
 
@@ -749,7 +763,7 @@ std::vector<LatentCandidate> whittleChoice(const Problem& p, const WhittleBins& 
   const auto chosen = firstValid(cands, order, [&](std::size_t i) {
     return bins.slope * bins.slope > kDriftSlopeChi2 * whittleSlopeVariance(bins, cands[i].whittleModel);
   });
-  return chosen ? chosenFirst(cands, chosen->first, order) : cands;
+  return chosen ? chosenFirst(cands, *chosen, order) : cands;
 }
 
 /// The block choice (block_likelihood.hpp steps 4-5) over the Whittle-ordered candidates `cands`
@@ -793,8 +807,8 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
   order = withoutWalkLikeGms(cands, order, penalty, [](const LatentCandidate& c) { return c.blockScore; });
   const auto chosen = firstValid(cands, order, [&](std::size_t i) { return bool(drift[i]); });
   if (!chosen) return cands;
-  cands[chosen->first].blockScore = cands[chosen->second].blockScore;  // S + drift: S's score
-  return chosenFirst(cands, chosen->first, order);
+  cands[chosen->chosen].blockScore = cands[chosen->i].blockScore;  // S + drift: S's score
+  return chosenFirst(cands, *chosen, order);
 }
 
 }  // namespace
@@ -924,6 +938,7 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
   out.whittleSelected = whittle && std::isfinite(cands.front().whittleScore);
   out.blockSelected = whittle && std::isfinite(cands.front().blockScore);
   out.consistent = out.pValue >= 1e-3;
+  out.trendDrift = cands.front().trendDrift && !best.set.drift;
   if (!best.allPositive) out.warnings.push_back("final refit put a variance at zero");
   describe(p, best, out);
   return {std::move(out), averaging};
@@ -1080,10 +1095,15 @@ LatentFit fitRecord(const std::vector<double>& x, const LatentAllanPoints& c, co
   // the periodogram's level is known to 0.1 %, so the Whittle and block likelihoods read that
   // spread as structure (a GM of tau ~ 15 samples chosen in 9 of 80 blind quantization + white
   // records); the few octave Allan points choose the set instead.
-  if (!options.whittleSelection || options.lattice.correlated())
-    return fitScanned(c.m, c.avar, x.size(), options, nullptr);
-  const WhittleBins bins = whittleBins(x, options.sampleInterval, options.lattice);
-  return fitScanned(c.m, c.avar, x.size(), options, &bins, &x);
+  LatentFit fit;
+  if (!options.whittleSelection || options.lattice.correlated()) {
+    fit = fitScanned(c.m, c.avar, x.size(), options, nullptr);
+  } else {
+    const WhittleBins bins = whittleBins(x, options.sampleInterval, options.lattice);
+    fit = fitScanned(c.m, c.avar, x.size(), options, &bins, &x);
+  }
+  driftFromTrend(fit, x);
+  return fit;
 }
 
 /// LatentFitOptions::lattice with a step and no motion: the motion from the record's Allan

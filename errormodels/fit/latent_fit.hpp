@@ -209,6 +209,10 @@ struct LatentCandidate {
   LatentModel whittleModel;  ///< the Whittle fit behind whittleScore
   /// -2 log L (block means + periodogram above them) + latentPenalty, NaN where not scored.
   double blockScore = std::numeric_limits<double>::quiet_NaN();
+  /// Chosen by a likelihood as this set + drift, whose own Allan fit put the drift at zero (the
+  /// Allan variance sees a ramp through its last octaves alone): the drift is added from the
+  /// record's trend (LatentFit::trendDrift).
+  bool trendDrift = false;
 };
 
 /// How far (as an ADEV ratio, either way) a scanned fit's model may be off the record below its
@@ -243,6 +247,13 @@ struct LatentFit {
   /// record's at the point below the start where they differ most (1: no point below, or not
   /// scanned). Warned beyond kBelowStartTolerance either way (offBelowStart).
   double belowStartRatio = 1.0;
+  /// [U/s] With a drift fitted from a record: the signed GLS slope of its block means under the
+  /// other terms, which set the drift's size and 1-sigma (drift_gls.hpp); NaN where the size is
+  /// the Allan fit's.
+  double driftSlope = std::numeric_limits<double>::quiet_NaN();
+  /// The likelihood's choice was this set + drift, but its Allan fit held no drift (put it at
+  /// zero): the drift is the record's trend's alone, added by drift_gls.hpp (with a record).
+  bool trendDrift = false;
 
   const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
   const LatentCandidate* runnerUp() const;  ///< second valid candidate, nullptr if none

@@ -209,7 +209,8 @@ void addLatentAveraged(ListBuilder& b, const LatentFit& f, const Units& u) {
 }
 
 /// The latent fit's terms (latent_fit.hpp), each with its 1-sigma as a comment and in the spec;
-/// a drift signed by `rampSign` (+-1, the record's trend's).
+/// a drift signed by its GLS slope (LatentFit::driftSlope) or else by `rampSign` (+-1, the record's
+/// least-squares trend's).
 void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension signal, bool dithered,
                double latticeLsb, double rampSign) {
   const double rate = 1.0 / f.sampleInterval;
@@ -326,8 +327,13 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
                                                      {sd("random_walk")})}));
   }
   if (m.drift > 0.0) {
+    const bool gls = std::isfinite(f.driftSlope);
+    if (gls) rampSign = f.driftSlope < 0.0 ? -1.0 : 1.0;
     b.line << "drift (ramp) +- " << q(sd("drift"), u.slope) << " (1 sigma" << ln("drift", 1.0, u.slope)
-           << "; its size from the Allan variance, its sign the record's least-squares trend's)";
+           << (gls ? "; the GLS slope of the record's block means under the other terms"
+                   : "; its size from the Allan variance, its sign the record's least-squares trend's")
+           << (f.trendDrift ? "; chosen by the likelihood's slope test, where the Allan variance alone put it at zero" : "")
+           << ")";
     b.endComment();
     b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", rampSign * m.drift, signal / time),
                                               {sd("drift")})}));
