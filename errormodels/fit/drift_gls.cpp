@@ -5,7 +5,6 @@
 #include <string>
 
 #include "common/error.hpp"
-#include "common/number_text.hpp"
 #include "errormodels/fit/block_likelihood.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -21,8 +20,9 @@ void setSize(P& p, double R, double sd) {
 }
 
 /// The "drift" rows of fit.parameters and fit.averaged (its weight of inclusion kept: the Allan
-/// scores' statement on whether a drift is there; added with weight 0 where none held one), and its log-space variance Var ln(R^2) =
-/// (2 sd / R)^2, its covariance with the other parameters 0 (the slope is estimated given them).
+/// scores' statement on whether a drift is there; added with weight 0 where none held one), and
+/// its log-space variance Var ln(R^2) = (2 sd / R)^2, its covariance with the other parameters 0
+/// (the slope is estimated given them).
 void setDrift(LatentFit& fit, double R, double sd) {
   for (std::size_t k = 0; k < fit.parameters.size(); ++k) {
     LatentParameter& p = fit.parameters[k];
@@ -80,13 +80,12 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x) {
   fit.model.drift = R;
   setDrift(fit, R, sd);
   fit.modelAvar = latentAllanVariance(fit.model, fit.sampleInterval, fit.m);
-  // describe()'s sanity warning on the drift was the Allan fit's: restated for the trend's.
-  const std::string stale = "drift: 1-sigma uncertainty";
+  // The fit's sanity warning on the drift was the Allan fit's: restated for the trend's.
+  const std::string stale = uncertaintyWarningLead("drift");
   fit.warnings.erase(std::remove_if(fit.warnings.begin(), fit.warnings.end(),
                                     [&](const std::string& w) { return w.rfind(stale, 0) == 0; }),
                      fit.warnings.end());
-  if (sd > R)
-    fit.warnings.push_back(stale + " " + significant(sd, 4) + " exceeds the value " + significant(R, 4));
+  if (sd > R) fit.warnings.push_back(uncertaintyWarning(fit.parameter("drift")));
 }
 
 }  // namespace sinsim::errormodels::fit

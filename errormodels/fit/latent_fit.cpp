@@ -85,6 +85,12 @@ bool offBelowStart(const LatentFit& fit) {
   return std::fabs(std::log(fit.belowStartRatio)) > std::log(kBelowStartTolerance);
 }
 
+std::string uncertaintyWarningLead(const std::string& name) { return name + ": 1-sigma uncertainty "; }
+
+std::string uncertaintyWarning(const LatentParameter& p) {
+  return uncertaintyWarningLead(p.name) + significant(p.stdError, 4) + " exceeds the value " + significant(p.value, 4);
+}
+
 double worstAdevLogRatio(const LatentFit& fit) {
   double worst = std::fabs(std::log(fit.belowStartRatio));
   for (std::size_t i = 0; i < fit.avar.size() && i < fit.modelAvar.size(); ++i)
@@ -652,9 +658,7 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
                              fmt(duration / 3.0) + " s): poorly determined, it acts as a random walk");
   }
   for (const auto& q : out.parameters)
-    if (q.stdError > q.value)
-      out.warnings.push_back(q.name + ": 1-sigma uncertainty " + fmt(q.stdError) + " exceeds the value " +
-                             fmt(q.value));
+    if (q.stdError > q.value) out.warnings.push_back(uncertaintyWarning(q));
 }
 
 

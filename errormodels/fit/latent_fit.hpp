@@ -272,6 +272,9 @@ bool offBelowStart(const LatentFit& fit);
 /// How far the model's ADEV is from the record's at its worst point, fitted or below a scanned
 /// start: the largest |ln(model / record)| (0 for a perfect fit).
 double worstAdevLogRatio(const LatentFit& fit);
+/// The sanity warning of a parameter whose 1-sigma exceeds its value, and its opening words.
+std::string uncertaintyWarning(const LatentParameter& p);
+std::string uncertaintyWarningLead(const std::string& name);
 
 /// Fits the record x [U] (any mean; sampled at options.sampleInterval). Throws InputError for bad
 /// options, non-finite samples, or too few Allan points for the smallest candidate.
