@@ -1049,8 +1049,11 @@ TEST_CASE("a fitted ramp has the sign of the record's trend", "[identify]") {
 // ADEV at one sample, while the latent terms, though not consistent (chi2 46-56 / 9-10 dof), were
 // within 1.2-1.3x at every point. Auto now writes the terms where they are within 25 %, or half as
 // far off (in ln) at their worst as the AR branch. Rate over 10 seeds: the written model within
-// 1.5x of the record at every octave point in >= 8 (before: 5; after: 9, the tenth AR + slow terms
-// at 2.35x, its terms 1.7x), and never 3x off (before: 3.03x and 3.22x).
+// 1.5x of the record at every octave point in >= 8 (before: 5; then 9, the tenth AR + slow terms
+// at 2.35x, its whole-range terms 1.7x), and never 3x off (before: 3.03x and 3.22x). Where the
+// whole-range terms fail that test, the terms from a scanned start (as --kind latent) are tried
+// the same way: seed 2 (the AR branch at 2.35x) is now those terms, 1.12x at worst, and every
+// seed is within 1.5x (the worst 1.44x).
 TEST_CASE("auto writes the terms where its AR branch is further off the record than they are", "[identify]") {
   const std::string truth =
       "gyro: {x: [{type: white, density: 8.53e-5 rad/s/sqrt(Hz)}, {type: gauss_markov, sigma: 1.33e-4 rad/s, tau: "
@@ -1066,7 +1069,7 @@ TEST_CASE("auto writes the terms where its AR branch is further off the record t
     for (std::size_t i = 0; i < model.size(); ++i) worst = std::max(worst, std::fabs(std::log(model[i] / gx.allan.dev[i])));
     INFO("seed " << seed << ": written " << toString(gx.kind) << ", worst ADEV ratio " << std::exp(worst));
     near += worst < std::log(1.5);
-    CHECK(worst < std::log(3.0));
+    CHECK(worst < std::log(1.5));
   }
-  CHECK(near >= 8);
+  CHECK(near == 10);
 }
