@@ -105,13 +105,15 @@ fit::LatentFit latentTerms(const std::vector<double>& x, double dt, const fit::R
   return fit::fitLatentModel(x, lo);
 }
 
+/// Consistent where fitted and within kBelowStartTolerance below a scanned start, if any.
+bool consistentThroughout(const fit::LatentFit& terms) { return terms.consistent && !fit::offBelowStart(terms); }
+
 /// Step 5's test of a latent fit against an AR branch off the record below its start: consistent
-/// and within kBelowStartTolerance below its own start, within it at every point, or at its worst
-/// at most half as far off (in ln) as the AR branch at its own.
+/// throughout, within kBelowStartTolerance at every point, or at its worst at most half as far off
+/// (in ln) as the AR branch at its own.
 bool termsCloser(const fit::LatentFit& terms, double arWorst) {
   const double worst = fit::worstAdevLogRatio(terms);
-  return (terms.consistent && !fit::offBelowStart(terms)) || worst <= std::log(fit::kBelowStartTolerance) ||
-         worst <= 0.5 * arWorst;
+  return consistentThroughout(terms) || worst <= std::log(fit::kBelowStartTolerance) || worst <= 0.5 * arWorst;
 }
 
 /// Step 5's note: the AR branch's start and its ratio below it, and why the terms are written.
@@ -119,7 +121,7 @@ std::string termsInstead(const fit::LatentFit& ar, const fit::LatentFit& terms, 
   const double worst = fit::worstAdevLogRatio(terms);
   return "AR + slow terms fitted from " + significant(ar.tau.front(), 4) + " s, " +
          significant(ar.belowStartRatio, 3) + "x the record's ADEV below that: the latent terms " + range + ", " +
-         (terms.consistent && !fit::offBelowStart(terms)
+         (consistentThroughout(terms)
               ? std::string("consistent")
               : "off the record by at most " + significant(std::exp(worst), 3) + "x (either way)") +
          ", written instead";
