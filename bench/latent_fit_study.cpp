@@ -11,6 +11,8 @@
 //       build/bench/latent_fit_study --stdin [--penalty P] [--penalty-per-parameter P]
 //           [--allan-selection]  (the term set by the Allan GLS score, not the Whittle likelihood)
 //           [--whittle-selection]  (by the Whittle likelihood, not rescored by the block likelihood)
+//           [--allan-parameters]  (the Allan fit's optimum written even where the block likelihood
+//           rejects it: LatentFitOptions::likelihoodCheckedParameters off)
 //           [--min-right F --min-coverage F --expect N [--per-cell] [--min-ar-miss F]]
 //           [--min-coverage-averaged F]  (pooled over all seeds: LatentFit::averaged)
 //           [--max-walk-as-gm F]  (pooled over the cases with a walk: read as one more GM)
@@ -509,6 +511,7 @@ struct Tally {
   /// Records with a walk whose chosen set is the truth with the walk read as one more GM (drift
   /// aside): the swap withoutWalkLikeGms (latent_fit.cpp) holds to the nested test's 1 %.
   int walkAsGm = 0;
+  int likelihoodChecked = 0;
   /// Fits whose drift the trend alone added (LatentFit::trendDrift: the likelihood's slope test
   /// chose it, the Allan fit of that set put it at zero).
   int trendDrift = 0;
@@ -593,6 +596,7 @@ struct Tally {
     }
     ++chosen[f.terms.name()];
     trendDrift += f.trendDrift;
+    likelihoodChecked += !f.parameterNote.empty();
     if (truth.randomWalk) {
       fit::LatentTermSet swapped = truth, got = f.terms;
       swapped.randomWalk = false, swapped.gm += 1, got.drift = swapped.drift;
@@ -658,6 +662,9 @@ struct Tally {
     }
     if (walkAsGm > 0) std::printf("\n   the walk read as a GM: %d/%d", walkAsGm, fitted + failed);
     if (trendDrift > 0) std::printf("\n   a drift added from the trend alone: %d/%d", trendDrift, fitted + failed);
+    if (likelihoodChecked > 0)
+      std::printf("\n   the Allan optimum rejected by the block likelihood, its nearest fit written: %d/%d",
+                  likelihoodChecked, fitted + failed);
     if (arOnlyMissed + jointMissed > 0)
       std::printf("\n   a long-tau point (tau >= duration/40) outside the 99 %% band: AR alone %d/%d, AR + slow %d/%d",
                   arOnlyMissed, fitted, jointMissed, fitted);
@@ -797,6 +804,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--detectability")) { detectability = true; continue; }
     if (!std::strcmp(argv[i], "--allan-selection")) { base.whittleSelection = false; continue; }
     if (!std::strcmp(argv[i], "--whittle-selection")) { base.blockSelection = false; continue; }
+    if (!std::strcmp(argv[i], "--allan-parameters")) { base.likelihoodCheckedParameters = false; continue; }
     if (i + 1 >= argc) break;
     if (!std::strcmp(argv[i], "--seeds")) seeds = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--case")) only = argv[++i];

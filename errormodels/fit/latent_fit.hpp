@@ -51,7 +51,10 @@
 //  8. With LatentFitOptions::blockSelection (default), the drift-free sets within 15 of the best
 //     Whittle score are rescored by the exact Gaussian likelihood of the record's block means (a
 //     Kalman filter; the periodogram above the blocks' band) and the set, with or without drift,
-//     chosen by that score (block_likelihood.hpp). Parameters and 1-sigma stay the Allan fit's.
+//     chosen by that score (block_likelihood.hpp). Parameters and 1-sigma stay the Allan fit's,
+//     but where that likelihood rejects the Allan optimum (beyond the chi^2_k 0.1 % point over its
+//     own fit of the set: a GLS parameterisation below every long-tau point), the Allan fit under
+//     Omega from the likelihood's model, nearest its optimum, is written instead.
 //  Goodness of fit: chi^2, dof = n - k and its p-value over the whole range used.
 #pragma once
 
@@ -119,6 +122,10 @@ struct LatentFitOptions {
   /// likelihood of the record's block means with the periodogram above them (block_likelihood.hpp),
   /// and the set chosen by that score.
   bool blockSelection = true;
+  /// With blockSelection: the chosen set's Allan parameters are checked against the block
+  /// likelihood's own fit of the set, and where the likelihood rejects them (beyond the chi^2_k
+  /// 0.1 % point) the Allan fit nearest the likelihood's is written (LatentFit::parameterNote).
+  bool likelihoodCheckedParameters = true;
   /// The record's value lattice for a quantization term (fit/lattice_rounding.hpp): step D = the
   /// lattice step x dt, drift = the record's mean x dt. Active (a motion set): the quantization
   /// column is the lattice rounding's exact Allan variance. Step set without a motion: the record
@@ -209,6 +216,9 @@ struct LatentCandidate {
   LatentModel whittleModel;  ///< the Whittle fit behind whittleScore
   /// -2 log L (block means + periodogram above them) + latentPenalty, NaN where not scored.
   double blockScore = std::numeric_limits<double>::quiet_NaN();
+  /// The block likelihood's own fit of this set (without drift), where blockScore is finite: the
+  /// written parameters are checked against it (Estimator, "Parameters the likelihood rejects").
+  LatentModel blockModel;
   /// Chosen by a likelihood as this set + drift, whose own Allan fit put the drift at zero (the
   /// Allan variance sees a ramp through its last octaves alone): the drift is added from the
   /// record's trend (LatentFit::trendDrift).
@@ -254,6 +264,10 @@ struct LatentFit {
   /// The likelihood's choice was this set + drift, but its Allan fit held no drift (put it at
   /// zero): the drift is the record's trend's alone, added by drift_gls.hpp (with a record).
   bool trendDrift = false;
+  /// Where the block likelihood rejected the Allan fit's optimum of the chosen set and the
+  /// parameters written are the Allan fit nearest the likelihood's (likelihoodCheckedFit): what
+  /// was done, for the model file; empty otherwise.
+  std::string parameterNote;
 
   const LatentParameter& parameter(const std::string& name) const;  ///< InputError if absent
   const LatentCandidate* runnerUp() const;  ///< second valid candidate, nullptr if none

@@ -230,6 +230,10 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
            << num(delta, 3) << " higher)";
   }
   b.endComment();
+  if (!f.parameterNote.empty()) {
+    b.line << f.parameterNote;
+    b.endComment();
+  }
   for (const auto& w : f.warnings) {
     b.line << "WARNING: " << w;
     b.endComment();
