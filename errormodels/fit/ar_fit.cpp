@@ -329,6 +329,21 @@ std::vector<double> arAutocovariance(const std::vector<double>& a, double drivin
   return ar::autocovarianceOfVariance(arCoefficients(a), drivingVariance, maxLag);
 }
 
+std::optional<ArLessWhite> arLessWhite(const std::vector<double>& a, double drivingVariance, double whiteVariance) {
+  if (a.size() < 2 || !(whiteVariance >= 0.0 && std::isfinite(whiteVariance))) return std::nullopt;
+  const std::size_t p = a.size() - 1;
+  std::vector<double> r = arAutocovariance(a, drivingVariance, p);
+  r[0] -= whiteVariance;
+  if (!(r[0] > 0.0)) return std::nullopt;
+  try {
+    LevinsonResult l = levinsonDurbin(r, p);
+    if (!(l.variancePath.back() > 0.0)) return std::nullopt;
+    return ArLessWhite{std::move(l.a), l.variancePath.back()};
+  } catch (const InputError&) {
+    return std::nullopt;  // not positive definite
+  }
+}
+
 std::vector<double> arAllanVariance(const std::vector<double>& a, double drivingVariance,
                                     const std::vector<std::size_t>& m) {
   return ar::allanVariance(arCoefficients(a), drivingVariance, m);

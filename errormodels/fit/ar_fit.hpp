@@ -11,6 +11,7 @@
 
 #include <complex>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,17 @@ double arLongRunVariance(const std::vector<double>& a, double drivingVariance);
 /// ar::autocovarianceOfVariance of [1, a1..ap]: gamma_0..gamma_maxLag [U^2].
 std::vector<double> arAutocovariance(const std::vector<double>& a, double drivingVariance,
                                      std::size_t maxLag);
+/// The AR(p) [1, a1'..ap'] and driving variance whose autocovariance at lags 0..p is that of
+/// ([1, a1..ap], drivingVariance) less independent white noise of `whiteVariance` [U^2] per sample
+/// (lag 0 lowered by it; Levinson-Durbin at the same order): the process a record's AR fit saw
+/// with that noise (a rounding's q^2 / 12) taken out of its spectrum rather than out of the
+/// driving noise, which would scale the whole spectrum down. Empty where the lowered
+/// autocovariance is not positive definite (the noise exceeds the spectrum somewhere).
+struct ArLessWhite {
+  std::vector<double> a;  ///< [1, a1'..ap']
+  double drivingVariance = 0.0;
+};
+std::optional<ArLessWhite> arLessWhite(const std::vector<double>& a, double drivingVariance, double whiteVariance);
 /// ar::allanVariance of [1, a1..ap] [U^2] at tau = m dt.
 std::vector<double> arAllanVariance(const std::vector<double>& a, double drivingVariance,
                                     const std::vector<std::size_t>& m);

@@ -219,6 +219,43 @@ TEST_CASE("Model autocovariance and Allan variance of an AR process", "[fit][ar]
     CHECK(arMaxPoleMagnitude(fit_test::paperTable()[i].a) == Approx(poles[i]).margin(5e-4));
 }
 
+TEST_CASE("An AR less white noise: the AR(p) whose autocovariance lost v at lag 0", "[fit][ar]") {
+  // AR(1) + white noise of variance v is an ARMA(1,1) whose autocovariance is the AR's with v
+  // added at lag 0 (closed form: E phi^k / (1 - phi^2) + v delta_k). Its AR(1) fit by
+  // Yule-Walker matches lags 0 and 1: a1 = -k, k = g1 / (g0 + v), E1 = (g0 + v)(1 - k^2); taking
+  // v back out must return the AR(1) exactly.
+  const double phi = 0.9, E = 1.5, v = 0.7;
+  const double g0 = E / (1 - phi * phi), g1 = phi * g0;
+  const double k = g1 / (g0 + v);  // the noisy process's lag-1 correlation
+  const std::vector<double> noisy = {1.0, -k};
+  const double noisyE = (g0 + v) * (1 - k * k);
+  const auto back = arLessWhite(noisy, noisyE, v);
+  REQUIRE(back.has_value());
+  CHECK(back->a[1] == Approx(-phi).epsilon(1e-12));
+  CHECK(back->drivingVariance == Approx(E).epsilon(1e-12));
+  // The paper's AR(5) (an order with complex poles): the process plus white noise, fitted by
+  // Levinson-Durbin to its first p + 1 autocovariances (the form a record's AR fit converges
+  // to), then less the noise, is the process again.
+  const auto& a = fit_test::paperTable()[0].a;
+  const double w = 0.05 * arAutocovariance(a, 1.0, 0)[0];
+  std::vector<double> r = arAutocovariance(a, 1.0, a.size() - 1);
+  r[0] += w;
+  const LevinsonResult l = levinsonDurbin(r, a.size() - 1);
+  const auto paper = arLessWhite(l.a, l.variancePath.back(), w);
+  REQUIRE(paper.has_value());
+  for (std::size_t i = 1; i < a.size(); ++i) CHECK(paper->a[i] == Approx(a[i]).margin(1e-9));
+  CHECK(paper->drivingVariance == Approx(1.0).epsilon(1e-9));
+  // No white noise: unchanged. More noise than lags 0..1 allow (g0 - v must exceed g1: v < g0
+  // (1 - phi) = 0.79 of the whole variance g0 = 7.9): none, with v inside and beyond g0.
+  const auto same = arLessWhite({1.0, -phi}, E, 0.0);
+  REQUIRE(same.has_value());
+  CHECK(same->a[1] == Approx(-phi).epsilon(1e-12));
+  CHECK(arLessWhite({1.0, -phi}, E, 0.75).has_value());
+  CHECK_FALSE(arLessWhite({1.0, -phi}, E, 1.0).has_value());
+  CHECK_FALSE(arLessWhite({1.0, -phi}, E, 10.0).has_value());
+  CHECK_FALSE(arLessWhite({1.0, -phi}, E, -1.0).has_value());
+}
+
 TEST_CASE("Bad AR input is refused with a clear message", "[fit][input]") {
   std::vector<double> x(100, 1.0);
   CHECK_THROWS_AS(burg(x, 2), sinsim::InputError);  // constant after mean removal
