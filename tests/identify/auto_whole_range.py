@@ -16,7 +16,6 @@ set the AR's driving variance from the longer tau, while the latent terms fit ev
 
     auto_whole_range.py SINSIM WORKDIR
 """
-import json
 import os
 import subprocess
 import sys
@@ -26,24 +25,12 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "diagnose_challenge"))
 import challenge  # noqa: E402
+from model_file import reported_findings, written_effects  # noqa: E402
 
 
 def record(work, idx):
     os.makedirs(work, exist_ok=True)
     return challenge.null_record("third", np.random.default_rng([3, idx]), idx, work, 400000)
-
-
-def written_effects(model, section, axis):
-    """The effect types written for one channel of a model file, in order."""
-    effects, where = [], None
-    for line in open(model):
-        if not line.startswith(" "):
-            where = line.split(":")[0]
-        elif line.startswith("  ") and not line.startswith("   "):
-            where = (where.split(".")[0] if where else "") + "." + line.strip().rstrip(":")
-        elif where == section + "." + axis and line.strip().startswith("- {type:"):
-            effects.append(line.split("type: ")[1].split(",")[0].split("}")[0])
-    return effects
 
 
 def main():
@@ -75,8 +62,7 @@ def main():
         if p.returncode != 0:
             failures.append(f"record 6: diagnose failed: {p.stderr.strip()}")
         else:
-            axes = json.load(open(report))["axes"]
-            found = [f["effect"] for ax in axes if ax["channel"] == "gz" for f in ax["findings"] if f.get("reported")]
+            found = reported_findings(report, "gz")
             print(f"record 6 gz, second half against the first half's model: {found or 'nothing'}"
                   f" (written {', '.join(written_effects(model, 'gyro', 'z'))})")
             if found:

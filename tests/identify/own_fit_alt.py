@@ -18,7 +18,6 @@ Asserted per channel: the record diagnosed against its own fit shows nothing (no
 
     own_fit_alt.py SINSIM WORKDIR
 """
-import json
 import os
 import subprocess
 import sys
@@ -28,22 +27,10 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "diagnose_challenge"))
 import challenge  # noqa: E402
+from model_file import gm_taus, reported_findings  # noqa: E402
 
 # (record, section, axis, channel, whether its slow power needs a GM of tau >= 5 s)
 CASES = [(11, "accel", "x", "ax", True), (18, "gyro", "y", "gy", True), (9, "gyro", "y", "gy", False)]
-
-
-def gm_taus(model, section, axis):
-    """The `tau` [s] of each gauss_markov written for one channel of a model file."""
-    taus, where = [], None
-    for line in open(model):
-        if not line.startswith(" "):
-            where = line.split(":")[0]
-        elif line.startswith("  ") and not line.startswith("   "):
-            where = (where.split(".")[0] if where else "") + "." + line.strip().rstrip(":")
-        elif where == section + "." + axis and line.strip().startswith("- {type: gauss_markov"):
-            taus.append(float(line.split("tau: ")[1].split(" s")[0]))
-    return taus
 
 
 def main():
@@ -65,8 +52,7 @@ def main():
         if p.returncode != 0:
             failures.append(f"record {idx}: diagnose failed: {p.stderr.strip()}")
             continue
-        found = [f["effect"] for ax in json.load(open(report))["axes"] if ax["channel"] == channel
-                 for f in ax["findings"] if f.get("reported")]
+        found = reported_findings(report, channel)
         print(f"record {idx} {channel}: GM taus {taus} s; the record against its own fit: {found or 'nothing'}")
         if slow_gm and (not taus or max(taus) < 5.0):
             failures.append(f"record {idx} {channel}: slowest GM tau {max(taus) if taus else 'none'} s < 5 s")
