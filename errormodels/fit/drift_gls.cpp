@@ -59,6 +59,18 @@ void addDriftTerm(LatentFit& fit) {
 
 }  // namespace
 
+void testTrendDrift(LatentFit& fit, const std::vector<double>& x) {
+  if (fit.terms.drift || fit.terms.ar || fit.trendDrift || fit.m.empty()) return;
+  const std::size_t B = blockSize(x.size(), fit.m.front());
+  if (x.size() / B < kMinBlocks) return;
+  try {
+    const BlockLikelihood gls = blockLikelihood(blockMeans(x, fit.sampleInterval, B), fit.model);
+    fit.trendDrift = gls.slopeVariance > 0.0 && gls.slope * gls.slope > kDriftSlopeChi2 * gls.slopeVariance;
+  } catch (const Error&) {
+    // no block model with positive variance: the Allan choice stands
+  }
+}
+
 void driftFromTrend(LatentFit& fit, const std::vector<double>& x) {
   const bool add = fit.trendDrift && !fit.terms.drift;
   fit.trendDrift = false;

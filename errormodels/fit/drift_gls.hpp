@@ -32,4 +32,12 @@ namespace sinsim::errormodels::fit {
 /// the fit that chose the set).
 void driftFromTrend(LatentFit& fit, const std::vector<double>& x);
 
+/// Where the set was chosen without the block likelihood (the Allan choice on a correlated value
+/// lattice, latent_fit.cpp fitRecord) and holds no drift and no AR: the slope test that likelihood
+/// makes of every set, on x's block means under fit.model (S + drift chosen where slope^2 /
+/// variance > kDriftSlopeChi2, the chi^2_1 1 % point); where it passes, LatentFit::trendDrift is set
+/// for driftFromTrend to add the drift. Block means average the rounding's non-Gaussian steps away,
+/// which is why the likelihood is not used for the set itself there.
+void testTrendDrift(LatentFit& fit, const std::vector<double>& x);
+
 }  // namespace sinsim::errormodels::fit

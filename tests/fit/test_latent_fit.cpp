@@ -522,3 +522,45 @@ TEST_CASE("latent fit: a ramp the Allan variance cannot hold beside a GM is take
   CHECK(chosen >= 10);
   CHECK(covered >= 9);
 }
+
+TEST_CASE("latent fit: on a correlated value lattice the block means' slope test adds a ramp, rarely a false one",
+          "[fit][latent]") {
+  // White noise (+ a GM) each sample rounded on an LSB 1.5x its sd: the lattice's rounding is
+  // correlated, so the Allan points choose the set (no block likelihood), and the drift is decided
+  // by the slope test that likelihood makes, slope^2 / var > 6.63 (chi^2_1, 1 %). A ramp at 6 sd
+  // of the GLS slope (var 12 S0 / T^3, S0 = N^2 + 2 sigma^2 tau the noise's density at zero
+  // frequency) is found; without one the test passes in ~1 % of records (binomial: P(>= 4 of 40)
+  // = 0.8 %).
+  const double rate = 100.0, duration = 1200.0, dt = 1.0 / rate;
+  const double N = 2e-4, sd = N / std::sqrt(dt), lsb = 1.5 * sd, sigma = 0.3 * sd, tau = 2.0;
+  const double R = 6.0 * std::sqrt(12.0 * (N * N + 2.0 * sigma * sigma * tau) / std::pow(duration, 3.0));
+  auto fitted = [&](std::uint64_t seed, double slope) {
+    char body[512];
+    std::snprintf(body, sizeof body,
+                  "gyro:\n  x:\n    - {type: white, density: %.10g rad/sqrt(s)}\n"
+                  "    - {type: gauss_markov, sigma: %.10g rad/s, tau: %.10g s, rate: 100 Hz}\n"
+                  "    - {type: ramp, slope: %.10g rad/s/s}\n"
+                  "    - {type: quantization, lsb: %.10g rad/s}\n",
+                  N, sigma, tau, slope, lsb);
+    const auto r = identify_test::staticRecord(body, rate, duration, seed);
+    LatentFitOptions o;
+    o.sampleInterval = dt;
+    o.lattice.step = lsb * dt;
+    return fitLatentModel(r.gyro[0], o);
+  };
+  int falseDrifts = 0, found = 0;
+  for (std::uint64_t seed = 0; seed < 40; ++seed) {
+    const LatentFit f = fitted(9100 + seed, 0.0);
+    INFO("null seed " << seed << ": " << f.terms.name());
+    falseDrifts += f.terms.drift;
+  }
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    const double sign = seed % 2 ? -1.0 : 1.0;
+    const LatentFit f = fitted(9200 + seed, sign * R);
+    INFO("ramp seed " << seed << ": " << f.terms.name() << ", slope " << f.driftSlope << " (true " << sign * R << ")");
+    if (f.terms.drift && f.driftSlope * sign > 0.0) ++found;
+  }
+  INFO("false drifts " << falseDrifts << "/40, ramps found " << found << "/10");
+  CHECK(falseDrifts <= 3);
+  CHECK(found >= 9);
+}
