@@ -872,8 +872,8 @@ SetFit likelihoodCheckedFit(Problem& p, const WhittleBins& bins, const std::vect
   };
   note = "the Allan fit's optimum" + taus(allan) + " is rejected by the block likelihood (-2 log L " +
          fmt(before, 3) + " above its optimum, beyond the chi2_" + std::to_string(s.parameterCount()) +
-         " 0.1 % point " + fmt(limit, 3) + "): the Allan fit nearest the likelihood's optimum is written" + taus(best) + ", " +
-         fmt(bestExcess, 3) + " above it";
+         " 0.1 % point " + fmt(limit, 3) + "): the Allan fit nearest the likelihood's optimum is written" +
+         taus(best) + ", " + fmt(bestExcess, 3) + " above it";
   return best;
 }
 

@@ -294,7 +294,8 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
     // The AR term (fit/ar_slow_fit.hpp): Burg's polynomial, its driving sigma = sqrt(E) refitted
     // with the other terms; `rate:` the record's, the rate the polynomial belongs to.
     b.line << "ar: AR(" << m.arPolynomial.size() - 1 << "), driving sigma +- " << q(sd("ar.sigma"), u.level)
-           << " (1 sigma, from the joint fit; the polynomial is Burg's)";
+           << " (1 sigma, from the joint fit; the polynomial Burg's, less a value lattice's rounding where a note says"
+              " so)";
     b.endComment();
     b.add(EffectSpec::make(
         "ar", {ParamSpec::numbers("a", std::vector<double>(m.arPolynomial.begin() + 1, m.arPolynomial.end())),
