@@ -59,22 +59,11 @@ void addDriftTerm(LatentFit& fit) {
 
 }  // namespace
 
-void testTrendDrift(LatentFit& fit, const std::vector<double>& x) {
-  if (fit.terms.drift || fit.terms.ar || fit.trendDrift || fit.m.empty()) return;
-  const std::size_t B = blockSize(x.size(), fit.m.front());
-  if (x.size() / B < kMinBlocks) return;
-  try {
-    const BlockLikelihood gls = blockLikelihood(blockMeans(x, fit.sampleInterval, B), fit.model);
-    fit.trendDrift = gls.slopeVariance > 0.0 && gls.slope * gls.slope > kDriftSlopeChi2 * gls.slopeVariance;
-  } catch (const Error&) {
-    // no block model with positive variance: the Allan choice stands
-  }
-}
-
-void driftFromTrend(LatentFit& fit, const std::vector<double>& x) {
-  const bool add = fit.trendDrift && !fit.terms.drift;
+void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest) {
+  const bool test = slopeTest && !fit.terms.drift && !fit.trendDrift;
+  bool add = fit.trendDrift && !fit.terms.drift;
   fit.trendDrift = false;
-  if (!(fit.terms.drift || add) || fit.terms.ar || fit.m.empty()) return;
+  if (!(fit.terms.drift || add || test) || fit.terms.ar || fit.m.empty()) return;
   const std::size_t B = blockSize(x.size(), fit.m.front());
   if (x.size() / B < kMinBlocks) return;
   LatentModel others = fit.model;
@@ -87,6 +76,10 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x) {
   }
   const double R = std::fabs(gls.slope), sd = std::sqrt(gls.slopeVariance);
   if (!(std::isfinite(R) && R > 0.0 && std::isfinite(sd) && sd > 0.0)) return;
+  if (test) {  // the block choice's S against S + drift: slope^2 / variance beyond the chi^2_1 1 % point
+    if (!(R * R > kDriftSlopeChi2 * gls.slopeVariance)) return;
+    add = true;
+  }
   if (add) addDriftTerm(fit), fit.trendDrift = true;
   fit.driftSlope = gls.slope;
   fit.model.drift = R;

@@ -30,14 +30,13 @@ namespace sinsim::errormodels::fit {
 /// parameters, logCovariance, model); trendDrift stays true only where it was added. The block
 /// means are formed again here (one O(N) pass and one filter run over <= 4096 blocks, small beside
 /// the fit that chose the set).
-void driftFromTrend(LatentFit& fit, const std::vector<double>& x);
-
-/// Where the set was chosen without the block likelihood (the Allan choice on a correlated value
-/// lattice, latent_fit.cpp fitRecord) and holds no drift and no AR: the slope test that likelihood
-/// makes of every set, on x's block means under fit.model (S + drift chosen where slope^2 /
-/// variance > kDriftSlopeChi2, the chi^2_1 1 % point); where it passes, LatentFit::trendDrift is set
-/// for driftFromTrend to add the drift. Block means average the rounding's non-Gaussian steps away,
-/// which is why the likelihood is not used for the set itself there.
-void testTrendDrift(LatentFit& fit, const std::vector<double>& x);
+///
+/// `slopeTest`: where the set was chosen without the block likelihood (the Allan choice on a
+/// correlated value lattice, latent_fit.cpp fitRecord) and holds no drift, the slope test that
+/// likelihood makes of every set decides it: the drift is added where slope^2 / variance >
+/// kDriftSlopeChi2 (the chi^2_1 1 % point; trendDrift set as for the likelihood's own choice).
+/// Block means average the lattice rounding's non-Gaussian steps away, which is why the
+/// likelihood is not used for the set itself there.
+void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest = false);
 
 }  // namespace sinsim::errormodels::fit
