@@ -816,6 +816,29 @@ std::vector<LatentCandidate> blockChoice(const Problem& p, const WhittleBins& bi
   return chosenFirst(cands, *chosen, order);
 }
 
+/// The Allan fit of set s with each GM tau within a factor 2 of the likelihood model's (in their
+/// order, 1.5x apart), by coordinate golden sections from the likelihood's taus.
+SetFit fitNearTaus(const Problem& q, const LatentTermSet& s, const LatentModel& likelihood) {
+  std::vector<double> T0;
+  for (const auto& g : likelihood.gm) T0.push_back(g.tau);
+  SetFit near = solveFixedT(q, s, T0);
+  const double tHi = std::max(q.tau.back(), 2.0 * q.minT);
+  for (int round = 0; round < 4; ++round)
+    for (std::size_t k = 0; k < near.T.size(); ++k) {
+      const double lo = std::max({q.minT, T0[k] / 2.0, k > 0 ? 1.5 * near.T[k - 1] : 0.0});
+      const double hi = std::min({tHi, 2.0 * T0[k], k + 1 < near.T.size() ? near.T[k + 1] / 1.5 : tHi});
+      if (lo < hi) near = goldenT(q, s, near.T, k, lo, hi);
+    }
+  return near;
+}
+
+/// " (GM tau a s, b s)" of a fit, empty without GMs: the model file's note.
+std::string gmTauList(const SetFit& f) {
+  std::string t;
+  for (double T : f.T) t += (t.empty() ? "GM tau " : ", ") + fmt(T) + " s";
+  return t.empty() ? std::string() : " (" + t + ")";
+}
+
 /// The chosen set's Allan fit where the block likelihood does not reject it (Estimator,
 /// "Parameters the likelihood rejects"). The GLS on the octave Allan points can settle on a
 /// parameterisation whose long-tau end lies below every point there (strongly correlated
@@ -848,32 +871,15 @@ SetFit likelihoodCheckedFit(Problem& p, const WhittleBins& bins, const std::vect
   q.W = modelWhitening(q, omega);
   SetFit best = fitSet(q, s);
   double bestExcess = excess(best);
-  SetFit near = solveFixedT(q, s, [&] {
-    std::vector<double> T;
-    for (const auto& g : chosen.blockModel.gm) T.push_back(g.tau);
-    return T;
-  }());
-  const double tHi = std::max(q.tau.back(), 2.0 * q.minT);
-  for (int round = 0; round < 4; ++round)
-    for (std::size_t k = 0; k < near.T.size(); ++k) {
-      const double t0 = chosen.blockModel.gm[k].tau;
-      const double lo = std::max({q.minT, t0 / 2.0, k > 0 ? 1.5 * near.T[k - 1] : 0.0});
-      const double hi = std::min({tHi, 2.0 * t0, k + 1 < near.T.size() ? near.T[k + 1] / 1.5 : tHi});
-      if (lo < hi) near = goldenT(q, s, near.T, k, lo, hi);
-    }
+  const SetFit near = fitNearTaus(q, s, chosen.blockModel);
   if (const double e = excess(near); e < bestExcess) best = near, bestExcess = e;
   if (!(bestExcess <= limit)) return allan;  // the set itself misses the record (ADIS16405's gyros)
   p.W = q.W;
   omegaModel = omega;
-  auto taus = [](const SetFit& f) {
-    std::string t;
-    for (double T : f.T) t += (t.empty() ? "GM tau " : ", ") + fmt(T) + " s";
-    return t.empty() ? std::string() : " (" + t + ")";
-  };
-  note = "the Allan fit's optimum" + taus(allan) + " is rejected by the block likelihood (-2 log L " +
+  note = "the Allan fit's optimum" + gmTauList(allan) + " is rejected by the block likelihood (-2 log L " +
          fmt(before, 3) + " above its optimum, beyond the chi2_" + std::to_string(s.parameterCount()) +
          " 0.1 % point " + fmt(limit, 3) + "): the Allan fit nearest the likelihood's optimum is written" +
-         taus(best) + ", " + fmt(bestExcess, 3) + " above it";
+         gmTauList(best) + ", " + fmt(bestExcess, 3) + " above it";
   return best;
 }
 
