@@ -19,6 +19,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "fit_blind"))
 import generate  # noqa: E402
+from model_file import written_effects  # noqa: E402
 
 
 def main():
@@ -33,8 +34,7 @@ def main():
             failures.append(f"{idx}: fit failed: {r.stderr.strip()}")
             continue
         text = open(model).read()
-        effects = [line.split("type: ")[1].split(",")[0] for line in text.splitlines()
-                   if line.strip().startswith("- {type:")]
+        effects = written_effects(model, "gyro", "x")  # the record's one column, gx
         print(f"#{idx}: {', '.join(effects)}")
         if "below the fitted range" in text:
             failures.append(f"{idx}: the written model is off the record below its fitted start")
