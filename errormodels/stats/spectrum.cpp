@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -252,6 +253,44 @@ Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFractio
     p.I[j] = (c[j][0] * c[j][0] + c[j][1] * c[j][1]) / sh2;
   }
   return p;
+}
+
+std::vector<double> zeroPhaseFiltered(const std::vector<double>& x, const std::function<double(double)>& gain) {
+  checkSamples(x, 1.0, "zero-phase filter");
+  const std::size_t n = x.size();
+  if (n < 2) throw InputError("zero-phase filter: need at least 2 samples");
+  if (n > std::size_t(std::numeric_limits<int>::max()))
+    throw InputError("zero-phase filter: " + std::to_string(n) + " samples exceed FFTW's int length");
+  RealBuffer buf(static_cast<double*>(fftw_malloc(sizeof(double) * n)));
+  if (!buf) throw NumericalError("zero-phase filter: out of memory for " + std::to_string(n) + " samples");
+  struct Plans {  // the DCT-II and DCT-III in place on buf, destroyed under the planner's lock
+    fftw_plan dct = nullptr, idct = nullptr;
+    ~Plans() {
+      std::lock_guard<std::mutex> lock(plannerMutex());
+      if (dct) fftw_destroy_plan(dct);
+      if (idct) fftw_destroy_plan(idct);
+    }
+  } plans;
+  {
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    const int ni = static_cast<int>(n);
+    plans.dct = fftw_plan_r2r_1d(ni, buf.get(), buf.get(), FFTW_REDFT10, FFTW_ESTIMATE);
+    plans.idct = fftw_plan_r2r_1d(ni, buf.get(), buf.get(), FFTW_REDFT01, FFTW_ESTIMATE);
+  }
+  if (!plans.dct || !plans.idct) throw NumericalError("zero-phase filter: FFTW made no plan for length " + std::to_string(n));
+  std::copy(x.begin(), x.end(), buf.get());
+  fftw_execute(plans.dct);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double w = kPi * double(k) / double(n);
+    const double h = gain(w);
+    if (!std::isfinite(h))
+      throw InputError("zero-phase filter: the gain is not finite at w = " + std::to_string(w) + " rad/sample");
+    buf[k] *= h;
+  }
+  fftw_execute(plans.idct);
+  std::vector<double> y(buf.get(), buf.get() + n);
+  for (double& v : y) v /= 2.0 * double(n);  // REDFT01(REDFT10(x)) = 2N x
+  return y;
 }
 
 double paddedPowerSum(const std::vector<double>& g, std::size_t pad, const std::function<double(double)>& weight) {

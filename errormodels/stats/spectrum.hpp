@@ -90,6 +90,14 @@ struct Periodogram {
 Periodogram taperedPeriodogram(const std::vector<double>& x, double taperFraction,
                                Detrend detrend = Detrend::Mean);
 
+/// x filtered by the real, zero-phase gain H(w), w in [0, pi) rad/sample, applied to the record's
+/// even (mirrored) extension of length 2N: the DCT-II of x, each coefficient k (the cosine of
+/// w_k = pi k / N) times H(w_k), and back by the DCT-III (FFTW's REDFT10 / REDFT01). The mirror
+/// leaves no step at the ends for the filter to smear, as a circular (periodic) one would; a
+/// Wiener smoother of a slow part is this with H = S_slow / (S_slow + S_rest). Throws InputError
+/// for fewer than 2 samples, non-finite samples or a non-finite gain.
+std::vector<double> zeroPhaseFiltered(const std::vector<double>& x, const std::function<double(double)>& gain);
+
 /// sum_{k=1}^{M-1} |G(w_k)|^2 weight(|w_k|), G(w) = sum_j g_j e^{-i w j}, at w_k = 2 pi k / M
 /// wrapped into (-pi, pi], M = pad * g.size() (g zero-padded to M). With weight = S, the PSD of a
 /// stationary x (this file's normalisation), Var(sum g_j x_j) = (1/M) (this + S(0) |G(0)|^2) to

@@ -268,3 +268,51 @@ TEST_CASE("low-line test: conservative on white noise, a line at its ordinate, a
     CHECK(lowLineTest(x, fs, 4096, 12, {f0, f1}, 5 / T).p > 1e-3);
   }
 }
+
+TEST_CASE("zero-phase filter: each cosine of the even extension scaled by the gain at its frequency",
+          "[psd][filter]") {
+  // The DCT-II basis: x_n = cos(pi k (2n + 1) / (2N)) is the record's mirrored extension's cosine
+  // at w_k = pi k / N, so the filter returns gain(w_k) x exactly (closed form, no window).
+  const std::size_t n = 1000;  // 2^3 5^3, and 997 (a prime) below
+  for (std::size_t len : {n, std::size_t(997)}) {
+    auto cosine = [&](std::size_t k) {
+      std::vector<double> x(len);
+      for (std::size_t i = 0; i < len; ++i) x[i] = std::cos(M_PI * double(k) * (2.0 * double(i) + 1.0) / (2.0 * double(len)));
+      return x;
+    };
+    const auto gain = [](double w) { return 1.0 / (1.0 + 10.0 * w * w); };
+    for (std::size_t k : {std::size_t(0), std::size_t(1), std::size_t(7), len / 2, len - 1}) {
+      const std::vector<double> x = cosine(k), y = zeroPhaseFiltered(x, gain);
+      const double g = gain(M_PI * double(k) / double(len));
+      for (std::size_t i = 0; i < len; ++i) REQUIRE(y[i] == Approx(g * x[i]).margin(1e-12));
+    }
+    // Two cosines, a gain that keeps the lower only; and the identity gain returns the record.
+    std::vector<double> x = cosine(5), low = x;
+    const std::vector<double> high = cosine(len / 3);
+    for (std::size_t i = 0; i < len; ++i) x[i] += 2.0 * high[i];
+    const std::vector<double> y = zeroPhaseFiltered(x, [&](double w) { return w < M_PI * 10.0 / double(len) ? 1.0 : 0.0; });
+    for (std::size_t i = 0; i < len; ++i) REQUIRE(y[i] == Approx(low[i]).margin(1e-12));
+    const std::vector<double> same = zeroPhaseFiltered(x, [](double) { return 1.0; });
+    for (std::size_t i = 0; i < len; ++i) REQUIRE(same[i] == Approx(x[i]).margin(1e-12));
+  }
+}
+
+TEST_CASE("zero-phase filter: a ramp through a low-pass has no step at its ends (mirror, not wrap)",
+          "[psd][filter]") {
+  // A periodic (circular) filter sees a ramp as a sawtooth and smears its jump over both ends; the
+  // even extension has no jump, so a gentle low-pass leaves a ramp's ends within a few % of its
+  // range (a circular one: ~50 %).
+  const std::size_t n = 4096;
+  std::vector<double> x(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = double(i) / double(n);
+  const std::vector<double> y = zeroPhaseFiltered(x, [](double w) { return std::exp(-std::pow(w / 0.05, 2)); });
+  CHECK(std::fabs(y.front() - x.front()) < 0.03);
+  CHECK(std::fabs(y.back() - x.back()) < 0.03);
+  CHECK(std::fabs(y[n / 2] - x[n / 2]) < 1e-3);
+}
+
+TEST_CASE("zero-phase filter bad input", "[psd][filter]") {
+  CHECK_THROWS_AS(zeroPhaseFiltered({1.0}, [](double) { return 1.0; }), sinsim::InputError);
+  CHECK_THROWS_AS(zeroPhaseFiltered({1.0, NAN, 2.0}, [](double) { return 1.0; }), sinsim::InputError);
+  CHECK_THROWS_AS(zeroPhaseFiltered({1.0, 2.0, 3.0}, [](double w) { return w > 0 ? NAN : 1.0; }), sinsim::InputError);
+}
