@@ -25,7 +25,11 @@
 //     the record minus the walk's level smoothed with the fitted model (q = K^2 dt, r = E / A(1)^2
 //     the AR's long-tau white variance per sample; only while that smoother is >= slowGmMinTc T_c
 //     slow), then step 2 again. No slow term selected: the AR is Burg's on the record itself.
-//  5. For the comparison the AR alone is kept (Burg's E): its Allan variance at the fitted points
+//  5. Where the joint fit is off the record below a scanned start (offBelowStart) with a slow term
+//     selected, once: Burg on the record with the fitted slow terms filtered out (each cosine of
+//     its mirrored extension times sqrt(S_rest / (S_rest + S_slow)), stats::zeroPhaseFiltered),
+//     then step 2 again; kept with the same terms and no larger worstAdevLogRatio.
+//  6. For the comparison the AR alone is kept (Burg's E): its Allan variance at the fitted points
 //     (arOnlyAvar) shows what an AR-only model misses at long tau.
 // Written by the one model writer (fit/model_writer.hpp) as an `ar` effect (the refitted E) and
 // the slow terms' effects on the same channel; the simulator adds them.
