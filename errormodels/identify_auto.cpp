@@ -239,14 +239,18 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     writeLatent(out, std::move(latent), ", fitted over the whole tau range");
     return;
   }
-  if (fit::offBelowStart(out.arSlow->joint)) {
+  if (arScanned) {
     // The terms from a scanned start (as --kind latent), checked the same way below it: on the
     // alternative generator's white + four GMs a decade apart (64 Hz, 6250 s) the whole-range
     // terms missed by chi2 37 / 13 and the AR branch, its driving variance set from 1 s up, was
     // 0.72x the record at one sample (diagnosed `white`), while the terms from 0.125 s were
-    // consistent and within 2 % below (docs/fitting-log.md).
+    // consistent and within 2 % below (docs/fitting-log.md). An AR branch within the tolerance
+    // below its start gives way too, to terms consistent throughout from an earlier start: the
+    // same record's AR branch, its AR re-estimated without the slow terms (fit/ar_slow_fit.hpp
+    // step 5), from 0.5 s and 0.94x below, was diagnosed `white` as well.
     fit::LatentFit scanned = latentTerms(x, dt, lattice, true);
-    if (termsCloser(scanned, arWorst)) {
+    const bool earlier = consistentThroughout(scanned) && scanned.tau.front() < out.arSlow->joint.tau.front();
+    if (fit::offBelowStart(out.arSlow->joint) ? termsCloser(scanned, arWorst) : earlier) {
       const std::string from = "from " + significant(scanned.tau.front(), 4) + " s";
       out.decision.push_back(termsInstead(out.arSlow->joint, scanned, from));
       writeLatent(out, std::move(scanned), ", fitted from a scanned start");

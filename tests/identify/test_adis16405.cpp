@@ -48,16 +48,20 @@ TEST_CASE("ADIS16405: run-1 model predicts run-2 gyro Allan curve, 10-82 s", "[i
       ++tested;
     }
     CHECK(tested == 4);  // 10.24, 20.48, 40.96, 81.92 s
-    // White noise vs the datasheet: ARW 2.0 deg/sqrt(h) typical. The AR's long-tau white level
-    // sqrt(E dt) / |A(1)| is the model's ARW; the data README measured ~2.4 deg/sqrt(h). Checked
-    // loosely (1.5-3.5): a datasheet "typical" is not a bound.
-    // Auto writes the AR with slow terms beside it (the AR's driving variance refitted jointly).
+    // White noise vs the datasheet: ARW 2.0 deg/sqrt(h) typical. The model's ARW is the AR's
+    // long-tau white level sqrt(E dt) / |A(1)| where auto writes the AR with slow terms beside it
+    // (the AR's driving variance refitted jointly), else the white term's density N; the data
+    // README measured ~2.4 deg/sqrt(h). Checked loosely (1.5-3.5): a datasheet "typical" is not a
+    // bound. (gy is written as latent terms since the fifty-second session: terms consistent
+    // throughout from an earlier start than its AR branch's, identify_auto.cpp.)
     REQUIRE(a.written.latent);
     const auto& model = a.written.latent->model;
-    REQUIRE(model.arVariance > 0.0);
-    double A1 = 0.0;
-    for (double c : model.arPolynomial) A1 += c;
-    const double arw = std::sqrt(model.arVariance * 0.01) / std::fabs(A1) * 180.0 / M_PI * 60.0;
+    double arw = model.white * 180.0 / M_PI * 60.0;
+    if (model.arVariance > 0.0) {
+      double A1 = 0.0;
+      for (double c : model.arPolynomial) A1 += c;
+      arw = std::sqrt(model.arVariance * 0.01) / std::fabs(A1) * 180.0 / M_PI * 60.0;
+    }
     INFO(a.channel << " ARW " << arw << " deg/sqrt(h)");
     CHECK(arw > 1.5);
     CHECK(arw < 3.5);
@@ -182,4 +186,58 @@ TEST_CASE("ADIS16405 windows: the GM and latent models keep the record's short-t
         CHECK(ratio < 2.0);
       }
     }
+}
+
+// The AR + slow terms branch of `fit` (auto) on run 2's accelerometers, whose joint fit is scanned to
+// a start of ~5 s: with Burg on the record itself, the AR(20) carried the slow terms' power as its
+// low-frequency level, and the joint fit, which can lower that level only with the driving variance,
+// left the model 0.61x (ax) and 0.81x (az) the record at one sample. With the slow terms filtered
+// out of Burg's record (fit/ar_slow_fit.cpp slowTermsFilteredOut) 0.72x and 0.84x; asserted: every
+// accelerometer at >= 0.7x there (ay, whose fit starts at 2.56 s without that warning: 0.97x).
+TEST_CASE("ADIS16405 run 2: the AR + slow model near the record at one sample", "[identify][adis16405]") {
+  const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
+  if (!std::ifstream(dir + "run2.csv.gz")) {
+    WARN("ADIS16405 data not found in " << dir << ": skipped");
+    return;
+  }
+  IdentifyOptions o;
+  o.axes = {"ax", "ay", "az"};
+  const Identification id = identify(loadRecord(dir + "run2.csv.gz", sinsim::test::adisOptions()), o);
+  for (const auto& a : id.axes) {
+    REQUIRE(a.written.latent);
+    REQUIRE(a.written.latent->model.arVariance > 0.0);
+    REQUIRE(a.allan.tau.at(0) == Approx(0.01));
+    const double ratio = a.modelAdev({a.allan.tau[0]})[0] / a.allan.dev[0];
+    INFO(a.channel << ": model / record ADEV at 0.01 s " << ratio);
+    CHECK(ratio >= 0.7);
+    CHECK(ratio <= 1.1);
+  }
+}
+
+// auto on run 1's gy: its AR branch (AR(4) + flicker + walk) held only from a scanned start of 20 s
+// and was 1.14-1.17x the record's ADEV below it; the latent terms are consistent from 0.04 s, and
+// auto now writes them where the AR branch starts later (identify_auto.cpp; before, only where that
+// branch was more than 25 % off below its start). Asserted: within 10 % of the record from 0.04 s
+// to 2.56 s (the old model: 1.14-1.17x there).
+TEST_CASE("ADIS16405 run 1 gy: auto writes the terms consistent from an earlier start", "[identify][adis16405]") {
+  const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
+  if (!std::ifstream(dir + "run1.csv.gz")) {
+    WARN("ADIS16405 data not found in " << dir << ": skipped");
+    return;
+  }
+  IdentifyOptions o;
+  o.axes = {"gy"};
+  const Identification id = identify(loadRecord(dir + "run1.csv.gz", sinsim::test::adisOptions()), o);
+  const auto& a = id.axis("gy");
+  REQUIRE(a.written.latent);
+  CHECK(a.written.latent->model.arVariance == 0.0);
+  std::size_t tested = 0;
+  for (std::size_t i = 0; i < a.allan.size(); ++i) {
+    if (a.allan.tau[i] < 0.039 || a.allan.tau[i] > 2.57) continue;
+    const double ratio = a.modelAdev({a.allan.tau[i]})[0] / a.allan.dev[i];
+    INFO("tau " << a.allan.tau[i] << " s: model / record ADEV " << ratio);
+    CHECK(std::fabs(std::log(ratio)) < std::log(1.1));
+    ++tested;
+  }
+  CHECK(tested == 7);  // 0.04 .. 2.56 s
 }
