@@ -29,7 +29,8 @@ bool finiteState(const NavState& s) {
 
 }  // namespace
 
-Strapdown::Strapdown(const Earth& earth, const NavState& initial, const StrapdownOptions& options)
+Strapdown::Strapdown(const Earth& earth, const NavState& initial, const StrapdownOptions& options,
+                     double hRef0)
     : earth_(&earth), state_(initial), options_(options), local_(earth) {
   if (!finiteState(initial))
     throw InputError("strapdown: initial state must be finite with a non-zero attitude quaternion");
@@ -48,7 +49,7 @@ Strapdown::Strapdown(const Earth& earth, const NavState& initial, const Strapdow
   const Vec3 w_en = Earth::omega_en_n(e.M, e.N, state_.h, e.sinLat / e.cosLat, state_.v_n);
   gcc_n_ = e.g_n - (2.0 * w_ie + w_en).cross(state_.v_n);
   M_ = e.M;
-  hRefPrev_ = state_.h;
+  hRefPrev_ = std::isfinite(hRef0) ? hRef0 : state_.h;
 }
 
 void Strapdown::correct(const Vec3& dr_n, const Vec3& dv_n, const Vec3& psi) {
@@ -59,9 +60,11 @@ void Strapdown::correct(const Vec3& dr_n, const Vec3& dv_n, const Vec3& psi) {
     earth_->radii(state_.lat, M, N);
     state_.lat -= dr_n.x() / (M + state_.h);
     state_.lon -= dr_n.y() / ((N + state_.h) * std::cos(state_.lat));
-    state_.h += dr_n.z();  // δD = −δh
+    // δD = −δh; the held channel's height and v_D are the reference's, whatever the filter says
+    if (options_.vertical != VerticalChannel::Held) state_.h += dr_n.z();
   }
-  state_.v_n -= dv_n;
+  state_.v_n.head<2>() -= dv_n.head<2>();
+  if (options_.vertical != VerticalChannel::Held) state_.v_n.z() -= dv_n.z();
   // C_nb = (I + [ψ×]) Ĉ_nb to first order; the exact rotation keeps q_nb a unit quaternion.
   state_.q_nb = (quatFromRotationVector(psi) * state_.q_nb).normalized();
 }
@@ -91,9 +94,12 @@ void Strapdown::update(const ImuSample& imu, double hRef) {
   Vec3 v_mid = v0 + 0.5 * (C_nb * imu.dv_b + gcc_n_ * dt);
   double h_mid;
   if (vc == VerticalChannel::Held) {
-    // The interval's mean vertical velocity: v_D(t_{k-½}) + O(h²).
-    v_mid.z() = -(hRef - h0) / dt;
-    h_mid = 0.5 * (h0 + hRef);
+    // The interval's mean vertical velocity, v_D(t_{k-½}) + O(h²), from the references alone: the
+    // state's own height may differ from the reference (an initial height error, a filter's
+    // correction) and a difference with it would be a one-step vertical velocity of (δh / dt),
+    // whose Coriolis term kicks the horizontal channels (500 m at 100 Hz: 5.6 cm/s east at 40° N).
+    v_mid.z() = -(hRef - hRefPrev_) / dt;
+    h_mid = 0.5 * (hRefPrev_ + hRef);
   } else {
     h_mid = h0 - 0.25 * dt * (v0.z() + v_mid.z());
   }

@@ -55,8 +55,12 @@ inline Vec3 specificForceIncrementTwoSample(const Vec3& dtheta_prev_b, const Vec
 class Strapdown {
  public:
   /// Starts from `initial` (q_nb is normalised). The Earth object must outlive the Strapdown.
-  /// Throws InputError for a non-finite initial state or a non-positive damping time constant.
-  Strapdown(const Earth& earth, const NavState& initial, const StrapdownOptions& options = {});
+  /// hRef0 [m] is the reference height at the initial time, which the Held channel differences
+  /// for its first v_D; NaN: the initial state's height (give it when that height carries an
+  /// error). Throws InputError for a non-finite initial state or a non-positive damping time
+  /// constant.
+  Strapdown(const Earth& earth, const NavState& initial, const StrapdownOptions& options = {},
+            double hRef0 = NAN);
 
   /// Advances the state over one IMU interval (imu.dt > 0 [s]; the coning and sculling terms
   /// assume equal successive intervals). hRef [m] is the reference height at the end of the
@@ -66,7 +70,8 @@ class Strapdown {
 
   /// Closed-loop feedback of an aiding filter: removes estimated errors from the state. δr_n =
   /// [δN, δE, δD] [m], δv_n [m/s] (navigated − true) and the attitude error ψ [rad] with
-  /// Ĉ_nb = (I − [ψ×]) C_nb (nav/ins_error_model.hpp). Throws InputError for non-finite input.
+  /// Ĉ_nb = (I − [ψ×]) C_nb (nav/ins_error_model.hpp). The Held channel keeps its height and v_D
+  /// (the reference's): δD and δv_D are not applied. Throws InputError for non-finite input.
   void correct(const Vec3& dr_n, const Vec3& dv_n, const Vec3& psi);
 
   const NavState& state() const { return state_; }

@@ -54,8 +54,10 @@ Bias meanBias(const std::vector<ImuEpoch>& head) {
 
 bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sink) {
   const nav::Earth& earth = sharedEarth();
-  nav::Strapdown strapdown(
-      earth, opt.aiding ? opt.aiding->start(source.initial()) : source.initial(), opt.strapdown);
+  // The truth's height is the held / damped channels' first reference (an initial height error
+  // is the navigated state's, not the reference's).
+  nav::Strapdown strapdown(earth, opt.aiding ? opt.aiding->start(source.initial()) : source.initial(),
+                           opt.strapdown, source.initial().h);
   ImuEpoch e;
   e.hasTruth = true;
   e.truth = source.initial();

@@ -150,3 +150,43 @@ TEST_CASE("strapdown refuses bad input with InputError") {
   bad.v_n.x() = NAN;
   CHECK_THROWS_AS(Strapdown(earth, bad), sinsim::InputError);
 }
+
+TEST_CASE("held vertical channel: an initial height error or a filter's height correction moves no horizontal channel") {
+  // At rest with the exact static IMU the navigated state must stay at the truth. The held
+  // channel sets the height to the reference; its vertical velocity must come from the references
+  // alone. Differenced against the state's own height, a 500 m initial error is a one-step
+  // v_D of 5e4 m/s at 100 Hz, whose Coriolis term 2 Ω cos φ v_D dt kicks v_E by 5.6 cm/s at 40° N
+  // and a Schuler oscillation of ~45 m follows (the defect this test guards).
+  const Earth earth;
+  const double lat = 40.0 * kDeg, href = 600.0, dt = 0.01;
+  NavState s0;
+  s0.lat = lat;
+  s0.h = href + 500.0;
+  Strapdown ins(earth, s0, {VerticalChannel::Held, 100.0}, href);
+  const ImuSample imu0 = staticSample(earth, lat, href, s0.q_nb, dt);
+  ImuSample imu = imu0;
+  double worstV = 0.0, worstLat = 0.0, worstLon = 0.0;
+  for (long k = 1; k <= 60000; ++k) {
+    imu.t = k * dt;
+    if (k == 30000) ins.correct(Vec3(0.0, 0.0, 7.0), Vec3(0.0, 0.0, 2.0), Vec3::Zero());
+    ins.update(imu, href);
+    CHECK(ins.state().h == href);
+    worstV = std::max(worstV, ins.state().v_n.norm());
+    worstLat = std::max(worstLat, std::abs(ins.state().lat - lat));
+    worstLon = std::max(worstLon, std::abs(ins.state().lon));
+  }
+  double M = 0.0, N = 0.0;
+  earth.radii(lat, M, N);
+  std::printf("held channel, 500 m initial height error and a 7 m correction: worst |v| %.3g m/s, "
+              "north %.3g m, east %.3g m over 600 s\n",
+              worstV, worstLat * M, worstLon * N * std::cos(lat));
+  CHECK(worstV < 1e-6);
+  CHECK(worstLat * M < 1e-4);
+  CHECK(worstLon * N * std::cos(lat) < 1e-4);
+  // The correction's horizontal parts are applied, the vertical ones are not.
+  ins.correct(Vec3(0.0, 0.0, 3.0), Vec3(0.5, -0.25, 1.0), Vec3::Zero());
+  CHECK(ins.state().h == href);
+  CHECK(ins.state().v_n.x() == Approx(-0.5).margin(1e-6));
+  CHECK(ins.state().v_n.y() == Approx(0.25).margin(1e-6));
+  CHECK(std::abs(ins.state().v_n.z()) < 1e-6);
+}
