@@ -136,7 +136,8 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   c->add_option("-o,--output", a->output, "improved model file (default MODEL.improved.yaml)");
   c->add_option("--json", a->json, "write the diagnosis as JSON");
   c->add_option("--html", a->html, "write a self-contained HTML report");
-  c->add_option("--channels", a->channels, "channels to diagnose (gx gy gz ax ay az; default all)");
+  c->add_option("--channels", a->channels, "channels to diagnose (gx gy gz ax ay az, by blanks or commas; default all)")
+      ->delimiter(',');
   addRecordOptions(c, a->record);
   c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
   c->add_option("--seed", a->seed, "seed of the realisations");

@@ -236,7 +236,7 @@ int runMc(const Args& a) {
     }();
     endProgressLine();
     printBatch(batch, size);
-    return batch.result.complete ? 0 : 130;
+    return batch.result.complete ? 0 : interruptedExitCode();
   } catch (...) {
 #ifdef SINSIM_HAVE_MPI
     if (size > 1) {

@@ -1,6 +1,7 @@
 // sinsim — strapdown INS simulator and inertial-sensor error-model lab.
 // Exit codes: 0 success, 1 bad input or failed run (message on stderr), 2 bad command line,
-// 130 interrupted (Ctrl-C).
+// 130 interrupted (Ctrl-C), 143 stopped by SIGTERM (the same clean stop).
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <csignal>
@@ -53,12 +54,25 @@ int main(int argc, char** argv) {
     std::cerr << "sinsim: error: " << option << ": an empty value on the command line\n";
     return 2;
   }
-  // CLI11 reads an unsigned integer beyond 2^64 - 1 as 2^64 - 1 (and "-1" as 2^64 - 1): a seed or
-  // run index must be the number given.
-  for (int k = 1; k + 1 < argc; ++k) {
-    const std::string opt = argv[k];
-    if (opt != "--seed" && opt != "--run") continue;
-    const std::string v = argv[k + 1];
+  // CLI11 reads an unsigned integer beyond 2^64 - 1 as 2^64 - 1 (and "-5" as 2^64 - 5): a seed, a
+  // run index or a count must be the number given (`mc --runs -5` said "18446744073709551611 is
+  // above the limit"). Both `--opt V` and `--opt=V`.
+  static const char* const kUnsigned[] = {"--seed", "--run", "--runs", "--realisations",
+                                          "--nav-runs", "--stop-after"};
+  for (int k = 1; k < argc; ++k) {
+    std::string opt = argv[k], v;
+    const std::size_t eq = opt.find('=');
+    if (opt.rfind("--", 0) == 0 && eq != std::string::npos) {
+      v = opt.substr(eq + 1);
+      opt = opt.substr(0, eq);
+    } else if (k + 1 < argc) {
+      v = argv[k + 1];
+    } else {
+      continue;
+    }
+    if (std::find_if(std::begin(kUnsigned), std::end(kUnsigned),
+                     [&](const char* o) { return opt == o; }) == std::end(kUnsigned))
+      continue;
     errno = 0;
     char* end = nullptr;
     const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
@@ -85,7 +99,7 @@ int main(int argc, char** argv) {
   } catch (const sinsim::Interrupted&) {
     // Every writer is atomic and was unwound: nothing half-written is left behind.
     std::cerr << sinsim::cli::interruptedMessage(command) << "no output was written\n";
-    return 130;
+    return sinsim::cli::interruptedExitCode();
   } catch (const sinsim::Error& e) {
     std::cerr << "sinsim: error: " << e.what() << "\n";
     return 1;

@@ -20,6 +20,7 @@ using Clock = std::chrono::steady_clock;
 
 // Written by the signal handler: lock-free atomics only.
 std::atomic<long long> gFirstSigintMs{0};
+std::atomic<int> gSignal{0};  // the first stopping signal (SIGINT or SIGTERM)
 
 long long monotonicMs() {  // async-signal-safe (clock_gettime is)
   timespec ts{};
@@ -27,9 +28,10 @@ long long monotonicMs() {  // async-signal-safe (clock_gettime is)
   return static_cast<long long>(ts.tv_sec) * 1000 + ts.tv_nsec / 1000000;
 }
 
-extern "C" void onSigint(int) {
+extern "C" void onSigint(int sig) {
   const long long now = monotonicMs();
   if (!progress::interruptFlag().exchange(true)) {
+    gSignal.store(sig);
     gFirstSigintMs.store(now);
     return;
   }
@@ -37,7 +39,7 @@ extern "C" void onSigint(int) {
   static const char msg[] = "\nsinsim: interrupted twice: stopped at once\n";
   const ssize_t ignored = ::write(2, msg, sizeof msg - 1);
   (void)ignored;
-  ::_exit(130);
+  ::_exit(128 + sig);
 }
 
 std::atomic<bool> gLineEnabled{true};
@@ -102,6 +104,7 @@ void drawLines(const std::string& command) {
 
 LongWork::LongWork(std::string command) : command_(std::move(command)) {
   std::signal(SIGINT, onSigint);
+  std::signal(SIGTERM, onSigint);  // `kill`, `timeout`, a batch system: the same clean stop
   gStop.store(false);
   if (::isatty(1) && ::isatty(2)) line_ = std::thread(drawLines, command_);
 }
@@ -115,6 +118,7 @@ LongWork::~LongWork() {
   if (line_.joinable()) line_.join();
   eraseLine();
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
 }
 
 void endProgressLine() {
@@ -123,7 +127,10 @@ void endProgressLine() {
 }
 
 std::string interruptedMessage(const std::string& command) {
-  return "sinsim " + command + ": interrupted (Ctrl-C); ";
+  return "sinsim " + command + ": interrupted (" + (gSignal.load() == SIGTERM ? "SIGTERM" : "Ctrl-C") +
+         "); ";
 }
+
+int interruptedExitCode() { return 128 + (gSignal.load() == SIGTERM ? SIGTERM : SIGINT); }
 
 }  // namespace sinsim::cli

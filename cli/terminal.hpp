@@ -1,6 +1,6 @@
 // The command line's side of long work (common/progress.hpp): Ctrl-C and the progress line.
 //
-// - SIGINT sets progress::interruptFlag(); the work stops at its next checkpoint and main()
+// - SIGINT (and SIGTERM, alike) sets progress::interruptFlag(); the work stops at its next checkpoint and main()
 //   prints a clear message and exits 130. A SIGINT arriving within 1 s of the first counts as the
 //   same one: `timeout -s INT` and a terminal's Ctrl-C under some launchers deliver it to the
 //   process and to its group, i.e. twice. A second Ctrl-C after that stops at once (exit 130).
@@ -31,7 +31,11 @@ class LongWork {
 /// `--no-progress`.
 void endProgressLine();
 
-/// "sinsim CMD: interrupted (Ctrl-C); " — the start of every interruption message.
+/// "sinsim CMD: interrupted (Ctrl-C); " (or "(SIGTERM)") — the start of every interruption
+/// message.
 std::string interruptedMessage(const std::string& command);
+
+/// 130 after Ctrl-C (SIGINT), 143 after SIGTERM: the shell's 128 + signal.
+int interruptedExitCode();
 
 }  // namespace sinsim::cli

@@ -45,12 +45,13 @@ void requireFiniteRow(std::initializer_list<double> row, double t, const char* w
 }
 
 // 12 decimals of a degree are 0.1 µm on the ground: the CSV does not hide sub-millimetre drifts.
+// Longitudes in (−180°, 180°], the truth's as the navigated one's (the motion's own is unwrapped).
 void writeState(std::FILE* f, const nav::NavState& s) {
   const nav::Vec3 e = nav::eulerFromQuat(s.q_nb) * kDegPerRad;
   requireFiniteRow({s.lat, s.lon, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z()}, s.t,
                    "navigation state");
   std::fprintf(f, "%.6f,%.12f,%.12f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f,%.9f\n", s.t, s.lat * kDegPerRad,
-               s.lon * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
+               nav::wrapAngle(s.lon) * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
 }
 
 void writeError(std::FILE* f, const NavError& e) {

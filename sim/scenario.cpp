@@ -26,7 +26,9 @@ void parseStart(const ConfigNode& root, Scenario& sc) {
     s["latitude"].check(std::abs(m.lat) <= limits::kMaxLatitude,
                         "expected a latitude within ±89 deg (the NED frame is singular at the poles)");
   m.lon = s.quantity("longitude", D::angle());
-  if (std::isfinite(m.lon)) m.lon = nav::wrapAngle(m.lon);
+  if (std::isfinite(m.lon) &&
+      s["longitude"].check(std::abs(m.lon) <= 2.0 * kPi, "expected a longitude within ±360 deg"))
+    m.lon = nav::wrapAngle(m.lon);  // the outputs' (−180°, 180°]
   m.h = s.quantity("height", D::length(), 0.0);
   if (std::isfinite(m.h))
     s["height"].check(m.h >= limits::kMinHeight && m.h <= limits::kMaxHeight,
@@ -42,7 +44,7 @@ void parseStart(const ConfigNode& root, Scenario& sc) {
   m.roll = att.quantity("roll", D::angle(), 0.0);
   m.pitch = att.quantity("pitch", D::angle(), 0.0);
   if (std::isfinite(m.pitch))
-    att["pitch"].check(std::abs(m.pitch) < 90.0 * kRadPerDeg, "expected a pitch within ±90 deg");
+    att["pitch"].check(std::abs(m.pitch) < 90.0 * kRadPerDeg, "expected a pitch strictly between -90 and 90 deg (the Euler angles are singular at ±90)");
   if (att.has("yaw") && s.has("heading")) {
     att["yaw"].error("give the heading or attitude.yaw, not both");
   }

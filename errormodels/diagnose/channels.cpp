@@ -10,9 +10,9 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
-int channelIndex(const std::string& name) {
+int channelIndex(const std::string& name, const std::string& where) {
   if (const auto c = findChannel(name)) return *c;
-  throw InputError("--channels: unknown channel \"" + name + "\" (known: " + kChannelList + ")");
+  throw InputError(where + ": unknown channel \"" + name + "\" (known: " + kChannelList + ")");
 }
 
 namespace {

@@ -16,7 +16,8 @@ namespace sinsim::errormodels::diagnose::detail {
 inline constexpr std::array<const char*, 6> kChannels{
     kRecordChannels[0].name, kRecordChannels[1].name, kRecordChannels[2].name,
     kRecordChannels[3].name, kRecordChannels[4].name, kRecordChannels[5].name};
-int channelIndex(const std::string& name);           // InputError for an unknown name
+// InputError for an unknown name, led by `where` (the option that named it)
+int channelIndex(const std::string& name, const std::string& where = "--channels");
 inline bool isGyro(int c) { return kRecordChannels[c].sensor == Sensor::gyro; }
 inline const char* sensorName(int c) { return errormodels::sensorName(kRecordChannels[c].sensor); }
 inline const char* axisName(int c) {

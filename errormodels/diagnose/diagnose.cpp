@@ -42,7 +42,7 @@ AddRequest AddRequest::parse(const std::string& text) {
   r.effect = text.substr(0, colon);
   if (colon != std::string::npos) {
     r.channel = text.substr(colon + 1);
-    channelIndex(r.channel);
+    channelIndex(r.channel, "--add " + text);
   }
   const auto& known = detectableEffects();
   if (r.effect != "found" && std::find(known.begin(), known.end(), r.effect) == known.end()) {

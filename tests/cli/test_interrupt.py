@@ -5,6 +5,7 @@ test waits (tens of seconds to hours on this machine), then interrupted the way 
 does it: one SIGINT to the process and the same one to its group, i.e. delivered twice within
 microseconds. It must count once: a clear message naming the command, exit code 130, and no
 output file — not even a temporary — left behind (mc: the finished chunks kept, their count right).
+SIGTERM stops `run` the same way, with exit code 143.
 """
 import os
 import pathlib
@@ -123,6 +124,26 @@ def test_ctrl_c_fit(tmp_path):
 
 def test_ctrl_c_diagnose(tmp_path):
     check_ctrl_c_stops_with_a_message_and_no_output(tmp_path, "diagnose")
+
+
+def test_sigterm_stops_run_the_same_way_with_143(tmp_path):
+    """`kill`, `timeout` and batch systems send SIGTERM: the same clean stop as Ctrl-C (before,
+    the default action killed the run and left its hidden temporaries in the new folder)."""
+    (tmp_path / "out").mkdir()
+    _, argv, outputs = next(c for c in commands(tmp_path) if c[0] == "run")
+    proc = start(argv, tmp_path)
+    deadline = time.time() + 30
+    while time.time() < deadline and proc.poll() is None and not catches_sigint(proc.pid):
+        time.sleep(0.005)
+    time.sleep(0.3)
+    assert proc.poll() is None, "the command ended before it could be stopped"
+    os.kill(proc.pid, signal.SIGTERM)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 143, err
+    assert "sinsim run: interrupted (SIGTERM); no output was written" in err
+    for o in outputs:
+        assert not o.exists(), o
+    assert leftovers(tmp_path / "out") == []
 
 
 def test_mc_ctrl_c_keeps_whole_chunks_and_counts_them(tmp_path):

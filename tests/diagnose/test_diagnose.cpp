@@ -370,7 +370,7 @@ TEST_CASE("the improved model file loads and its JSON carries before and after",
 
 TEST_CASE("bad requests are refused with a clear message", "[diagnose]") {
   CHECK_THROWS_WITH(dg::AddRequest::parse("jitter"), Catch::Contains("can add: quantization"));
-  CHECK_THROWS_WITH(dg::AddRequest::parse("ramp:gq"), Catch::Contains("unknown channel"));
+  CHECK_THROWS_WITH(dg::AddRequest::parse("ramp:gq"), Catch::Contains("--add ramp:gq: unknown channel \"gq\""));
   const auto r = record("", 201);
   auto o = options();
   o.realisations = 4;

@@ -123,6 +123,21 @@ TEST_CASE("sinsim run: a good scenario, overrides, and a bad model or option") {
 
   r = sinsim("run " + scenario + " --seed minus-one", tmp);
   CHECK(r.exitCode == 2);  // command-line error (CLI11)
+
+  // A negative count is no huge one: CLI11 alone read "-5" as 2^64 - 5.
+  for (const char* args : {"mc SC --runs -5", "mc SC --runs=-5", "mc SC --runs 2 --stop-after -1",
+                           "diagnose rec.csv --model m.yaml --realisations -4",
+                           "diagnose rec.csv --model m.yaml --nav-runs=-3"}) {
+    std::string a = args;
+    const std::size_t at = a.find("SC");
+    if (at != std::string::npos) a.replace(at, 2, scenario);
+    r = sinsim(a + " -o '" + (tmp / "c").string() + "'", tmp);
+    INFO(a << "\nstderr: " << r.err);
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find("expected an integer from 0 to 18446744073709551615, got \"-") != std::string::npos);
+    CHECK(r.err.find("18446744073709551611") == std::string::npos);
+    CHECK_FALSE(fs::exists(tmp / "c"));
+  }
   fs::remove_all(tmp);
 }
 

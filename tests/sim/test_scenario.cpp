@@ -236,3 +236,20 @@ TEST_CASE("One TemperatureProfile for synth's --temperature: constant, ramp, CSV
   CHECK(t.at(5.0) == Approx(298.15).margin(1e-12));
   CHECK_THROWS_AS(sim::temperatureFromText("hot", 100.0), InputError);
 }
+
+TEST_CASE("bad scenario: a longitude beyond ±360 deg and a pitch of 90 deg are refused, located") {
+  const auto ds = problems(R"(start:
+  latitude: 45 deg
+  longitude: 540 deg
+  attitude: {pitch: 90 deg}
+segments: [{type: static, duration: 10 s}]
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 3, "start.longitude", "expected a longitude within ±360 deg"));
+  CHECK(has(ds, 4, "start.attitude.pitch", "strictly between -90 and 90 deg"));
+  // 0–360° longitudes are read modulo 360° (the same place).
+  const sim::Scenario sc = sim::parseScenario(R"(start: {latitude: 45 deg, longitude: 200 deg}
+segments: [{type: static, duration: 10 s}]
+)", "lon.yaml");
+  CHECK(sc.start.lon * 180.0 / kPi == Approx(-160.0).epsilon(1e-12));
+}
