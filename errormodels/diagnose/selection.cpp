@@ -457,6 +457,16 @@ bool temperatureImitates(const ChannelWork& w, double penalty, const Trials& t, 
   return false;
 }
 
+/// Whether a candidate has a shape a thermal drift can take in time, and so may only imitate the
+/// temperature: the smooth ones (a warm-up, a ramp, the slow noises). A level step, a line,
+/// spikes, a lattice or white noise are no drift's shape: where one of them explains more than the
+/// temperature it is taken first, and the temperature is tried on what it leaves (a bias step
+/// under a warming chamber: the temperature's polynomial took part of the step, a walk the rest).
+bool thermalShape(const Candidate& c) {
+  static const char* const kNot[] = {"bias_jumps", "sinusoid", "outliers", "quantization", "white"};
+  return std::none_of(std::begin(kNot), std::end(kNot), [&](const char* e) { return c.effect == e; });
+}
+
 /// The open candidate of the largest drop in the last trial round whose effect is (`is`) or is not
 /// `effect`; -1 when there is none.
 std::ptrdiff_t bestOpen(const ChannelWork& w, const Trials& t, const std::string& effect, bool is) {
@@ -612,13 +622,16 @@ void selectFindings(ChannelWork& w, double first, double next) {
   // warm-up, a ramp or a random walk can imitate; when the temperature passes the threshold it is
   // taken before them, and they are tried on what it leaves -- unless it only imitates a noise
   // that passes too (temperatureImitates: a column no drift follows); the round then takes the
-  // best other candidate. A round after an accepted signal tries it again on the record without
+  // best other candidate. A candidate of no thermal shape (thermalShape) that explains more is
+  // taken before it. A round after an accepted signal tries it again on the record without
   // that signal (spikes hide a thermal drift).
   for (;;) {
     const double threshold = w.accepted.empty() ? first : next;
     std::ptrdiff_t best = trialRound(w, penalty, t);
     const std::ptrdiff_t temp = bestOpen(w, t, "temperature", true);
-    if (temp >= 0 && t.drop[std::size_t(temp)] >= threshold * threshold)
+    if (temp >= 0 && t.drop[std::size_t(temp)] >= threshold * threshold &&
+        !(best >= 0 && !thermalShape(w.cands[std::size_t(best)]) &&
+          t.drop[std::size_t(best)] > t.drop[std::size_t(temp)]))
       best = temperatureImitates(w, penalty, t, std::size_t(temp), threshold, next)
                  ? bestOpen(w, t, "temperature", false)
                  : temp;

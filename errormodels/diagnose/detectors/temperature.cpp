@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -45,6 +46,33 @@ void describeTemperature(const std::vector<double>& coef, double T0, const Units
   f.params["T0"] = T0;
 }
 
+/// Where the record's temperature is itself a smooth curve in time (a warming, a chamber's ramp: a
+/// quadratic in time, or a settling 1 + e^(-t/tau) for some tau, explains >= 98 % of its block
+/// means' variance), a drift in time — a ramp or a warm-up — fits the channel alike: the note says
+/// so, since no statistic of this record can tell them apart (a blind probe's ramps and warm-ups
+/// under a warming were named temperature in 11 of 24 records). Empty otherwise.
+std::string timeLikeNote(const BlockMeans& temp) {
+  const std::size_t nb = temp.m.size();
+  Eigen::VectorXd tv(static_cast<Eigen::Index>(nb));
+  for (std::size_t j = 0; j < nb; ++j) tv(Eigen::Index(j)) = temp.m[j];
+  const double tot = (tv.array() - tv.mean()).square().sum();
+  if (!(tot > 0)) return "";
+  auto explained = [&](int columns, const std::function<double(double, int)>& column) {
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), columns);
+    for (std::size_t j = 0; j < nb; ++j)
+      for (int c = 0; c < columns; ++c) X(Eigen::Index(j), c) = column((double(j) + 0.5) / double(nb), c);
+    Eigen::VectorXd beta;
+    return 1.0 - leastSquares(X, tv, beta) / tot;
+  };
+  double best = explained(3, [](double s, int c) { return std::pow(s, c); });
+  for (double f = 0.02; f <= 2.0; f *= 1.25)
+    best = std::max(best, explained(2, [f](double s, int c) { return c == 0 ? 1.0 : std::exp(-s / f); }));
+  if (!(best >= 0.98)) return "";
+  return "; the temperature itself follows a smooth curve in time (" + num(100 * best, 3) +
+         " % of it), so a drift in time (a ramp or a warm-up) would fit alike: only a record whose "
+         "temperature goes up and down tells them apart";
+}
+
 }  // namespace
 
 std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
@@ -83,6 +111,7 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
     }
     zCurvature = regressorTestGivenModel(ctx, q, 1, beside);
   }
+  const std::string confounded = timeLikeNote(temp);
   for (int degree = 1; degree <= 2; ++degree) {
     // Beside the signals already taken out, their regressors are fitted with it (joint sizes).
     Eigen::MatrixXd X(static_cast<Eigen::Index>(nb), Eigen::Index(degree + 1 + int(ctx.takenBlocks.size())));
@@ -118,7 +147,7 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
       };
     c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
                  num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
-                 " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance";
+                 " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance" + confounded;
     const Dimension signalDim = ctx.signal;
     c.describe = [coef, T0, u, signalDim](double, Finding& f) { describeTemperature(coef, T0, u, signalDim, f); };
     out.push_back(c);
