@@ -49,10 +49,16 @@ std::vector<ChannelStats> analyzeRecord(const errormodels::Record& record,
 /// curve has not reached that slope). NaN when the curve is empty.
 struct NoiseTerms {
   double N = NAN;     // white noise density (ARW / VRW) [unit·√s]
+  double tauN = NAN;  // τ where N is read [s]: the shortest, or where the slope is nearest −½
+  double shortSlope = NAN;  // log-log slope between the two shortest τ (white: −½)
   double B = NAN;     // bias instability [unit]
   double tauB = NAN;  // τ of the minimum [s]
   double K = NAN;     // rate random walk [unit/√s]
 };
+/// N is read at the shortest τ unless the curve's slope there is more than 0.1 from white noise's
+/// −½ (a sensor's low-pass filter flattens or even raises it and under-reads N by a factor;
+/// quantization steepens it): then where the slope between neighbouring points is nearest −½,
+/// before the Allan minimum.
 NoiseTerms readNoiseTerms(const errormodels::AllanCurve& allan);
 
 /// The datasheet units of a channel: gyros deg/h, deg/√h, deg/h/√h; accelerometers µg, m/s/√h,

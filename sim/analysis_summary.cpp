@@ -9,11 +9,45 @@
 
 namespace sinsim::sim {
 
+// How far the shortest tau's slope may be from white noise's −½ before N is read elsewhere, and
+// how near an octave's slope must be to count as white noise's there.
+constexpr double kWhiteSlopeTolerance = 0.1;
+constexpr double kWhiteSlopeFound = 0.05;
+
 NoiseTerms readNoiseTerms(const errormodels::AllanCurve& a) {
   NoiseTerms t;
   if (a.size() == 0) return t;
   t.N = a.dev.front() * std::sqrt(a.tau.front());
+  t.tauN = a.tau.front();
   const auto k = std::size_t(std::min_element(a.dev.begin(), a.dev.end()) - a.dev.begin());
+  // The slope over an octave from point i (the curve's points may be dense: neighbours' slopes
+  // scatter), and the end point of that octave.
+  auto octaveEnd = [&](std::size_t i) {
+    std::size_t j = i + 1;
+    while (j + 1 < a.size() && a.tau[j] < 2.0 * a.tau[i]) ++j;
+    return j;
+  };
+  auto slope = [&](std::size_t i) {
+    const std::size_t j = octaveEnd(i);
+    return std::log(a.dev[j] / a.dev[i]) / std::log(a.tau[j] / a.tau[i]);
+  };
+  auto positive = [&](std::size_t i) { return a.dev[i] > 0 && a.dev[octaveEnd(i)] > 0; };
+  if (a.size() > 1 && positive(0)) t.shortSlope = slope(0);
+  if (std::fabs(t.shortSlope + 0.5) > kWhiteSlopeTolerance) {
+    // The first octave, from the short end up to the Allan minimum, whose slope is white noise's;
+    // else the one nearest it.
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < k && octaveEnd(i) <= k; ++i) {
+      if (!positive(i)) continue;
+      if (std::fabs(slope(i) + 0.5) < std::fabs(slope(best) + 0.5)) best = i;
+      if (std::fabs(slope(i) + 0.5) <= kWhiteSlopeFound) break;
+    }
+    if (best > 0) {
+      const std::size_t j = octaveEnd(best);
+      t.tauN = std::sqrt(a.tau[best] * a.tau[j]);
+      t.N = std::sqrt(a.dev[best] * a.dev[j]) * std::sqrt(t.tauN);
+    }
+  }
   t.B = a.dev[k] / 0.664;
   t.tauB = a.tau[k];
   t.K = a.dev.back() * std::sqrt(3.0 / a.tau.back());
@@ -32,7 +66,7 @@ DatasheetUnits datasheetUnits(bool gyro) {
 
 std::string analysisSummary(const std::vector<ChannelStats>& stats) {
   std::string out =
-      "channel  mean            sd              white N (shortest tau)  Allan minimum (B = min/0.664)\n";
+      "channel  mean            sd              white N (at tau)               Allan minimum (B = min/0.664)\n";
   char line[256];
   for (const ChannelStats& c : stats) {
     // Datasheet units: deg/h and deg/sqrt(h) for gyros, ug and m/s/sqrt(h) for accelerometers.
@@ -40,7 +74,7 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
     const NoiseTerms t = readNoiseTerms(c.allan);
     std::string N = "-", B = "-";
     if (c.allan.size() > 0 && !c.constant) {
-      std::snprintf(line, sizeof line, "%.4g %s", t.N * u.density, u.densityUnit.c_str());
+      std::snprintf(line, sizeof line, "%.4g %s at %.3g s", t.N * u.density, u.densityUnit.c_str(), t.tauN);
       N = line;
       std::snprintf(line, sizeof line, "%.4g %s at %.3g s", t.B * u.level, u.levelUnit.c_str(), t.tauB);
       B = line;
@@ -50,7 +84,7 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
     const double m = c.mean * u.level, d = c.sd * u.level;
     std::snprintf(mean, sizeof mean, std::fabs(m) >= 1e5 ? "%.0f %s" : "%.6g %s", m, u.levelUnit.c_str());
     std::snprintf(sd, sizeof sd, std::fabs(d) >= 1e4 ? "%.0f %s" : "%.4g %s", d, u.levelUnit.c_str());
-    std::snprintf(line, sizeof line, "%-8s %-15s %-15s %-22s %s\n", c.name.c_str(), mean, sd,
+    std::snprintf(line, sizeof line, "%-8s %-15s %-15s %-30s %s\n", c.name.c_str(), mean, sd,
                   N.c_str(), B.c_str());
     out += line;
   }
@@ -63,6 +97,15 @@ std::vector<std::string> analysisWarnings(const std::vector<ChannelStats>& stats
   std::vector<std::string> out;
   char value[64];
   for (const ChannelStats& c : stats) {
+    const NoiseTerms t = readNoiseTerms(c.allan);
+    if (!c.constant && c.allan.size() > 0 && t.tauN > c.allan.tau.front()) {
+      const bool filtered = t.shortSlope > -0.5;
+      std::snprintf(value, sizeof value, "slope %.2f; N read at %.3g s", t.shortSlope, t.tauN);
+      out.push_back("channel " + c.name + ": the Allan deviation at the shortest tau is not white noise's (" + value +
+                    ", where the slope is nearest -1/2): " +
+                    (filtered ? "a low-pass filter in the sensor under-reads the white noise there"
+                              : "quantization or another fast noise over-reads the white noise there"));
+    }
     if (!c.constant) continue;
     std::snprintf(value, sizeof value, "%.9g %s", c.mean, c.unit_si.c_str());
     out.push_back("channel " + c.name + " is constant (" + value +
