@@ -122,7 +122,15 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
     for (std::size_t d = 0; d < r.lowFreq.size() && d < w.lowFreqVar.size(); ++d)
       w.lowFreqVar[d] += r.lowFreq[d] * r.lowFreq[d] / double(real.size());
   if (auto a = baseAr(model, c, record.rate_hz)) {
-    if (y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
+    // The AR's residuals are white only where the AR is the channel's whole noise: beside a
+    // quantization, a GM, a walk or a line A(q) colours that noise, and the test rejected models
+    // that fit (p ~ 1e-175 beside "fits" on a blind probe's AR + quantization channels).
+    static const char* const kStatic[] = {"ar", "bias", "scale_factor", "misalignment", "g_sensitivity"};
+    const auto types = effectTypesOn(model, isGyro(c) ? Sensor::gyro : Sensor::accel, c % 3);
+    const bool alone = std::all_of(types.begin(), types.end(), [](const std::string& t) {
+      return std::any_of(std::begin(kStatic), std::end(kStatic), [&](const char* k) { return t == k; });
+    });
+    if (alone && y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
     w.arOrder = a->size() - 1;
   }
   const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
