@@ -167,13 +167,16 @@ Scenario parse(ConfigFile& file, const std::string& baseDir) {
   }
 
   const ConfigNode segs = root.require("segments");
+  const std::size_t problemsBefore = file.diagnostics().size();
   sc.segments = detail::readSegments(segs, sc.start, file);
+  // A refused segment leaves the scenario's length unknown: no follow-on "after the end" errors.
+  const double knownDuration = file.diagnostics().size() == problemsBefore ? sc.duration() : NAN;
 
   sc.temperature = readTemperature(root["temperature"], sc.duration());
-  sc.aiding = aided::parseAiding(root, baseDir, sc.duration(), sc.imuRate, sc.temperature.present);
+  sc.aiding = aided::parseAiding(root, baseDir, knownDuration, sc.imuRate, sc.temperature.present);
   checkAlignmentAtRest(root, sc);
   // A fix is applied at an IMU epoch: GNSS at 100 kHz with a 100 Hz IMU ran as if it were 100 Hz.
-  if (sc.aiding.gnss.enabled && std::isfinite(sc.imuRate) && sc.aiding.gnss.rate > sc.imuRate)
+  if (sc.aiding.gnss.enabled && std::isfinite(sc.imuRate) && sc.imuRate > 0.0 && sc.aiding.gnss.rate > sc.imuRate)
     root["gnss"]["rate"].error("GNSS at " + limits::fmt(sc.aiding.gnss.rate) +
                                " Hz is faster than the IMU (" + limits::fmt(sc.imuRate) +
                                " Hz): fixes are applied at IMU epochs");

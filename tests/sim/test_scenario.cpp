@@ -253,3 +253,30 @@ segments: [{type: static, duration: 10 s}]
 )", "lon.yaml");
   CHECK(sc.start.lon * 180.0 / kPi == Approx(-160.0).epsilon(1e-12));
 }
+
+TEST_CASE("bad scenario: a refused segment or rate makes no follow-on errors") {
+  // Found by a blind probe: a refused segment shortened the scenario, so an outage inside the
+  // intended run was reported "after the scenario's end"; a refused IMU rate was compared with the
+  // GNSS rate ("GNSS at 1 Hz is faster than the IMU (-100 Hz)").
+  const std::string aiding = R"(gnss:
+  rate: 1 Hz
+  position_sigma: [1 m, 1 m, 2 m]
+  outages: [[30 s, 40 s]]
+)";
+  auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments:
+  - {type: static, duration: 20 s}
+  - {type: climb, height_change: 10 m, duration: 10 s}
+  - {type: cruise, duration: 20 s}
+)" + aiding);
+  INFO(listing(ds));
+  CHECK(has(ds, 4, "segments[1]", "needs forward speed"));
+  CHECK(listing(ds).find("after the scenario's end") == std::string::npos);
+  ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+imu_rate: -100 Hz
+segments: [{type: static, duration: 50 s}]
+)" + aiding);
+  INFO(listing(ds));
+  CHECK(has(ds, 2, "imu_rate", "expected a rate of at least"));
+  CHECK(listing(ds).find("faster than the IMU") == std::string::npos);
+}
