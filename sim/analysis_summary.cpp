@@ -103,7 +103,7 @@ std::vector<std::string> analysisWarnings(const std::vector<ChannelStats>& stats
       std::snprintf(value, sizeof value, "slope %.2f; N read at %.3g s", t.shortSlope, t.tauN);
       out.push_back("channel " + c.name + ": the Allan deviation at the shortest tau is not white noise's (" + value +
                     ", where the slope is nearest -1/2): " +
-                    (filtered ? "a low-pass filter in the sensor under-reads the white noise there"
+                    (filtered ? "a low-pass filter in the sensor (or a correlated noise) under-reads the white noise there"
                               : "quantization or another fast noise over-reads the white noise there"));
     }
     if (!c.constant) continue;

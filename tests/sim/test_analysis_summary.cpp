@@ -59,5 +59,5 @@ TEST_CASE("analyze reads the white density where the Allan curve has white noise
   CHECK(f.N == Approx(kN).epsilon(0.05));
   const auto warnings = sim::analysisWarnings({filtered});
   REQUIRE(warnings.size() == 1);
-  CHECK_THAT(warnings[0], Catch::Contains("a low-pass filter in the sensor under-reads the white noise"));
+  CHECK_THAT(warnings[0], Catch::Contains("a low-pass filter in the sensor (or a correlated noise) under-reads the white noise"));
 }
