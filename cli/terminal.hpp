@@ -1,7 +1,7 @@
 // The command line's side of long work (common/progress.hpp): Ctrl-C and the progress line.
 //
-// - SIGINT (and SIGTERM, alike) sets progress::interruptFlag(); the work stops at its next checkpoint and main()
-//   prints a clear message and exits 130. A SIGINT arriving within 1 s of the first counts as the
+// - SIGINT (and SIGTERM, alike) sets progress::interruptFlag(); the work stops at its next
+//   checkpoint and main() prints a clear message and exits 130 (SIGTERM: 143). A SIGINT arriving within 1 s of the first counts as the
 //   same one: `timeout -s INT` and a terminal's Ctrl-C under some launchers deliver it to the
 //   process and to its group, i.e. twice. A second Ctrl-C after that stops at once (exit 130).
 // - The progress line: when stdout and stderr are both terminals, a line on stderr redrawn every

@@ -121,19 +121,19 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   for (const auto& r : real)
     for (std::size_t d = 0; d < r.lowFreq.size() && d < w.lowFreqVar.size(); ++d)
       w.lowFreqVar[d] += r.lowFreq[d] * r.lowFreq[d] / double(real.size());
+  const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
+  const auto modelEffects = effectTypesOn(model, sensor, c % 3);
   if (auto a = baseAr(model, c, record.rate_hz)) {
     // The AR's residuals are white only where the AR is the channel's whole noise: beside a
     // quantization, a GM, a walk or a line A(q) colours that noise, and the test rejected models
     // that fit (p ~ 1e-175 beside "fits" on a blind probe's AR + quantization channels).
     static const char* const kStatic[] = {"ar", "bias", "scale_factor", "misalignment", "g_sensitivity"};
-    const auto types = effectTypesOn(model, isGyro(c) ? Sensor::gyro : Sensor::accel, c % 3);
-    const bool alone = std::all_of(types.begin(), types.end(), [](const std::string& t) {
+    const bool alone = std::all_of(modelEffects.begin(), modelEffects.end(), [](const std::string& t) {
       return std::any_of(std::begin(kStatic), std::end(kStatic), [&](const char* k) { return t == k; });
     });
     if (alone && y.size() > o.ljungBoxLags + a->size() + 10) d.ljungBox = ljungBox(y, *a, o.ljungBoxLags);
     w.arOrder = a->size() - 1;
   }
-  const Sensor sensor = isGyro(c) ? Sensor::gyro : Sensor::accel;
   // Single-LSB steps are what rounding makes of a slow drift only where the noise does not dither
   // the rounding: the mean of a rounded signal follows its input once the noise sd is >= q/2
   // (Widrow & Kollar 2008, ch. 4: the bias falls as exp(-2 pi^2 sd^2 / q^2)); there a window mean
@@ -152,7 +152,6 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
       for (std::size_t k = 0; k < r.avar.size(); ++k) rounding[k] += (r.roundedAvar[k] - r.avar[k]) / double(real.size());
     }
   w.rounded = roundedScatter(real);
-  const auto modelEffects = effectTypesOn(model, sensor, c % 3);
   w.modelJumps = std::find(modelEffects.begin(), modelEffects.end(), "bias_jumps") != modelEffects.end();
   // The model's own lines count as taken: the record shows them, and the model has them.
   w.propose = [&record, c, lattice, &d, &setup, effects = modelEffects, rounding, own = modelLines(model, c)](

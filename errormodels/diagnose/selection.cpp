@@ -629,9 +629,10 @@ void selectFindings(ChannelWork& w, double first, double next) {
     const double threshold = w.accepted.empty() ? first : next;
     std::ptrdiff_t best = trialRound(w, penalty, t);
     const std::ptrdiff_t temp = bestOpen(w, t, "temperature", true);
-    if (temp >= 0 && t.drop[std::size_t(temp)] >= threshold * threshold &&
-        !(best >= 0 && !thermalShape(w.cands[std::size_t(best)]) &&
-          t.drop[std::size_t(best)] > t.drop[std::size_t(temp)]))
+    const bool tempPasses = temp >= 0 && t.drop[std::size_t(temp)] >= threshold * threshold;
+    const bool shapeAhead = tempPasses && best >= 0 && !thermalShape(w.cands[std::size_t(best)]) &&
+                            t.drop[std::size_t(best)] > t.drop[std::size_t(temp)];
+    if (tempPasses && !shapeAhead)
       best = temperatureImitates(w, penalty, t, std::size_t(temp), threshold, next)
                  ? bestOpen(w, t, "temperature", false)
                  : temp;

@@ -13,7 +13,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "../adis16405_records.hpp"
 #include "errormodels/identify.hpp"
@@ -188,6 +190,22 @@ TEST_CASE("ADIS16405 windows: the GM and latent models keep the record's short-t
     }
 }
 
+namespace {
+
+/// `fit` (auto, no skip) of one whole run's `axes`; nullopt, with a warning, where the data is absent.
+std::optional<Identification> identifyRun(const std::string& run, std::vector<std::string> axes) {
+  const std::string file = sinsim::test::adisDir() + run + ".csv.gz";
+  if (!std::ifstream(file)) {
+    WARN("ADIS16405 data not found: " << file << ": skipped");
+    return std::nullopt;
+  }
+  IdentifyOptions o;
+  o.axes = std::move(axes);
+  return identify(loadRecord(file, sinsim::test::adisOptions()), o);
+}
+
+}  // namespace
+
 // The AR + slow terms branch of `fit` (auto) on run 2's accelerometers, whose joint fit is scanned to
 // a start of ~5 s: with Burg on the record itself, the AR(20) carried the slow terms' power as its
 // low-frequency level, and the joint fit, which can lower that level only with the driving variance,
@@ -195,15 +213,9 @@ TEST_CASE("ADIS16405 windows: the GM and latent models keep the record's short-t
 // out of Burg's record (fit/ar_slow_fit.cpp slowTermsFilteredOut) 0.72x and 0.84x; asserted: every
 // accelerometer at >= 0.7x there (ay, whose fit starts at 2.56 s without that warning: 0.97x).
 TEST_CASE("ADIS16405 run 2: the AR + slow model near the record at one sample", "[identify][adis16405]") {
-  const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
-  if (!std::ifstream(dir + "run2.csv.gz")) {
-    WARN("ADIS16405 data not found in " << dir << ": skipped");
-    return;
-  }
-  IdentifyOptions o;
-  o.axes = {"ax", "ay", "az"};
-  const Identification id = identify(loadRecord(dir + "run2.csv.gz", sinsim::test::adisOptions()), o);
-  for (const auto& a : id.axes) {
+  const auto id = identifyRun("run2", {"ax", "ay", "az"});
+  if (!id) return;
+  for (const auto& a : id->axes) {
     REQUIRE(a.written.latent);
     REQUIRE(a.written.latent->model.arVariance > 0.0);
     REQUIRE(a.allan.tau.at(0) == Approx(0.01));
@@ -220,15 +232,9 @@ TEST_CASE("ADIS16405 run 2: the AR + slow model near the record at one sample", 
 // branch was more than 25 % off below its start). Asserted: within 10 % of the record from 0.04 s
 // to 2.56 s (the old model: 1.14-1.17x there).
 TEST_CASE("ADIS16405 run 1 gy: auto writes the terms consistent from an earlier start", "[identify][adis16405]") {
-  const std::string dir = std::string(SINSIM_SHARED_DIR) + "/data/adis16405/";
-  if (!std::ifstream(dir + "run1.csv.gz")) {
-    WARN("ADIS16405 data not found in " << dir << ": skipped");
-    return;
-  }
-  IdentifyOptions o;
-  o.axes = {"gy"};
-  const Identification id = identify(loadRecord(dir + "run1.csv.gz", sinsim::test::adisOptions()), o);
-  const auto& a = id.axis("gy");
+  const auto id = identifyRun("run1", {"gy"});
+  if (!id) return;
+  const auto& a = id->axis("gy");
   REQUIRE(a.written.latent);
   CHECK(a.written.latent->model.arVariance == 0.0);
   std::size_t tested = 0;
