@@ -54,7 +54,7 @@ void addRunCommand(CLI::App& app, Action& action) {
   cmd->add_option("scenario", args->scenario,
                   "Scenario YAML file (default: scenarios/car.yaml)");
   cmd->add_option("-o,--output", args->outDir,
-                  "Output folder for truth.csv, nav.csv, errors.csv, summary.json (filter.csv when aided, imu.csv with --imu) "
+                  "Output folder for truth.csv, nav.csv, errors.csv, summary.json (filter.csv with a filter, imu.csv with --imu) "
                   "(default: out/<scenario name>)");
   cmd->add_option("--seed", args->seed, "Seed of the sensor error realisation (overrides the "
                                         "scenario's seed:)");

@@ -313,7 +313,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
     j["measured"] = mj;
   }
 
-  if (!ref.aiding.inert()) j["aided"] = writeMcAidedOutputs(batch, out, files);
+  if (ref.aiding.filter.enabled) j["aided"] = writeMcAidedOutputs(batch, out, files);
 
   std::vector<std::string> names = files;
   names.push_back("summary.json");

@@ -141,8 +141,10 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     std::fputs(kStateHeader, fTruth);
     std::fputs(kStateHeader, fNav);
     std::fputs(kErrorHeader, fErr);
-    if (aiding) aided::writeFilterHeader(fFilter = out->open("filter.csv"));
-    if (aiding) aiding->writeFilterRows(fFilter);
+    if (aiding && sc.aiding.filter.enabled) {  // initial errors or an alignment alone: no filter rows
+      aided::writeFilterHeader(fFilter = out->open("filter.csv"));
+      aiding->writeFilterRows(fFilter);
+    }
     if (opt.writeImu) aided::writeImuHeader(fImu = out->open("imu.csv"));
   }
 

@@ -145,6 +145,22 @@ TEST_CASE("mc with the filter: run k is `run` k, and 1 and 2 threads give the sa
   CHECK(aidedMax < 6.0);
 }
 
+TEST_CASE("mc with initial errors but no filter writes no filter outputs") {
+  // Initial errors alone: nothing to aid, no filter epochs. Before, outages.csv and
+  // filter_consistency.csv were written with a header and no row, and summary.json had "aided".
+  const std::string text = std::string(kAided).substr(0, std::string(kAided).find("gnss:"));
+  const sim::Scenario sc = sim::parseScenario(text, "free-mc.yaml");
+  REQUIRE(sc.aiding.initialErrors.any());
+  const auto tmp = test::freshTempDir("sinsim-free-mc");
+  const sim::McResult r = batch(sim::buildReference(sc), sc, 1, tmp.string());
+  REQUIRE(r.complete);
+  CHECK(std::filesystem::exists(tmp / "stats.csv"));
+  CHECK_FALSE(std::filesystem::exists(tmp / "outages.csv"));
+  CHECK_FALSE(std::filesystem::exists(tmp / "filter_consistency.csv"));
+  const auto j = nlohmann::json::parse(test::slurp(tmp / "summary.json"));
+  CHECK_FALSE(j.contains("aided"));
+}
+
 TEST_CASE("mc with filter model = truth model (white + GM + random walk): NEES and NIS per epoch "
           "class inside their 99 % bands") {
   // The scenario above with a random walk added to truth and filter alike, 200 runs. mc writes,

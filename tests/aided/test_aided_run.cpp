@@ -2,6 +2,7 @@
 // errors, the GNSS/INS filter (typed model), outputs; and the scenario reader's messages.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,26 @@ initial_errors: {attitude: [1 deg, -1 deg, 5 deg]}
   sim::run(free, o);
   CHECK(std::abs(yawFree - 5 * kRadPerDeg) < 1e-3);  // the initial error stays without alignment
   CHECK(std::abs(yawAfterAlign) < 1e-6);
+}
+
+TEST_CASE("a run with initial errors and an alignment but no filter writes no filter.csv") {
+  // No filter runs, so there is no filter row to write: before, a header-only filter.csv was
+  // written and listed among the run's files.
+  const sim::Scenario sc = sim::parseScenario(std::string(kBase) + R"(
+initial_errors: {attitude: [1 deg, -1 deg, 5 deg]}
+alignment: {duration: 60 s}
+)", "aligned.yaml");
+  sim::RunOptions o;
+  o.outDir = tmpDir("no-filter");
+  std::filesystem::remove_all(o.outDir);
+  const sim::RunSummary s = sim::run(sc, o);
+  CHECK_FALSE(std::filesystem::exists(o.outDir + "/filter.csv"));
+  CHECK(std::find(s.files.begin(), s.files.end(), "filter.csv") == s.files.end());
+  CHECK(std::filesystem::exists(o.outDir + "/nav.csv"));
+  std::ifstream j(o.outDir + "/summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(j);
+  CHECK_FALSE(summary["files"].contains("filter"));
+  std::filesystem::remove_all(o.outDir);
 }
 
 TEST_CASE("aided run: filter.csv, imu.csv and per-outage drift in the summary") {
