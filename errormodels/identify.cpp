@@ -42,11 +42,17 @@ std::string friendly(double si, fit::SensorSignal s, int digits = 6) {
 
 /// What fit says of a line it found: taken out and written as a sinusoid, or (not fitted) that the
 /// terms absorb it.
+/// The amplitude is the coherent sinusoid's, fitted on the whole record, as `diagnose` sizes it.
+/// Where the Welch bin holds much more (a line broadened: a vibration whose frequency wanders),
+/// that is said too: the bin's power is what the noise terms absorb when the line is left in.
 std::string lineMessage(const detail::RecordLine& l, fit::SensorSignal s, bool fitted) {
-  const std::string found = "a narrow line at " + significant(fitted ? l.fitted.frequency : l.welch.freq, fitted ? 6 : 4) +
-                            " Hz, amplitude " + (fitted ? "" : "about ") +
-                            friendly(fitted ? l.fitted.amplitude : l.welchAmplitude, s, 3) + " (" +
-                            significant(l.welch.ratio, 3) + " times the noise density around it): ";
+  const double a = l.fitted.amplitude, band = l.welchAmplitude;
+  const std::string broad = band > 1.25 * a ? ", and its band " + friendly(band, s, 3) +
+                                                  " (a broadened line, as a vibration whose frequency wanders)"
+                                            : "";
+  const std::string found = "a narrow line at " + significant(l.fitted.frequency, 6) + " Hz, amplitude " +
+                            friendly(a, s, 3) + broad + " (" + significant(l.welch.ratio, 3) +
+                            " times the noise density around it): ";
   if (fitted)
     return found + "written as a sinusoid and taken out of the record before its noise terms were fitted "
                    "(`--lines warn` leaves it in)";

@@ -79,11 +79,21 @@ std::optional<RecordLine> lowLine(const std::vector<double>& x, double rate, std
   return line;
 }
 
+/// The Welch line at `freq` refined within its window and sized on the whole record (as the
+/// diagnosis's sinusoid detector does): its coherent part.
+FittedLine refinedLine(const std::vector<double>& x, double rate, std::size_t L, double freq) {
+  const double dt = 1.0 / rate;
+  const LineWindow w = welchLineWindow(freq, rate / double(L), rate);
+  const LinePeriodogram pg(x, 0.0, dt, 0.5 * (w.fa + w.fb), 0.5 * (w.fb - w.fa));
+  return fitLineAt(x, 0.0, dt, refineLineFrequency(pg, w, x.size(), L));
+}
+
 }  // namespace
 
 std::vector<RecordLine> recordLines(const std::vector<double>& x, double rate) {
   const std::size_t L = segmentFor(x.size());
   std::vector<RecordLine> out = welchLines(x, rate, L, 4);
+  for (RecordLine& l : out) l.fitted = refinedLine(x, rate, L, l.welch.freq);
   if (L >= 128)
     if (auto low = lowLine(x, rate, L, {})) out.push_back(*low);
   return out;
@@ -103,11 +113,8 @@ std::vector<RecordLine> takeOutLines(std::vector<double>& x, double rate) {
     });
     RecordLine line;
     if (next != found.end()) {
-      // Refined on the whole record, as the diagnosis's sinusoid detector does.
       line = *next;
-      const LineWindow w = welchLineWindow(line.welch.freq, bin, rate);
-      const LinePeriodogram pg(x, 0.0, dt, 0.5 * (w.fa + w.fb), 0.5 * (w.fb - w.fa));
-      line.fitted = fitLineAt(x, 0.0, dt, refineLineFrequency(pg, w, x.size(), L));
+      line.fitted = refinedLine(x, rate, L, line.welch.freq);
     } else if (auto low = L >= 128 ? lowLine(x, rate, L, taken) : std::nullopt) {
       line = *low;
     } else {

@@ -20,11 +20,11 @@ namespace sinsim::errormodels::detail {
 struct RecordLine {
   WelchLine welch;           ///< the Welch bin and its ratio
   double welchAmplitude = 0; ///< [signal] welchLineAmplitude of that bin
-  FittedLine fitted;         ///< on the whole record (set when taken out)
+  FittedLine fitted;         ///< refined and sized on the whole record: the coherent part
 };
 
 /// The lines of x (mean removed) without taking them out: the Welch test once, and the strongest
-/// line below its reach.
+/// line below its reach; each sized on the whole record as takeOutLines does.
 std::vector<RecordLine> recordLines(const std::vector<double>& x, double rate);
 
 /// Finds lines in x (mean removed) one at a time, each refined and sized on the whole record
