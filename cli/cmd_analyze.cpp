@@ -61,7 +61,7 @@ int runAnalyze(const AnalyzeArgs& a) {
               << (a.html_out.empty() ? "" : " " + a.html_out);
   std::cout << "\n" << sim::analysisSummary(stats);
   for (const std::string& w : sim::analysisWarnings(stats)) std::cerr << "analyze: warning: " << w << "\n";
-  for (const std::string& w : errormodels::unitWarnings(rec)) std::cerr << "analyze: warning: " << w << "\n";
+  for (const std::string& w : errormodels::recordWarnings(rec)) std::cerr << "analyze: warning: " << w << "\n";
   return 0;
 }
 

@@ -73,7 +73,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto record = errormodels::loadRecord(a.data, recordOptions(a.record));
   const auto model = errormodels::loadErrorModel(a.model);
-  for (const std::string& w : errormodels::unitWarnings(record)) std::cerr << "diagnose: warning: " << w << "\n";
+  for (const std::string& w : errormodels::recordWarnings(record)) std::cerr << "diagnose: warning: " << w << "\n";
   dg::DiagnoseOptions o;
   o.channels = a.channels;
   o.realisations = a.realisations;

@@ -132,9 +132,6 @@ int runFit(const FitArgs& a) {
   }
   const errormodels::RecordOptions ro = recordOptions(recordArgs);
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
-  if (rec.irregular_count > 0)
-    std::fprintf(stderr, "fit: warning: %zu irregular time steps in %s (fitted as uniform)\n",
-                 rec.irregular_count, a.data.c_str());
 
   const errormodels::Identification id = errormodels::identify(rec, opt);
   endProgressLine();
@@ -172,7 +169,7 @@ void addFitCommand(CLI::App& app, Action& action) {
   c->add_flag("--ar-on-denoised", a->ar_on_denoised,
               "write the AR fitted on the denoised record (the paper's pipeline; too little white noise)");
   addRecordOptions(c, a->record);
-  c->add_flag("-q,--quiet", a->quiet, "print only the output file name");
+  c->add_flag("-q,--quiet", a->quiet, "print only the output file name and the warnings (no per-channel summary)");
   c->callback([a, &action] { action = [a] { return runFit(*a); }; });
 }
 

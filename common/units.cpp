@@ -30,12 +30,14 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"cm", {1e-2, D::length()}},
       {"mm", {1e-3, D::length()}},
       {"um", {1e-6, D::length()}},
+      {"\xC2\xB5m", {1e-6, D::length()}},  // µm
       {"ft", {0.3048, D::length()}},
       {"nmi", {1852.0, D::length()}},
       // time
       {"s", {1.0, D::time()}},
       {"ms", {1e-3, D::time()}},
       {"us", {1e-6, D::time()}},
+      {"\xC2\xB5s", {1e-6, D::time()}},  // µs
       {"ns", {1e-9, D::time()}},
       {"min", {60.0, D::time()}},
       {"h", {kSecondsPerHour, D::time()}},
@@ -48,6 +50,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"rad", {1.0, D::angle()}},
       {"mrad", {1e-3, D::angle()}},
       {"urad", {1e-6, D::angle()}},
+      {"\xC2\xB5rad", {1e-6, D::angle()}},  // µrad
       {"deg", {kRadPerDeg, D::angle()}},
       {"\xC2\xB0", {kRadPerDeg, D::angle()}},  // °
       {"arcmin", {kRadPerDeg / 60.0, D::angle()}},

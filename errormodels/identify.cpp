@@ -644,7 +644,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
     out.warnings.insert(out.warnings.end(), warnings[k].begin(),
                         warnings[k].end());
   }
-  for (std::string& w : unitWarnings(record)) out.warnings.push_back(std::move(w));
+  for (std::string& w : recordWarnings(record)) out.warnings.push_back(std::move(w));
   return out;
 }
 

@@ -59,7 +59,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   if (!ref.aiding.inert())
     batch.warnings = aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
-    for (std::string& w : errormodels::unitWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
+    for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (batch.result.complete && opt.partition.rank == 0)
     batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times);
   return batch;

@@ -12,6 +12,7 @@
 #include <new>
 #include <sstream>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "common/number_text.hpp"
@@ -520,7 +521,51 @@ std::pair<double, double> meanAndSd(const std::vector<double>& x) {
 
 }  // namespace
 
-std::vector<std::string> unitWarnings(const Record& record) {
+namespace {
+
+/// The accelerometer unit whose reading of a static record's mean |f| (as m/s^2) is gravity within
+/// 20 %, the closest first; empty when none is.
+std::string accelUnitFor(double f) {
+  static const std::pair<const char*, double> kUnits[] = {
+      {"g", kStandardGravity}, {"mg", 1e-3 * kStandardGravity}, {"ug", 1e-6 * kStandardGravity},
+      {"ft/s^2", 0.3048}, {"Gal", 1e-2}};  // Gal = cm/s^2
+  std::string best;
+  double closest = std::log(1.2);
+  for (const auto& [name, si] : kUnits) {
+    const double off = std::fabs(std::log(f * si / kStandardGravity));
+    if (off < closest) closest = off, best = name;
+  }
+  return best;
+}
+
+std::string accelWarning(double f) {
+  const std::string lead = "accelerometer mean |f| = " + significant(f, 4) +
+                           " m/s^2 in a static record (gravity is 9.8 m/s^2): ";
+  const std::string unit = accelUnitFor(f);
+  if (!unit.empty()) return lead + "did you forget --accel-unit " + unit + "?";
+  return lead + "give the file's accelerometer unit (--accel-unit, or in the header: ax[mg]), unless the "
+                "logger removed gravity";
+}
+
+std::string timeWarning(const Record& record) {
+  if (record.time_rounding_s > 0.0)
+    return "the time stamps are rounded to " + significant(record.time_rounding_s, 3) +
+           " s, coarser than the step: read as uniform at " + limits::fmt(record.rate_hz) +
+           " Hz, the rate of their span";
+  if (record.irregular_count == 0) return "";
+  std::size_t gaps = 0;
+  for (const TimeIrregularity& i : record.irregularities) gaps += i.gap;
+  const TimeIrregularity& first = record.irregularities.front();
+  return std::to_string(record.irregular_count) + " irregular time step(s) (" + std::to_string(gaps) +
+         (record.irregularities.size() < record.irregular_count ? "+" : "") + " gap(s)), the first at line " +
+         std::to_string(first.line) + " (t = " + significant(first.t, 10) + " s, dt = " + significant(first.dt, 4) +
+         " s): read as uniform at " + limits::fmt(record.rate_hz) +
+         " Hz (--allow-irregular-time), the samples either side of a gap joined";
+}
+
+}  // namespace
+
+std::vector<std::string> recordWarnings(const Record& record) {
   std::vector<std::string> out;
   if (!record.t.empty() && record.rate_hz < 1.0)
     if (const char* unit = timeUnitRead(record.rate_hz))
@@ -528,6 +573,7 @@ std::vector<std::string> unitWarnings(const Record& record) {
                     " Hz read in seconds, slower than an IMU records; if they are in " + unit + " (" +
                     limits::fmt(record.rate_hz * unitFactor(unit)) + " Hz), write the unit " +
                     timeUnitAdvice(unit));
+  if (const std::string w = timeWarning(record); !w.empty()) out.push_back(w);
   double g2 = 0.0, f2 = 0.0;
   std::vector<double> gyroSd;
   int accelAxes = 0;
@@ -538,17 +584,19 @@ std::vector<std::string> unitWarnings(const Record& record) {
     }
     if (!record.accel[i].empty()) f2 += std::pow(meanAndSd(record.accel[i]).first, 2), ++accelAxes;
   }
+  // |f| of a static record is gravity whatever its attitude; well below it (under 0.5 m/s^2) it is
+  // a record whose logger removed gravity, or g read as m/s^2 beside a large bias: unit unknown.
   const double f = std::sqrt(f2);
-  if (accelAxes > 0 && f > 0.5 && f < 1.5)
-    out.push_back("accelerometer mean |f| = " + significant(f, 4) +
-                  " m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?");
+  if (accelAxes > 0 && f > 0.5 && std::fabs(std::log(f / kStandardGravity)) > std::log(1.2))
+    out.push_back(accelWarning(f));
   if (!gyroSd.empty()) {
     std::sort(gyroSd.begin(), gyroSd.end());
     const double w = std::sqrt(g2), sd = gyroSd[gyroSd.size() / 2];
     if (w > 0.5 || sd > 0.05)
       out.push_back("gyro mean |w| = " + significant(w, 3) + " rad/s, sample sd " + significant(sd, 3) +
                     " rad/s in a static record (Earth rate is 7.3e-5 rad/s, a gyro's bias and noise "
-                    "are degrees per second at most): did you forget --gyro-unit deg/s?");
+                    "are degrees per second at most): did you forget --gyro-unit deg/s? (or the file's unit, "
+                    "e.g. mrad/s or deg/h: the values alone cannot tell which)");
   }
   return out;
 }

@@ -78,6 +78,9 @@ struct Record {
   /// Irregular steps (filled only with RecordOptions::allow_irregular_time; at most 1000 kept)
   std::vector<TimeIrregularity> irregularities;
   std::size_t irregular_count = 0;  ///< total number of irregular steps found
+  /// [s] > 0: the time stamps are a uniform grid rounded to this (steps of two values, e.g. 2 and
+  /// 3 ms at 400 Hz), read as uniform at the rate of their span
+  double time_rounding_s = 0.0;
   std::size_t rows = 0;             ///< number of samples
   /// [s] the file's start dropped by RecordOptions::skip_s (what a message's "--skip" counts from)
   double skipped_s = 0.0;
@@ -105,12 +108,18 @@ std::string sensorColumnsHint(const Record& record);
 /// exactly, not through a variance, whose mean removal leaves ~1e-34 for a constant 0.1 deg/s.
 bool isConstantChannel(const std::vector<double>& x);
 
-/// Warnings that a static record's units were probably not given (the record read as SI): a static
-/// accelerometer reads |f| = g, so means of norm 0.5..1.5 "m/s^2" are g read as m/s^2; a static gyro
-/// reads Earth rate (7.3e-5 rad/s) plus a bias of degrees per second at most, with a sample sd well
-/// below 1 deg/s, so means of norm above 0.5 "rad/s" or a median sample sd above 0.05 "rad/s" are
-/// deg/s read as rad/s. Over the channels present; empty when nothing looks wrong.
-std::vector<std::string> unitWarnings(const Record& record);
+/// Warnings on how a static record was read, empty when nothing looks wrong:
+///  - time: stamps that read as slower than 1 Hz in seconds (ms or us written as s?); stamps
+///    rounded coarser than the step, read as uniform at their span's rate; irregular steps or
+///    gaps read as uniform (RecordOptions::allow_irregular_time).
+///  - units: a static accelerometer reads |f| = g whatever its attitude, so a mean norm more than
+///    20 % off 9.8 "m/s^2" (above 0.5: below, the logger may have removed gravity) names the unit
+///    (g, mg, ug, ft/s^2, Gal) whose reading is gravity, or asks for it; a static gyro reads Earth
+///    rate (7.3e-5 rad/s) plus a bias of degrees per second at most, with a sample sd well below
+///    1 deg/s, so means of norm above 0.5 "rad/s" or a median sample sd above 0.05 "rad/s" are
+///    another unit read as rad/s (deg/s the likeliest; the values cannot tell mrad/s or deg/h).
+/// Over the channels present.
+std::vector<std::string> recordWarnings(const Record& record);
 
 /// The same parser on text already in memory; `source` names it in messages.
 Record parseRecord(std::string_view text, const std::string& source,

@@ -18,6 +18,43 @@ void recordError(const std::string& source, std::size_t line, const std::string&
   throw InputError(os.str());
 }
 
+/// The resolution r [s] a uniform grid's time stamps were rounded to, where they are one: the steps
+/// take exactly two values r apart (to 1e-6 of a step: a double's digits), the mean step lies
+/// strictly between them, and no stamp is more than r from the straight line through the first and
+/// the last (each is within r / 2 of the grid, whose ends are within r / 2 too), the long steps
+/// are spread evenly (not a gap: each eighth of the record holds its share), and r is more than
+/// `tolerance` of a step (finer rounding leaves the steps regular). 0 otherwise: steps that agree,
+/// jitter (many step values) or a gap (a third value).
+double roundedGridResolution(const std::vector<double>& t, double tolerance) {
+  const std::size_t n = t.size();
+  const double mean = (t[n - 1] - t[0]) / double(n - 1);
+  if (!(mean > 0.0) || !std::isfinite(mean)) return 0.0;
+  const double eps = 1e-6 * mean;
+  double lo = t[1] - t[0], hi = lo;
+  for (std::size_t k = 2; k < n; ++k) {
+    const double d = t[k] - t[k - 1];
+    if (std::abs(d - lo) <= eps || std::abs(d - hi) <= eps) continue;
+    if (hi - lo > eps) return 0.0;  // a third value
+    if (d < lo) lo = d; else hi = d;
+  }
+  const double r = hi - lo;
+  if (!(r > tolerance * mean && lo < mean - eps && hi > mean + eps)) return 0.0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (std::abs(t[k] - (t[0] + double(k) * mean)) > r + eps) return 0.0;
+  // Rounding spreads the long steps evenly, a fraction (mean - lo) / r of every stretch (to +-1);
+  // a gap or a few put them in one place. Each eighth of the record holds its share to +-2, and
+  // there are at least 8 of each step.
+  const std::size_t steps = n - 1, block = steps / 8;
+  const double p = (mean - lo) / r;
+  if (block == 0 || !(p * double(steps) >= 8.0 && (1.0 - p) * double(steps) >= 8.0)) return 0.0;
+  for (std::size_t b = 0; b < 8; ++b) {
+    std::size_t longSteps = 0;
+    for (std::size_t k = b * block + 1; k <= (b + 1) * block; ++k) longSteps += t[k] - t[k - 1] > mean;
+    if (std::abs(double(longSteps) - p * double(block)) > 2.0) return 0.0;
+  }
+  return r;
+}
+
 /// Checks that time stamps increase and are uniform; first_line is the file line of row 0.
 void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options) {
   const std::vector<double>& t = rec.t;
@@ -29,6 +66,23 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
            "time stamp " + std::to_string(t[k]) + " s does not increase (previous " +
                std::to_string(t[k - 1]) + " s)");
     }
+  }
+  if (n < 2 && !options.rate_hz) recordError(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");
+  // Time stamps printed with fewer digits than the step needs (400 Hz to the millisecond: steps of
+  // 2 and 3 ms) are a uniform grid rounded, not irregular: the median step would give 500 Hz.
+  const double rounding = n >= 3 ? roundedGridResolution(t, options.time_tolerance) : 0.0;
+  if (rounding > 0.0) {
+    const double span = (t[n - 1] - t[0]) / double(n - 1);
+    if (options.rate_hz && std::abs(1.0 / *options.rate_hz - span) > options.time_tolerance * span) {
+      std::ostringstream os;
+      os << "the rate option (--rate) " << *options.rate_hz << " Hz disagrees with the time stamps (rounded to "
+         << rounding << " s; their span gives " << 1.0 / span << " Hz)";
+      recordError(rec.source, 0, os.str());
+    }
+    rec.rate_hz = options.rate_hz ? *options.rate_hz : 1.0 / span;
+    rec.time_rounding_s = rounding;
+    rec.irregular_count = 0;
+    return;
   }
   double dt0 = 0.0;
   if (n >= 2) {
@@ -48,7 +102,6 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
     }
     dt0 = dt_opt;
   }
-  if (n < 2 && !options.rate_hz) recordError(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");
   rec.rate_hz = 1.0 / dt0;
   std::size_t count = 0;
   std::vector<TimeIrregularity> found;

@@ -29,6 +29,10 @@ TEST_CASE("plain units convert to SI") {
   CHECK(parseQuantityAs("300 ppm", Dimension::none()) == Approx(3e-4).epsilon(kRel));
   CHECK(parseQuantityAs("0.5", Dimension::none()) == 0.5);
   CHECK(parseQuantityAs("-3e2 km", Dimension::length()) == -3e5);
+  // The micro sign as loggers write it, beside the ASCII u (a t[\xC2\xB5s] column was refused).
+  CHECK(parseQuantityAs("250 \xC2\xB5s", Dimension::time()) == Approx(2.5e-4).epsilon(kRel));
+  CHECK(parseQuantityAs("3 \xC2\xB5rad", Dimension::angle()) == Approx(3e-6).epsilon(kRel));
+  CHECK(parseQuantityAs("7 \xC2\xB5m", Dimension::length()) == Approx(7e-6).epsilon(kRel));
 }
 
 TEST_CASE("inertial-sensor units as datasheets write them") {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/constants.hpp"
 #include "common/error.hpp"
 #include "errormodels/stats/record.hpp"
 
@@ -304,18 +305,91 @@ TEST_CASE("record: a static record's units that look forgotten are named", "[rec
       if (x.find(what) != std::string::npos) return true;
     return false;
   };
-  const auto raw = unitWarnings(parseRecord(text, "adis.csv", o));
+  const auto raw = recordWarnings(parseRecord(text, "adis.csv", o));
   CHECK(raw.size() == 2);
   CHECK(has(raw, "accelerometer mean |f| = 1 m/s^2 in a static record (gravity is 9.8 m/s^2): did you forget --accel-unit g?"));
   CHECK(has(raw, "gyro mean |w| = 0.642 rad/s, sample sd 0.35 rad/s"));
   CHECK(has(raw, "did you forget --gyro-unit deg/s?"));
   o.gyro_unit = "deg/s";
   o.accel_unit = "g";
-  CHECK(unitWarnings(parseRecord(text, "adis.csv", o)).empty());
+  CHECK(recordWarnings(parseRecord(text, "adis.csv", o)).empty());
   // A gyro-only record in rad/s of a real MEMS (bias 0.01 rad/s, sd 0.005 rad/s): nothing.
   std::string mems = "gx\n";
   for (int k = 0; k < 100; ++k) mems += std::to_string(0.01 + (k % 2 ? 0.005 : -0.005)) + "\n";
-  CHECK(unitWarnings(parseRecord(mems, "mems.csv", o)).empty());
+  CHECK(recordWarnings(parseRecord(mems, "mems.csv", o)).empty());
+}
+
+TEST_CASE("record: an accelerometer in mg, ft/s^2 or counts read as m/s^2 is named", "[record][units]") {
+  // A static accelerometer reads |f| = g in any attitude: (0.3, -0.4, -0.87) g has |f| = 1.003 g.
+  // Written in mg (|f| = 1000), ft/s^2 (32.2), Gal (981) or a count of 0.25 mg (4000) under no unit.
+  auto record = [](double scale) {
+    std::string text = "ax,ay,az\n";
+    for (int k = 0; k < 100; ++k)
+      text += std::to_string(0.3 * scale) + "," + std::to_string(-0.4 * scale) + "," +
+              std::to_string((k % 2 ? -0.871 : -0.869) * scale) + "\n";
+    RecordOptions o;
+    o.rate_hz = 100.0;
+    const auto w = recordWarnings(parseRecord(text, "acc.csv", o));
+    return w.size() == 1 ? w[0] : std::string("(" + std::to_string(w.size()) + " warnings)");
+  };
+  CHECK(record(1000.0).find("mean |f| = 1003 m/s^2") != std::string::npos);  // 1000 sqrt(1.0069)
+  CHECK(record(1000.0).find("did you forget --accel-unit mg?") != std::string::npos);
+  CHECK(record(sinsim::kStandardGravity / 0.3048).find("did you forget --accel-unit ft/s^2?") != std::string::npos);
+  CHECK(record(sinsim::kStandardGravity / 0.01).find("did you forget --accel-unit Gal?") != std::string::npos);
+  CHECK(record(4000.0).find("give the file's accelerometer unit") != std::string::npos);
+  CHECK(record(1.0).find("did you forget --accel-unit g?") != std::string::npos);
+  CHECK(record(sinsim::kStandardGravity) == "(0 warnings)");  // m/s^2: gravity
+  CHECK(record(0.01) == "(0 warnings)");              // gravity removed by the logger: not a unit
+}
+
+TEST_CASE("record: time stamps rounded coarser than the step are a uniform grid, a gap is not",
+          "[record][time]") {
+  // 400 Hz stamped to the millisecond (%.3f): steps of 2 and 3 ms alternate. The median step read
+  // 500 Hz; the span gives 400 Hz exactly.
+  auto stamped = [](double rate, std::size_t n, const char* fmt, std::size_t drop) {
+    std::string text = "t,gx\n";
+    char buf[64];
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k == drop) continue;
+      std::snprintf(buf, sizeof buf, fmt, 12.0 + double(k) / rate);
+      text += std::string(buf) + ",0.01\n";
+    }
+    return text;
+  };
+  const Record r = parseRecord(stamped(400.0, 4001, "%.3f", SIZE_MAX), "r400.csv", {});
+  CHECK(r.rate_hz == Approx(400.0).epsilon(1e-9));
+  CHECK(r.time_rounding_s == Approx(0.001).epsilon(1e-6));
+  CHECK(r.irregular_count == 0);
+  const auto w = recordWarnings(r);
+  REQUIRE(w.size() == 1);
+  CHECK(w[0].find("the time stamps are rounded to 0.001 s") != std::string::npos);
+  CHECK(w[0].find("400 Hz") != std::string::npos);
+  RecordOptions at400;
+  at400.rate_hz = 400.0;
+  CHECK(parseRecord(stamped(400.0, 4001, "%.3f", SIZE_MAX), "r400.csv", at400).rate_hz == 400.0);
+  RecordOptions at500;
+  at500.rate_hz = 500.0;
+  CHECK_THROWS_WITH(parseRecord(stamped(400.0, 4001, "%.3f", SIZE_MAX), "r400.csv", at500),
+                    Catch::Contains("rounded to 0.001 s; their span gives 400 Hz"));
+  // 300 Hz to the millisecond: 3 and 4 ms, a third of them long.
+  CHECK(parseRecord(stamped(300.0, 3001, "%.3f", SIZE_MAX), "r300.csv", {}).rate_hz == Approx(300.0).epsilon(1e-9));
+  // 200 Hz stamped exactly, one sample dropped: steps of 5 and 10 ms are two values too, but one
+  // long step is a gap, not rounding: refused, or with allow_irregular_time read and warned.
+  const std::string gap = stamped(200.0, 4001, "%.3f", 2000);
+  CHECK_THROWS_WITH(parseRecord(gap, "gap.csv", {}), Catch::Contains("1 irregular time step(s)"));
+  RecordOptions allow;
+  allow.allow_irregular_time = true;
+  const Record g = parseRecord(gap, "gap.csv", allow);
+  CHECK(g.time_rounding_s == 0.0);
+  CHECK(g.irregular_count == 1);
+  CHECK(g.rate_hz == Approx(200.0).epsilon(1e-9));
+  const auto gw = recordWarnings(g);
+  REQUIRE(gw.size() == 1);
+  CHECK(gw[0].find("1 irregular time step(s) (1 gap(s)), the first at line 2002") != std::string::npos);
+  // Jitter (a third step value): no grid.
+  std::string jitter = "t,gx\n";
+  for (int k = 0; k < 400; ++k) jitter += std::to_string(0.01 * k + (k % 3 == 0 ? 0.0004 : 0.0)) + ",0.01\n";
+  CHECK_THROWS_WITH(parseRecord(jitter, "jitter.csv", {}), Catch::Contains("irregular time step(s)"));
 }
 
 TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with the unit to write",
@@ -339,12 +413,12 @@ TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with th
   CHECK(parseRecord(stamps(1e6, "t[us]"), "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
   const Record ms = parseRecord(stamps(1e3, "t"), "rec.csv", {});
   CHECK(ms.rate_hz == Approx(0.1));
-  const std::vector<std::string> w = unitWarnings(ms);
+  const std::vector<std::string> w = recordWarnings(ms);
   REQUIRE(w.size() == 1);
   CHECK(w[0].find("if they are in ms (100 Hz), write the unit in the header (t[ms])") != std::string::npos);
-  CHECK(unitWarnings(parseRecord(stamps(1e3, "t[ms]"), "rec.csv", {})).empty());
+  CHECK(recordWarnings(parseRecord(stamps(1e3, "t[ms]"), "rec.csv", {})).empty());
   // A 1 Hz log is an IMU's rate: nothing (a slower one is warned: it may be ms read as s).
-  CHECK(unitWarnings(parseRecord(stamps(100.0, "t"), "rec.csv", {})).empty());
+  CHECK(recordWarnings(parseRecord(stamps(100.0, "t"), "rec.csv", {})).empty());
 }
 
 TEST_CASE("record: no time column: a column named like one is offered, with the sensors' mapping",
