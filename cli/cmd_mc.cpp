@@ -173,6 +173,7 @@ void printBatch(const sim::McCommandResult& batch, int size) {
     std::cout << "  " << p.sentence() << " Wilcoxon p = " << pValueText(p.pWilcoxon) << ".\n";
   for (const sim::McAidedSummary& s : batch.headlines.aided)
     for (const std::string& line : s.sentences()) std::cout << "  " << line << "\n";
+  if (!batch.headlines.measured.empty()) std::cout << "  " << batch.headlines.measured << "\n";
 }
 
 int runMc(const Args& a) {

@@ -61,7 +61,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
     for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (batch.result.complete && opt.partition.rank == 0)
-    batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times);
+    batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times, measuredSetup ? &measured : nullptr);
   return batch;
 }
 

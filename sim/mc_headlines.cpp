@@ -55,12 +55,28 @@ McHeadlines mcHeadlines(const McBatch& batch, std::size_t models) {
       }
   }
   if (batch.ref.aiding.filter.enabled) out.aided = mcAidedSummaries(batch, models);
+  if (batch.measured && !batch.timeEpochs.empty()) {
+    const std::size_t e = batch.timeEpochs.back();
+    const double hm = metricValue(batch.measured->errors.data() + e * kErrorFields, kHorizontal);
+    out.measured = "The measured record drifted " + lengthText(hm, 3) + " at " +
+                   durationText(batch.ref.epochTime(e)) + ": ";
+    for (std::size_t m = 0; m < models; ++m) {
+      auto v = metricAcrossRuns(batch, m, e, kHorizontal);
+      std::sort(v.begin(), v.end());
+      const double p = mcstats::percentileOf(v, hm);  // 0..100; "100", not significant()'s "1e+02"
+      out.measured += (m ? ", " : "") + std::string("percentile ") +
+                      (p >= 10.0 ? std::to_string(std::llround(p)) : significant(p, 2)) + " of " +
+                      batch.entries[m].label;
+    }
+    out.measured += " (near 50: the model predicts it; near 0 or 100: it does not).";
+  }
   return out;
 }
 
 McHeadlines mcHeadlines(const Reference& ref, const McResult& r, std::size_t models,
-                        const std::vector<double>& times) {
+                        const std::vector<double>& times, const McMeasured* measured) {
   McBatch batch(ref);
+  batch.measured = measured;
   batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / ref.runFloats();
   batch.timeEpochs = reportEpochs(ref, times);
   for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});

@@ -85,19 +85,7 @@ std::string mcReportHtml(const McBatch& batch, const McStats& st) {
         page.paragraph(m.label + ": horizontal error at " + durationText(m.t) + ": half of the " +
                        "runs within " + lengthText(m.cep, 3) + " (CEP), 95 % within " +
                        lengthText(m.r95, 3) + " (R95).");
-    if (batch.measured) {
-      const std::size_t e = batch.timeEpochs.back();
-      const double hm = metricValue(batch.measured->errors.data() + e * kErrorFields, kHorizontal);
-      std::string text = "The measured record drifted " + lengthText(hm, 3) + " at " +
-                         durationText(ref.epochTime(e)) + ": ";
-      for (std::size_t i = 0; i < prim.size(); ++i) {
-        auto v = metricAcrossRuns(batch, prim[i], e, kHorizontal);
-        std::sort(v.begin(), v.end());
-        text += (i ? ", " : "") + std::string("percentile ") +
-                significant(mcstats::percentileOf(v, hm), 2) + " of " + batch.entries[prim[i]].label;
-      }
-      page.paragraph(text + " (near 50: the model predicts it; near 0 or 100: it does not).");
-    }
+    if (!h.measured.empty()) page.paragraph(h.measured);
     for (const McAidedSummary& s : h.aided)
       for (const std::string& line : s.sentences()) page.paragraph(line);
   }

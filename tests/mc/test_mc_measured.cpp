@@ -108,7 +108,14 @@ TEST_CASE("sinsim mc --measured: the ADIS16405 record against two models, end to
     const double p = m["at"][1]["percentile"];
     CHECK(p >= 0.0);
     CHECK(p <= 100.0);
+    // The terminal says it too (before, only the files and the report did), as a whole number
+    // from 10 up: "percentile 100", never "1e+02".
+    const std::string said = "percentile " + (p >= 10.0 ? std::to_string(std::llround(p)) : std::string()) + "";
+    INFO(r.out);
+    CHECK(r.out.find("The measured record drifted ") != std::string::npos);
+    if (p >= 10.0) CHECK(r.out.find(said + " of " + std::string(m["model"])) != std::string::npos);
   }
+  CHECK(r.out.find("e+0") == std::string::npos);
   // 121 epochs (0..120 s at 1 Hz) plus the header.
   const std::string csv = mctest::slurp(tmp / "out" / "measured.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 122);
