@@ -66,7 +66,7 @@ DatasheetUnits datasheetUnits(bool gyro) {
 
 std::string analysisSummary(const std::vector<ChannelStats>& stats) {
   std::string out =
-      "channel  mean            sd              white N (at tau)               Allan minimum (B = min/0.664)\n";
+      "channel  mean            sd              white N (at tau)               bias instability B = Allan minimum / 0.664 (at tau)\n";
   char line[256];
   for (const ChannelStats& c : stats) {
     // Datasheet units: deg/h and deg/sqrt(h) for gyros, ug and m/s/sqrt(h) for accelerometers.
