@@ -233,9 +233,14 @@ std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
   return cols;
 }
 
-/// What a field that is no number may be: a decimal comma ("0,25" in a ';'-separated file), a
-/// date or clock time ("12:00:00.010", "2024-05-01T12:00:00").
+/// What a field that is no number may be: several fields of another separator than the one given
+/// ("0.1,0.2,0.3" under --delimiter semicolon), a decimal comma ("0,25" in a ';'-separated file),
+/// a date or clock time ("12:00:00.010", "2024-05-01T12:00:00").
 std::string fieldHint(const std::string& text, const Separator& sep) {
+  for (const char c : {',', ';', '\t'})
+    if (!sep.at(c) && std::count(text.begin(), text.end(), c) >= 2)
+      return std::string(" (fields separated by ") + (c == '\t' ? "tabs" : std::string("'") + c + "'") +
+             "? the separator read is " + sep.describe() + ": leave --delimiter out to detect it)";
   auto digits = [&](std::size_t i) { return i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); };
   for (std::size_t i = 1; i + 1 < text.size(); ++i) {
     if (text[i] == ',' && sep.c != ',' && digits(i - 1) && digits(i + 1))

@@ -478,6 +478,12 @@ TEST_CASE("record: a logger's trailing separators, quoted names and a units row"
         std::string::npos);
   // A decimal comma, a clock time: said what they may be.
   CHECK(errorOf("t;gx\n0;0,25\n").find("got \"0,25\" (a decimal comma?") != std::string::npos);
+  // A comma file read with --delimiter semicolon: its fields, not a decimal comma.
+  RecordOptions semicolon;
+  semicolon.separator = parseSeparator("semicolon");
+  const std::string wrong = errorOf("t,gx,gy\n0,0.25,0.5\n", semicolon);
+  CHECK(wrong.find("(fields separated by ','? the separator read is ';': leave --delimiter out") != std::string::npos);
+  CHECK(wrong.find("decimal comma") == std::string::npos);
   CHECK(errorOf("t,gx\n2024-05-01T12:00:00.000,1\n").find("(a date or clock time?") != std::string::npos);
   CHECK(errorOf("t,gx\n12:00:00.010,1\n").find("(a date or clock time?") != std::string::npos);
   CHECK(parseRecord("t,gx\n0,1e-3\n0.01,-2e-3\n", "rec.csv", {}).gyro[0][1] == -2e-3);
