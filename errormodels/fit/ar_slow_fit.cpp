@@ -99,6 +99,7 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
   };
   auto joint = [&](ArSlowFit& out) {
     lo.arPolynomial = out.ar.fit.a;
+    lo.arVarianceMax = out.ar.fit.drivingVariance;
     lo.minGmTauSamples = std::max(options.slowGmMinTc * out.arCorrelationTime / dt, 0.5);
     out.joint = fitLatentModel(c.m, c.avar, x.size(), lo);
   };

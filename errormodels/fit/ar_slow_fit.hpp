@@ -16,7 +16,9 @@
 //  2. The composite latent GLS fit (fit/latent_fit.hpp) on the octave Allan variance over all tau,
 //     with the AR as one of its terms: the AR's Allan variance in closed form at the record's
 //     interval (ar::allanVariance) with Burg's polynomial held fixed and its driving variance E
-//     refitted jointly with the slow terms. Candidates: AR alone and AR with every subset of
+//     refitted jointly with the slow terms, at most Burg's E (the one-step prediction error of AR
+//     + slow terms is at least the AR's own E; above it, a fit from a late start read the record's
+//     mid-tau excess as AR power: ADIS16405 run 1 gy 1.16x the record at one sample). Candidates: AR alone and AR with every subset of
 //     {GM, random walk, flicker} allowed; the same penalised GLS criterion (a GM costs 7.82, a
 //     one-parameter term 5.41), the same Omega (now with the AR's PSD E / |A|^2), the same 1-sigma.
 //  3. A GM beside the AR is slow by construction: its tau is searched from slowGmMinTc x T_c

@@ -131,6 +131,7 @@ struct Problem {
   bool latticeMotionRead = false;    ///< the lattice's motion read from the record (motionShape)
   std::vector<double> arPolynomial;  ///< of the AR term (LatentFitOptions::arPolynomial)
   Eigen::VectorXd arColumn;          ///< its Allan variance at unit driving variance
+  double arVarianceMax = 0.0;        ///< LatentFitOptions::arVarianceMax
   bool gmAveraged = false;           ///< GM terms as averaged samples (GmTerm::averaged)
   /// The flicker column with the flicker sampled at each instant (flickerSampledAllanVariance at
   /// unit B^2), computed once where a candidate set has flicker: the other discretisation of
@@ -186,7 +187,20 @@ Eigen::MatrixXd design(const Problem& p, const LatentTermSet& s, const std::vect
 
 SetFit solveFixedT(const Problem& p, const LatentTermSet& s, const std::vector<double>& T) {
   const Eigen::MatrixXd X = design(p, s, T);
-  const NnlsResult r = nnls(p.W * X, p.W * p.y);
+  NnlsResult r = nnls(p.W * X, p.W * p.y);
+  const Eigen::Index ar = Eigen::Index(s.quantization) + Eigen::Index(s.white);
+  if (s.ar && p.arVarianceMax > 0.0 && r.x(ar) > p.arVarianceMax) {
+    // The AR's driving variance held at its bound (LatentFitOptions::arVarianceMax), the others
+    // refitted: the problem is convex, so its optimum under the bound lies on the bound.
+    r.x(ar) = p.arVarianceMax;
+    if (X.cols() > 1) {
+      Eigen::MatrixXd rest(X.rows(), X.cols() - 1);
+      rest << X.leftCols(ar), X.rightCols(X.cols() - ar - 1);
+      const NnlsResult o = nnls(p.W * rest, p.W * (p.y - p.arVarianceMax * X.col(ar)));
+      r.x << o.x.head(ar), p.arVarianceMax, o.x.tail(o.x.size() - ar);
+      r.free << o.free.head(ar), true, o.free.tail(o.free.size() - ar);
+    }
+  }
   SetFit f;
   f.set = s;
   f.T = T;
@@ -943,6 +957,7 @@ RangeFit fitRange(const std::vector<std::size_t>& m, const std::vector<double>& 
     if (options.arPolynomial.size() < 2 || options.arPolynomial.front() != 1.0)
       throw InputError("latent fit: a set with an AR term needs its polynomial [1, a1..ap] (p >= 1)");
     p.arPolynomial = options.arPolynomial;
+    p.arVarianceMax = options.arVarianceMax;
     const std::vector<double> col = arAllanVariance(p.arPolynomial, 1.0, p.m);
     p.arColumn = Eigen::Map<const Eigen::VectorXd>(col.data(), Eigen::Index(col.size()));
   }

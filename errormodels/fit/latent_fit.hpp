@@ -101,6 +101,11 @@ struct LatentFitOptions {
   /// [1, a1..ap] of the AR term of sets with `ar` (required by them): the shape is fixed, the
   /// driving variance is fitted with the other variance coefficients.
   std::vector<double> arPolynomial;
+  /// Upper bound of that AR's driving variance [U^2] (0: none). The AR + slow fit passes Burg's:
+  /// the one-step prediction error of AR + slow terms is at least the AR's own driving variance,
+  /// so a joint fit that raises it above Burg's reads the record's mid-tau excess as short-tau
+  /// power (fit/ar_slow_fit.hpp).
+  double arVarianceMax = 0.0;
   /// Shortest GM correlation time searched, in sample intervals (`sinsim fit --kind gm` uses 2:
   /// a GM faster than that is white noise to a navigation filter at this rate).
   double minGmTauSamples = 0.5;
