@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -19,7 +20,7 @@ void recordError(const std::string& source, std::size_t line, const std::string&
 }
 
 /// The resolution r [s] a uniform grid's time stamps were rounded to, where they are one: the steps
-/// take exactly two values r apart (to 1e-6 of a step: a double's digits), the mean step lies
+/// take exactly two values r apart (to 1e-6 of a step, or the doubles' spacing), the mean step lies
 /// strictly between them, and no stamp is more than r from the straight line through the first and
 /// the last (each is within r / 2 of the grid, whose ends are within r / 2 too), the long steps
 /// are spread evenly (not a gap: each eighth of the record holds its share), and r is more than
@@ -29,7 +30,10 @@ double roundedGridResolution(const std::vector<double>& t, double tolerance) {
   const std::size_t n = t.size();
   const double mean = (t[n - 1] - t[0]) / double(n - 1);
   if (!(mean > 0.0) || !std::isfinite(mean)) return 0.0;
-  const double eps = 1e-6 * mean;
+  // A step's digits: 1e-6 of it, or the doubles' own spacing where the stamps are large (Unix
+  // time in s: 2.4e-7 s apart at 1.7e9).
+  const double big = std::max(std::abs(t[0]), std::abs(t[n - 1]));
+  const double eps = std::max(1e-6 * mean, 8.0 * std::numeric_limits<double>::epsilon() * big);
   double lo = t[1] - t[0], hi = lo;
   for (std::size_t k = 2; k < n; ++k) {
     const double d = t[k] - t[k - 1];

@@ -371,6 +371,19 @@ TEST_CASE("record: time stamps rounded coarser than the step are a uniform grid,
   at500.rate_hz = 500.0;
   CHECK_THROWS_WITH(parseRecord(stamped(400.0, 4001, "%.3f", SIZE_MAX), "r400.csv", at500),
                     Catch::Contains("rounded to 0.001 s; their span gives 400 Hz"));
+  // The same in Unix time (doubles 2.4e-7 s apart at 1.7e9 s): still the grid.
+  auto unixStamped = [](double rate, std::size_t n) {
+    std::string text = "t,gx\n";
+    char buf[64];
+    for (std::size_t k = 0; k < n; ++k) {
+      std::snprintf(buf, sizeof buf, "%.3f", 1700000000.0 + double(k) / rate);
+      text += std::string(buf) + ",0.01\n";
+    }
+    return text;
+  };
+  const Record u = parseRecord(unixStamped(400.0, 4001), "unix.csv", {});
+  CHECK(u.rate_hz == Approx(400.0).epsilon(1e-6));
+  CHECK(u.time_rounding_s == Approx(0.001).epsilon(1e-3));
   // 300 Hz to the millisecond: 3 and 4 ms, a third of them long.
   CHECK(parseRecord(stamped(300.0, 3001, "%.3f", SIZE_MAX), "r300.csv", {}).rate_hz == Approx(300.0).epsilon(1e-9));
   // 200 Hz stamped exactly, one sample dropped: steps of 5 and 10 ms are two values too, but one
