@@ -11,6 +11,7 @@
 #include "common/progress.hpp"
 #include "sim/output.hpp"
 #include "sim/report/report.hpp"
+#include "common/json_text.hpp"
 
 namespace sinsim::sim {
 namespace {
@@ -234,7 +235,7 @@ void writeAnalysis(const errormodels::Record& rec, const std::vector<ChannelStat
     out["channels"] = channels;
     const std::filesystem::path target(jsonPath);
     OutputFiles files(target.has_parent_path() ? target.parent_path().string() : ".");
-    std::fputs((out.dump(1) + "\n").c_str(), files.open(target.filename().string()));
+    std::fputs(jsonText(out, 1).c_str(), files.open(target.filename().string()));
     files.commit();
   }
   if (!htmlPath.empty()) {

@@ -7,6 +7,7 @@
 
 #include "common/number_text.hpp"
 #include "sim/diagnose_nav.hpp"
+#include "common/json_text.hpp"
 
 namespace sinsim::sim {
 namespace {
@@ -169,13 +170,13 @@ std::string navVerdictText(const NavVerdict& v) {
 std::string diagnoseJsonWithNav(const errormodels::diagnose::Diagnosis& d, const NavVerdict* v) {
   nlohmann::json j = errormodels::diagnose::toJsonValue(d);
   if (v) j["navigation"] = verdictJson(*v);
-  return j.dump(1) + "\n";
+  return jsonText(j, 1);
 }
 
 std::string diagnoseJsonWithNav(const errormodels::diagnose::Improvement& imp, const NavVerdict* v) {
   nlohmann::json j = errormodels::diagnose::toJsonValue(imp);
   if (v) j["navigation"] = verdictJson(*v);
-  return j.dump(1) + "\n";
+  return jsonText(j, 1);
 }
 
 }  // namespace sinsim::sim

@@ -11,6 +11,7 @@
 #include "sim/mc_per_run.hpp"
 #include "sim/mc_stats.hpp"
 #include "sim/output.hpp"
+#include "common/json_text.hpp"
 
 namespace sinsim::sim {
 
@@ -321,7 +322,7 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
   names.push_back("runs/ (checkpoints)");
   j["files"] = names;
   std::FILE* fs = out.open("summary.json");
-  const std::string text = j.dump(2) + "\n";
+  const std::string text = jsonText(j, 2);
   std::fputs(text.c_str(), fs);
   files.push_back("summary.json");
 

@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "errormodels/diagnose/diagnose.hpp"
+#include "common/json_text.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -90,9 +91,9 @@ nlohmann::json diagnosisJson(const Diagnosis& d) {
 
 }  // namespace
 
-std::string toJson(const Diagnosis& d) { return toJsonValue(d).dump(1) + "\n"; }
+std::string toJson(const Diagnosis& d) { return jsonText(toJsonValue(d), 1); }
 
-std::string toJson(const Improvement& imp) { return toJsonValue(imp).dump(1) + "\n"; }
+std::string toJson(const Improvement& imp) { return jsonText(toJsonValue(imp), 1); }
 
 nlohmann::json toJsonValue(const Diagnosis& d) { return diagnosisJson(d); }
 

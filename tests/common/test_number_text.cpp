@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "common/json_text.hpp"
 #include "common/number_text.hpp"
 
 using sinsim::durationText;
@@ -42,4 +43,14 @@ TEST_CASE("pValueText: two digits down to 0.001, then one", "[text]") {
   CHECK(pValueText(0.0012) == "0.0012");
   CHECK(pValueText(1.2e-12) == "1e-12");
   CHECK(pValueText(0.0) == "< 1e-300");
+}
+
+TEST_CASE("JSON text: bytes that are not UTF-8 are replaced, not thrown at the end of a run") {
+  // A Latin-1 scenario name (caf\xe9) or file name: nlohmann's dump threw type_error 316 and the
+  // finished run ended in "internal error".
+  const nlohmann::json j{{"name", std::string("caf\xe9")}, {"x", 1}};
+  const std::string text = sinsim::jsonText(j, 1);
+  CHECK(text.find("caf\xEF\xBF\xBD") != std::string::npos);  // U+FFFD
+  CHECK(text.back() == '\n');
+  CHECK(nlohmann::json::parse(text)["x"] == 1);
 }
