@@ -73,7 +73,7 @@ void addRunCommand(CLI::App& app, Action& action) {
       const std::string file = args->scenario.empty() ? defaultScenario() : args->scenario;
       const sim::Scenario sc = sim::loadScenario(file);
       sim::RunOptions opt;
-      opt.outDir = args->outDir.empty() ? (fs::path("out") / sc.name).string() : args->outDir;
+      opt.outDir = args->outDir.empty() ? (fs::path("out") / sc.folderName()).string() : args->outDir;
       opt.seed = args->seed;
       if (!args->biasWindow.empty())
         opt.biasWindow = parseDuration(args->biasWindow, "--bias-window");

@@ -75,6 +75,8 @@ constexpr double kMaxAcceleration = 1e4;
 /// [K] Highest sensor temperature of a scenario's profile (1000 degC; sensors are specified to
 /// ~125 degC): `rate: 1e10 degC/s` reached 2e11 degC and ran.
 constexpr double kMaxTemperature = 1273.15;
+/// [bytes] Largest temperature CSV (`synth --temperature FILE`): 1 Hz for 10 days is ~15 MB.
+constexpr std::size_t kMaxTemperatureCsvBytes = std::size_t{64} << 20;
 
 // ---- Records (CSV) --------------------------------------------------------------------------
 /// [characters] Longest line of a record (a comment line before the header included). The text is

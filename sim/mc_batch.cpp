@@ -39,7 +39,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   const std::vector<McModel> models = loadMcModels(request.models, sc, scenarioIdentity);
 
   opt.seed = request.seed ? *request.seed : sc.seed.value_or(0);
-  if (opt.outDir.empty()) opt.outDir = (std::filesystem::path("out") / ("mc-" + sc.name)).string();
+  if (opt.outDir.empty()) opt.outDir = (std::filesystem::path("out") / sc.folderName("mc-")).string();
   opt.scenarioIdentity = scenarioIdentity;
 
   const Reference ref = buildReference(sc);

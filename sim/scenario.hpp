@@ -37,6 +37,11 @@ struct Scenario {
   aided::AidingConfig aiding;
 
   double duration() const;  // [s], sum of the segment durations
+  /// The default output folder's name: `prefix` + the name with every character but letters,
+  /// digits, '.', '-' and '_' as '_' ("scenario" for an empty name, "." or ".."), so that a name
+  /// never leads out of `out/` (a `name: ../x` or `/tmp/x` wrote there, `..` into the current
+  /// folder).
+  std::string folderName(const std::string& prefix = "") const;
   MotionProfile motion() const { return MotionProfile(start, segments); }
   /// IMU samples per output row: imuRate / outputRate (an integer by validation).
   long long decimation() const;

@@ -1,6 +1,7 @@
 // The scenario's segment list: registry, parse and layout (scenario_segments.hpp).
 #include "sim/scenario_segments.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -391,6 +392,14 @@ std::vector<Segment> readSegments(const ConfigNode& segs, const MotionStart& sta
 }
 
 }  // namespace detail
+
+std::string Scenario::folderName(const std::string& prefix) const {
+  std::string s = prefix + name;
+  for (char& c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '_';
+  if (s.empty() || s == "." || s == "..") s = prefix + "scenario";
+  return s;
+}
 
 std::vector<std::string> segmentTypes() {
   std::vector<std::string> names;

@@ -38,6 +38,10 @@ long long writeStaticRecord(const errormodels::ImuErrorModel& model, const Stati
                      " Hz is more than " + limits::fmt(limits::kMaxSamples) +
                      " samples (docs/limits.md)");
   if (!(std::fabs(o.lat) <= M_PI / 2)) throw InputError("--latitude must be within ±90 deg");
+  if (!(o.h >= limits::kMinHeight && o.h <= limits::kMaxHeight))  // -1e7 m wrote az = +30 m/s^2
+    throw InputError("--height " + limits::fmt(o.h) + " m is outside [" + limits::fmt(limits::kMinHeight) + ", " +
+                     limits::fmt(limits::kMaxHeight) + "] m (docs/limits.md)");
+  if (!(o.rpy.array().isFinite().all())) throw InputError("--attitude must be finite");
 
   const nav::Earth earth;
   const nav::Mat3 C_bn = nav::dcmFromEuler(o.rpy).transpose();

@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <filesystem>
 #include <sstream>
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/read_file.hpp"
 #include "common/limits.hpp"
 #include "common/units.hpp"
 
@@ -16,8 +17,18 @@ namespace {
 
 using D = Dimension;
 
+/// Throws unless every temperature of the profile lies in (0 K, limits::kMaxTemperature].
+void checkRange(const TemperatureProfile& p, const std::string& where) {
+  auto inside = [](double k) { return k > 0.0 && k <= limits::kMaxTemperature; };
+  const bool ok = p.kelvins.empty() ? inside(p.start) : std::all_of(p.kelvins.begin(), p.kelvins.end(), inside);
+  if (!ok)
+    throw InputError(where + ": a temperature outside (-273.15, " +
+                     limits::fmt(limits::kMaxTemperature - kZeroCelsius) + "] degC (docs/limits.md)");
+}
+
 TemperatureProfile readCsv(const std::string& path) {
-  std::ifstream in(path);
+  // A regular file of bounded size: a FIFO hung here and /dev/zero filled the memory.
+  std::istringstream in(readRegularFile(path, limits::kMaxTemperatureCsvBytes, "temperature CSV"));
   std::string line;
   std::getline(in, line);
   if (line.rfind("t,temp", 0) != 0)
@@ -41,6 +52,7 @@ TemperatureProfile readCsv(const std::string& path) {
   }
   if (p.times.empty()) throw InputError(path + ": no temperature rows");
   p.start = p.kelvins.front();
+  checkRange(p, path);
   return p;
 }
 
@@ -104,18 +116,22 @@ TemperatureProfile temperatureFromText(const std::string& spec, double duration)
     p.start = t0;
     // The ramp over [0, duration] as a two-row table: t0 + (t/duration) (t1 - t0).
     if (duration > 0) p.times = {0.0, duration}, p.kelvins = {t0, t1};
+    TemperatureProfile ends;
+    ends.kelvins = {t0, t1};
+    checkRange(ends, "--temperature \"" + spec + "\"");
     return p;
   }
   try {
     p.start = parseQuantityAs(spec, D::temperature());
-    return p;
   } catch (const InputError& e) {
-    std::ifstream probe(spec);
-    if (!probe)
+    std::error_code ec;  // not opened to probe it: opening a FIFO waits for a writer
+    if (!std::filesystem::exists(spec, ec))
       throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
                        "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
+    return readCsv(spec);
   }
-  return readCsv(spec);
+  checkRange(p, "--temperature \"" + spec + "\"");
+  return p;
 }
 
 }  // namespace sinsim::sim

@@ -2,6 +2,8 @@
 // key path, all problems of a file at once.
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
+
 #include <string>
 
 #include "common/constants.hpp"
@@ -235,6 +237,18 @@ TEST_CASE("One TemperatureProfile for synth's --temperature: constant, ramp, CSV
   // Calls need not come in increasing time (the old reader kept a cursor and required it).
   CHECK(t.at(5.0) == Approx(298.15).margin(1e-12));
   CHECK_THROWS_AS(sim::temperatureFromText("hot", 100.0), InputError);
+  // Outside (0 K, 1000 degC], as a scenario's temperature: refused (a ramp to 1e300 degC wrote
+  // a record the reader then refused).
+  CHECK_THROWS_WITH(sim::temperatureFromText("20 degC..1e300 degC", 100.0), Catch::Contains("outside (-273.15, 1000] degC"));
+  CHECK_THROWS_WITH(sim::temperatureFromText("2000 degC", 100.0), Catch::Contains("outside (-273.15, 1000] degC"));
+  sinsim::test::writeText(csv, "t,temp\n0,20\n10,-300\n");
+  CHECK_THROWS_WITH(sim::temperatureFromText(csv, 100.0), Catch::Contains("outside (-273.15, 1000] degC"));
+  // Not a regular file: refused by name, never opened (a FIFO waited for a writer, /dev/zero
+  // filled the memory).
+  const std::string fifo = (dir / "fifo").string();
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(sim::temperatureFromText(fifo, 100.0), Catch::Contains("expected a temperature CSV (a regular file)"));
+  CHECK_THROWS_WITH(sim::temperatureFromText("/dev/zero", 100.0), Catch::Contains("expected a temperature CSV (a regular file)"));
 }
 
 TEST_CASE("bad scenario: a longitude beyond ±360 deg and a pitch of 90 deg are refused, located") {
@@ -279,4 +293,23 @@ segments: [{type: static, duration: 50 s}]
   INFO(listing(ds));
   CHECK(has(ds, 2, "imu_rate", "expected a rate of at least"));
   CHECK(listing(ds).find("faster than the IMU") == std::string::npos);
+}
+
+TEST_CASE("a scenario's name never leads its default output folder out of out/") {
+  auto folder = [](const std::string& name) {
+    const sim::Scenario sc = sim::parseScenario("name: \"" + name + "\"\nstart: {latitude: 45 deg, longitude: 7 deg, "
+                                                "height: 0 m, heading: 0 deg}\nsegments:\n  - {type: static, duration: 10 s}\n",
+                                                "s.yaml");
+    return sc.folderName();
+  };
+  CHECK(folder("car-10min_v2.1") == "car-10min_v2.1");  // an ordinary name as it is
+  CHECK(folder("../../escaped") == ".._.._escaped");     // one folder inside out/, not two up
+  CHECK(folder("/tmp/abs") == "_tmp_abs");
+  CHECK(folder("..") == "scenario");
+  CHECK(folder(".") == "scenario");
+  CHECK(folder("a\\\\b c") == "a_b_c");
+  const sim::Scenario sc = sim::parseScenario("name: \"..\"\nstart: {latitude: 45 deg, longitude: 7 deg, height: 0 m, "
+                                              "heading: 0 deg}\nsegments:\n  - {type: static, duration: 10 s}\n",
+                                              "s.yaml");
+  CHECK(sc.folderName("mc-") == "mc-..");  // one name, not the parent: no separator in it
 }
