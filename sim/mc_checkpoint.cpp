@@ -171,6 +171,7 @@ void CheckpointStore::prepare(bool resume) {
   std::error_code ec;
   if (fs::exists(outDir_, ec) && !fs::is_directory(outDir_, ec))
     throw InputError("output folder " + outDir_ + " exists and is not a folder");
+  createdOutDir_ = !fs::exists(outDir_, ec);
   fs::create_directories(outDir_, ec);
   if (ec) throw InputError("cannot create " + outDir_ + ": " + ec.message());
   lock_ = std::make_unique<FolderLock>(outDir_);
@@ -199,6 +200,15 @@ void CheckpointStore::prepare(bool resume) {
     fs::create_directories(runsDir / d, ec);
     if (ec) throw InputError("cannot create " + (runsDir / d).string() + ": " + ec.message());
   }
+}
+
+void CheckpointStore::discardEmpty() {
+  lock_.reset();
+  std::error_code ec;  // fs::remove takes a folder only when it is empty
+  const fs::path runsDir = fs::path(outDir_) / "runs";
+  for (const auto& d : dirs_) fs::remove(runsDir / d, ec);
+  fs::remove(runsDir, ec);
+  if (createdOutDir_) fs::remove(outDir_, ec);
 }
 
 CheckpointStore::State CheckpointStore::read(const ChunkKey& k, float* out) const {

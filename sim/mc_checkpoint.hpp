@@ -58,6 +58,10 @@ class CheckpointStore {
   /// Writes the chunk atomically; throws Error with the reason (disk full, file size limit).
   void write(const ChunkKey& key, const float* data) const;
   std::string path(const ChunkKey& key) const;
+  /// Rank 0, after a failed batch: releases the lock and removes the folders prepare() made that
+  /// hold nothing (no checkpoint was saved), so a failed first run leaves no folder behind and
+  /// its rerun needs no --resume. Folders with files are kept.
+  void discardEmpty();
 
  private:
   std::string outDir_;
@@ -67,6 +71,7 @@ class CheckpointStore {
   std::vector<std::string> stems_; // per model: "<label>-"
   std::vector<std::uint64_t> fps_;
   std::unique_ptr<FolderLock> lock_;
+  bool createdOutDir_ = false;  // prepare() created DIR itself
 };
 
 }  // namespace sinsim::sim

@@ -240,7 +240,10 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   }
   for (auto& t : pool) t.join();
   progress();
-  if (failure) std::rethrow_exception(failure);
+  if (failure) {
+    if (opt.partition.rank == 0 && opt.partition.size <= 1) store.discardEmpty();
+    std::rethrow_exception(failure);
+  }
   result.runsComputed = runsDone.load();
 
   if (opt.partition.barrier) opt.partition.barrier();

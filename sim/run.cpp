@@ -26,6 +26,7 @@
 #include "sim/run_report.hpp"
 #include "sim/scenario_aiding.hpp"
 #include "sim/trajectory.hpp"
+#include "common/json_text.hpp"
 
 namespace sinsim::sim {
 namespace {
@@ -54,10 +55,13 @@ void writeState(std::FILE* f, const nav::NavState& s) {
                nav::wrapAngle(s.lon) * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
 }
 
-void writeError(std::FILE* f, const NavError& e) {
+void requireFiniteError(const NavError& e) {
   requireFiniteRow({e.pos_n.x(), e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(),
                     e.euler.x(), e.euler.y(), e.euler.z()},
                    e.t, "navigation error");
+}
+
+void writeError(std::FILE* f, const NavError& e) {
   std::fprintf(f, "%.6f,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", e.t, e.pos_n.x(),
                e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(), e.euler.x(),
                e.euler.y(), e.euler.z());
@@ -199,6 +203,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     sumH2 += err.horizontal() * err.horizontal();
     sumV2 += err.vertical() * err.vertical();
     ++rows;
+    requireFiniteError(err);  // with or without files: the Python module returned NaN arrays
     if (opt.onRow) opt.onRow(err);
     if (track) track->add(e.truth, navState, err);
     if (out) {
@@ -258,7 +263,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
     if (sc.aiding.filter.enabled) j["filter"] = filterSummaryJson(sc.aiding.filter);
     if (!s.warnings.empty()) j["warnings"] = s.warnings;
     std::FILE* fSum = out->open("summary.json");
-    const std::string text = j.dump(2) + "\n";
+    const std::string text = jsonText(j, 2);
     std::fputs(text.c_str(), fSum);
     out->commit();
     s.outDir = out->dir();

@@ -191,3 +191,30 @@ TEST_CASE("sinsim run and mc: a file size limit (ulimit -f) gives a message nami
   CHECK_FALSE(fs::exists(tmp / "r"));  // no half-written output: the folder it made is gone
   fs::remove_all(tmp);
 }
+
+TEST_CASE("sinsim mc: errors no float holds stop the batch, and its new folder is removed") {
+  // White noise of 1e11 rad/sqrt(s) (inside the model limit of 1e12): the navigation error
+  // passes 3.4e38 m within a second. Before, the batch wrote "CEP -nan" and "-nan" rows, exit 0.
+  const fs::path tmp = tempDir("nonfinite");
+  const fs::path sc = writeScenario(tmp);
+  std::ofstream(tmp / "huge.yaml") << "gyro: {all: [{type: white, density: 1e11 rad/sqrt(s)}]}\n";
+  for (const char* threads : {"1", "2"}) {
+    const Result r = sinsim("mc '" + sc.string() + "' --runs 4 --threads " + threads + " --model '" +
+                                (tmp / "huge.yaml").string() + "' -o '" + (tmp / "m").string() + "'",
+                            tmp);
+    INFO(r.err);
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.find("the navigation error became non-finite at t = ") != std::string::npos);
+    CHECK_FALSE(fs::exists(tmp / "m"));  // no checkpoint folder: the rerun needs no --resume
+  }
+  // A folder the user made keeps what it held.
+  fs::create_directories(tmp / "mine");
+  std::ofstream(tmp / "mine" / "notes.txt") << "mine\n";
+  const Result r = sinsim("mc '" + sc.string() + "' --runs 4 --threads 1 --model '" + (tmp / "huge.yaml").string() +
+                              "' -o '" + (tmp / "mine").string() + "'",
+                          tmp);
+  CHECK(r.exitCode == 1);
+  CHECK(slurp(tmp / "mine" / "notes.txt") == "mine\n");
+  CHECK_FALSE(fs::exists(tmp / "mine" / "runs"));
+  fs::remove_all(tmp);
+}
