@@ -12,7 +12,25 @@ namespace sinsim::python {
 
 namespace fs = std::filesystem;
 
-YAML::Node yamlTree(const py::handle& v, const std::string& path) {
+namespace {
+
+/// Nesting a dict or list may have: yaml-cpp's parser refuses a file nested deeper than 2000, and
+/// a Python tree must stop where a file would (a dict holding itself recursed until the stack
+/// overflowed: a segfault).
+constexpr int kMaxDepth = 1000;
+
+YAML::Node tree(const py::handle& v, const std::string& path, int depth);
+
+}  // namespace
+
+YAML::Node yamlTree(const py::handle& v, const std::string& path) { return tree(v, path, 0); }
+
+namespace {
+
+YAML::Node tree(const py::handle& v, const std::string& path, int depth) {
+  if (depth > kMaxDepth)
+    throw InputError((path.empty() ? std::string("value") : path.substr(0, 200) + " ...") + ": nested deeper than " +
+                     std::to_string(kMaxDepth) + " levels (a dict or list that holds itself?)");
   if (v.is_none()) return YAML::Node(YAML::NodeType::Null);
   if (py::isinstance<py::bool_>(v)) return YAML::Node(v.cast<bool>() ? "true" : "false");
   if (py::isinstance<py::str>(v)) return YAML::Node(v.cast<std::string>());
@@ -25,7 +43,7 @@ YAML::Node yamlTree(const py::handle& v, const std::string& path) {
   // NumPy scalars (np.int64, np.float32, 0-d arrays) as the Python scalar they hold.
   if (py::hasattr(v, "dtype") && py::hasattr(v, "item") &&
       !(py::isinstance<py::array>(v) && py::reinterpret_borrow<py::array>(v).ndim() > 0))
-    return yamlTree(v.attr("item")(), path);
+    return tree(v.attr("item")(), path, depth + 1);
   if (py::isinstance<py::dict>(v)) {
     YAML::Node n(YAML::NodeType::Map);
     for (const auto& kv : py::reinterpret_borrow<py::dict>(v)) {
@@ -33,20 +51,22 @@ YAML::Node yamlTree(const py::handle& v, const std::string& path) {
         throw InputError(joinKey(path, py::repr(kv.first).cast<std::string>()) +
                          ": a key must be a string");
       const std::string key = kv.first.cast<std::string>();
-      n[key] = yamlTree(kv.second, joinKey(path, key));
+      n[key] = tree(kv.second, joinKey(path, key), depth + 1);
     }
     return n;
   }
   if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::isinstance<py::array>(v)) {
     YAML::Node n(YAML::NodeType::Sequence);
     std::size_t i = 0;
-    for (const auto& item : v) n.push_back(yamlTree(item, path + "[" + std::to_string(i++) + "]"));
+    for (const auto& item : v) n.push_back(tree(item, path + "[" + std::to_string(i++) + "]", depth + 1));
     return n;
   }
   throw InputError((path.empty() ? std::string("value") : path) + ": cannot use a Python " +
                    py::str(v.get_type().attr("__name__")).cast<std::string>() +
                    " (expected str, number, bool, None, dict or list)");
 }
+
+}  // namespace
 
 sim::Scenario toScenario(const py::handle& v) {
   if (py::isinstance<sim::Scenario>(v)) return v.cast<sim::Scenario>();

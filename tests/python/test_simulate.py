@@ -132,3 +132,23 @@ def test_mc_refuses_duplicate_labels(tmp_path):
     sc, model = scenario_file(tmp_path)
     with pytest.raises(sinsim.InputError, match="labelled"):
         sinsim.mc(sc, models=[sinsim.Model(model), sinsim.Model(model)], runs=8)
+
+
+def test_a_dict_or_list_that_holds_itself_is_an_error_not_a_crash():
+    # A dict holding itself (or 100 000 levels deep) recursed until the stack overflowed: the
+    # interpreter died of a segfault. Now refused at 1000 levels, the depth a YAML file may have.
+    seg = {"type": "static", "duration": "10 s"}
+    seg["x"] = seg
+    bad = dict(static_scenario(1), segments=[seg])
+    with pytest.raises(sinsim.InputError, match="nested deeper than 1000 levels"):
+        sinsim.Scenario(bad)
+    loop = []
+    loop.append(loop)
+    with pytest.raises(sinsim.InputError, match="nested deeper"):
+        sinsim.Model({"gyro": {"all": loop}})
+    deep = cur = {}
+    for _ in range(100000):
+        cur["a"] = {}
+        cur = cur["a"]
+    with pytest.raises(sinsim.InputError, match="nested deeper"):
+        sinsim.Scenario(dict(static_scenario(1), description=deep))
