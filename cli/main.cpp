@@ -13,6 +13,7 @@
 #include "cli/terminal.hpp"
 #include "common/error.hpp"
 #include "common/progress.hpp"
+#include "common/read_file.hpp"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
   // Beyond a file size limit (ulimit -f) a write fails with EFBIG and is reported with the file's
   // name, instead of SIGXFSZ killing the process without a word.
   std::signal(SIGXFSZ, SIG_IGN);
+  // One command per process: an output never replaces a file the command read.
+  sinsim::trackInputFiles();
   CLI::App app{"sinsim: strapdown INS simulator and inertial-sensor error-model lab"};
   app.require_subcommand(0, 1);
   sinsim::cli::Action action;

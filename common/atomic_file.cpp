@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "common/read_file.hpp"
 
 namespace sinsim {
 namespace {
@@ -35,6 +36,7 @@ std::FILE* openTemporary(const std::string& path, std::string& temp) {
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw InputError("cannot write " + path +
                      ": it is a device, pipe or socket; sinsim writes regular files only");
+  requireNotAnInput(path);
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
                    std::to_string(counter++)))

@@ -6,7 +6,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
+#include <utility>
 
 #include "common/error.hpp"
 
@@ -17,7 +20,32 @@ std::string& sandbox() {
   static std::string dir;
   return dir;
 }
+
+/// The inputs read so far, by device and inode (a link or another spelling is the same file).
+struct Inputs {
+  std::mutex mutex;
+  bool tracking = false;
+  std::set<std::pair<dev_t, ino_t>> files;
+};
+Inputs& inputs() {
+  static Inputs in;
+  return in;
+}
 }  // namespace
+
+void trackInputFiles() {
+  std::lock_guard<std::mutex> lock(inputs().mutex);
+  inputs().tracking = true;
+}
+
+void requireNotAnInput(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return;  // nothing there yet
+  std::lock_guard<std::mutex> lock(inputs().mutex);
+  if (inputs().files.count({st.st_dev, st.st_ino}))
+    throw InputError("cannot write " + path + ": it is an input of this command, which it would replace; "
+                     "give another output name");
+}
 
 void restrictInputFilesTo(const std::string& dir) {
   sandbox() = dir.empty() ? "" : std::filesystem::weakly_canonical(dir).string() + "/";
@@ -37,6 +65,8 @@ void requireRegularFile(const std::string& path, const std::string& what) {
   if (!S_ISREG(st.st_mode))
     throw InputError(path + ": is a device, pipe or socket, expected a " + what +
                      " (a regular file)");
+  std::lock_guard<std::mutex> lock(inputs().mutex);
+  if (inputs().tracking) inputs().files.insert({st.st_dev, st.st_ino});
 }
 
 std::string readRegularFile(const std::string& path, std::size_t maxBytes,

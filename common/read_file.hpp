@@ -16,6 +16,14 @@ void requireRegularFile(const std::string& path, const std::string& what);
 std::string readRegularFile(const std::string& path, std::size_t maxBytes,
                             const std::string& what);
 
+/// From now on, every file requireRegularFile accepts is remembered as an input of this process
+/// (a command line run: one command), and requireNotAnInput refuses to write over one: `fit
+/// rec.csv -o rec.csv` replaced the record with the model. Off by default (a Python session
+/// rewrites its own files on purpose).
+void trackInputFiles();
+/// Throws InputError "cannot write PATH: ..." when PATH is (a link to) a remembered input.
+void requireNotAnInput(const std::string& path);
+
 /// Refuses, from now on, every input file outside `dir` (fuzzing harnesses: a fuzzed scenario
 /// must not read arbitrary paths such as `errors: /etc/shadow`). Empty: no restriction.
 void restrictInputFilesTo(const std::string& dir);

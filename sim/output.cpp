@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "common/error.hpp"
+#include "common/read_file.hpp"
 
 namespace sinsim::sim {
 
@@ -53,6 +54,7 @@ std::FILE* OutputFiles::open(const std::string& name) {
                      (fs::is_directory(st) ? std::string("a folder; give a file name")
                                            : std::string("a device, pipe or socket; sinsim "
                                                          "writes regular files only")));
+  requireNotAnInput(f.finalPath);
   f.tempPath = (fs::path(dir_) / ("." + name + ".tmp." + std::to_string(::getpid()))).string();
   f.fp = std::fopen(f.tempPath.c_str(), "w");
   if (!f.fp) throw Error(writeErrorMessage(f.tempPath, errno));

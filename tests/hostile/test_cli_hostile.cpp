@@ -230,3 +230,37 @@ TEST_CASE("sinsim fit and diagnose: a dead channel among live ones is named with
   CHECK(runSinsim("fit " + (d / "named.csv").string() + " --rate 100 -o " + model.string(), d / "err") == 1);
   CHECK_THAT(slurp(d / "err"), Contains("the file's other columns: gyro_x, gyro_y;"));
 }
+
+TEST_CASE("sinsim: an output never replaces a file the command read") {
+  // `fit rec.csv -o rec.csv` replaced the record with the model, `synth m.yaml -o m.yaml` the
+  // model with a record, `run s.yaml --html s.yaml` the scenario with a page: exit 0 each time.
+  const fs::path d = tempDir("same");
+  std::string rec = "t,gx\n";
+  for (int k = 0; k < 400; ++k) rec += std::to_string(0.01 * k) + "," + std::to_string(0.001 * (k % 7) - 0.003) + "\n";
+  writeText(d / "rec.csv", rec);
+  writeText(d / "m.yaml", "gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]}\n");
+  writeText(d / "s.yaml", "start: {latitude: 45 deg, longitude: 7 deg}\nsegments: [{type: static, duration: 2 s}]\n");
+  fs::create_symlink(d / "rec.csv", d / "link.csv");
+  const std::string r = (d / "rec.csv").string(), m = (d / "m.yaml").string(), s = (d / "s.yaml").string();
+  const struct {
+    std::string args, target;
+  } cases[] = {
+      {"fit " + r + " -o " + r, r},
+      {"fit " + r + " -o " + (d / "link.csv").string(), (d / "link.csv").string()},  // another name, the same file
+      {"analyze " + r + " --json " + r, r},
+      {"analyze " + r + " --html " + r, r},
+      {"synth " + m + " --rate 100 --duration 10 -o " + m, m},
+      {"diagnose " + r + " --model " + m + " --json " + m, m},
+      {"run " + s + " -o " + (d / "o").string() + " --html " + s, s},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    CHECK(runSinsim(c.args, d / "err") == 1);
+    CHECK_THAT(slurp(d / "err"), Contains("cannot write " + c.target + ": it is an input of this command"));
+  }
+  CHECK(slurp(d / "rec.csv") == rec);  // every input as it was
+  CHECK(slurp(d / "m.yaml") == "gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]}\n");
+  CHECK(fs::is_symlink(d / "link.csv"));
+  CHECK(slurp(d / "s.yaml").rfind("start:", 0) == 0);
+  CHECK(runSinsim("fit " + r + " -o " + (d / "model.yaml").string() + " -q", d / "err") == 0);  // another file: as ever
+}
