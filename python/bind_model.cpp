@@ -3,7 +3,10 @@
 // values (withParameter, scaleParameter, withEffect, withoutEffects), each returning a new Model.
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
 #include "python/bindings.hpp"
@@ -69,8 +72,22 @@ py::list effectList(const Model& m) {
   return out;
 }
 
-// The edited spec must still build (an effect's own rules, e.g. a stable AR polynomial).
+// The edited spec must still build (an effect's own rules, e.g. a stable AR polynomial), and hold
+// only values a model file may (limits::kMaxQuantity, as the reader): a density of 1e200 ran to
+// NaN, and its file was refused when read back.
 Model checked(Model m) {
+  for (em::Sensor s : {em::Sensor::gyro, em::Sensor::accel})
+    for (em::EffectList l : {em::EffectList::triad, em::EffectList::all, em::EffectList::x,
+                             em::EffectList::y, em::EffectList::z}) {
+      const auto& effects = m.spec.sensor(s).list(l);
+      for (std::size_t i = 0; i < effects.size(); ++i)
+        for (const auto& p : effects[i].parameters)
+          for (double v : p.values)
+            if (!(std::abs(v) <= limits::kMaxQuantity))
+              throw InputError(std::string(em::sensorName(s)) + "." + em::listName(l) + "[" + std::to_string(i) +
+                               "]." + p.key + ": " + limits::fmt(v) + " (SI) is beyond any physical value (|x| <= " +
+                               limits::fmt(limits::kMaxQuantity) + "; docs/limits.md)");
+    }
   em::ImuErrorModel::fromSpec(m.spec, m.label);
   return m;
 }

@@ -152,3 +152,14 @@ def test_a_dict_or_list_that_holds_itself_is_an_error_not_a_crash():
         cur = cur["a"]
     with pytest.raises(sinsim.InputError, match="nested deeper"):
         sinsim.Scenario(dict(static_scenario(1), description=deep))
+
+
+def test_model_edits_hold_to_the_model_files_limits():
+    # with_param / scaled wrote 1e200 into a model: run returned NaN, and the file Model.write
+    # made was refused when read back. Now refused as the reader refuses it.
+    m = sinsim.Model(WHITE_GYRO)
+    with pytest.raises(sinsim.InputError, match=r"gyro.all\[0\].density: .* beyond any physical value"):
+        m.with_param("gyro", "all", 0, "density", 1e200)
+    with pytest.raises(sinsim.InputError, match="beyond any physical value"):
+        m.scaled("gyro", "all", 0, "density", 1e300)
+    assert m.with_param("gyro", "all", 0, "density", 1e-4) is not None  # an ordinary edit as ever
