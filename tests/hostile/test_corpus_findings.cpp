@@ -156,7 +156,7 @@ TEST_CASE("corpus finding, unnamed errors: the file or option is named") {
                       " -o " + (d / "out2").string(),
                   d / "err") == 1);
   CHECK_THAT(slurp(d / "err"), Contains((d / "s2.yaml").string() + " with model " +
-                                        (d / "ramp.yaml").string() + ": the navigation state"));
+                                        (d / "ramp.yaml").string() + ": the navigation error became non-finite"));
   CHECK_FALSE(fs::exists(d / "out2"));
   // Option values: the option is named.
   writeText(d / "m.yaml", "gyro: {}\n");
