@@ -68,6 +68,8 @@ bool navigate(ImuSource& source, const NavLoopOptions& opt, const EpochSink& sin
   // replayed.
   std::vector<ImuEpoch> head;
   Bias bias;
+  if (!(opt.biasWindow >= 0.0))  // NaN or negative: the Python module read them as 0
+    throw InputError("the bias window (--bias-window) must be >= 0 s, got " + limits::fmt(opt.biasWindow));
   const bool removeBias = opt.biasWindow > 0.0;
   if (removeBias) {
     // In floating point first: llround of 1e308 s × rate overflows.

@@ -163,3 +163,10 @@ def test_model_edits_hold_to_the_model_files_limits():
     with pytest.raises(sinsim.InputError, match="beyond any physical value"):
         m.scaled("gyro", "all", 0, "density", 1e300)
     assert m.with_param("gyro", "all", 0, "density", 1e-4) is not None  # an ordinary edit as ever
+
+
+def test_a_bias_window_that_is_nan_or_negative_is_refused():
+    # Read as 0 (no removal) before, silently.
+    for bad in (float("nan"), -5.0):
+        with pytest.raises(sinsim.InputError, match="bias window"):
+            sinsim.run(static_scenario(1), model="none", bias_window=bad)
