@@ -6,7 +6,9 @@
 
 #include "common/config.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "errormodels/model_io.hpp"
+#include "errormodels/stats/record_time.hpp"
 
 namespace sinsim::python {
 
@@ -140,21 +142,33 @@ errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptio
     if (c.size() != n)
       throw InputError("record dict: \"" + name + "\" has " + std::to_string(c.size()) +
                        " samples, another column " + std::to_string(n));
-    for (double x : c)
+    for (double x : c) {
       if (!std::isfinite(x)) throw InputError("record dict: \"" + name + "\" holds NaN or inf");
+      // As the file reader: beyond this (SI) the statistics' sums of squares overflow (a 1e300
+      // sample gave sd = inf).
+      if (name != "t" && name != "temp" && !(std::abs(x) <= limits::kMaxQuantity))
+        throw InputError("record dict: \"" + name + "\" holds " + limits::fmt(x) + " (SI), beyond any sensor (|x| <= " +
+                         limits::fmt(limits::kMaxQuantity) + "; docs/limits.md)");
+    }
   };
   agree(r.t, "t");
   for (int i = 0; i < 3; ++i) agree(r.gyro[i], g[i]), agree(r.accel[i], a[i]);
   agree(r.temperature, "temp");
   if (n == 0) throw InputError("record dict: no samples (give gx..az arrays)");
   r.rows = n;
-  if (d.contains("rate")) {
-    r.rate_hz = d["rate"].cast<double>();
-  } else if (options.rate_hz) {
-    r.rate_hz = *options.rate_hz;
-  }
-  if (!(std::isfinite(r.rate_hz) && r.rate_hz > 0))
+  errormodels::RecordOptions o = options;
+  if (d.contains("rate")) o.rate_hz = d["rate"].cast<double>();
+  if (o.rate_hz && !(std::isfinite(*o.rate_hz) && *o.rate_hz > 0))
+    throw InputError("record dict: \"rate\" must be a sample rate [Hz] > 0");
+  if (!r.t.empty()) {
+    // The file reader's time checks: increasing, uniform (or rounded), the rate agreeing with them.
+    errormodels::detail::checkTime(r, 1, o);
+  } else if (o.rate_hz) {
+    r.rate_hz = *o.rate_hz;
+  } else {
     throw InputError("record dict: give \"rate\": the sample rate [Hz] (> 0)");
+  }
+  errormodels::detail::checkRate(r.rate_hz, r.source, r.t.empty() ? "the given sample rate" : "the time stamps' rate", "");
   return r;
 }
 

@@ -8,6 +8,7 @@
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/progress.hpp"
 #include "sim/output.hpp"
 #include "sim/report/report.hpp"
@@ -53,6 +54,8 @@ ChannelStats channelStats(const std::string& name, const std::vector<double>& y,
   }
   const std::size_t n = z->size();
   const double duration = static_cast<double>(n) / rate_hz;
+  if (!(a.max_lag_s >= 0.0))  // NaN or negative: read as the default before (the Python module)
+    throw InputError("the largest ACF lag (max lag) must be >= 0 s (0: the default), got " + limits::fmt(a.max_lag_s));
   const double max_lag_s = a.max_lag_s > 0 ? a.max_lag_s : std::min(duration / 10.0, 1000.0);
   const std::size_t max_lag =
       std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::llround(max_lag_s * rate_hz)));

@@ -153,3 +153,20 @@ def test_fit_skips_a_settling_with_skip_auto(tmp_path):
         sinsim.fit(rec, axes=["gx"], kind="gm", skip="auto")
     with pytest.raises(sinsim.InputError, match="skip"):
         sinsim.fit(rec, axes=["gx"], skip="soon")
+
+
+def test_a_record_dict_is_checked_as_a_file_is():
+    # The dict path skipped the file reader's checks: a 1e300 sample gave sd = inf, a rate of
+    # 1e12 Hz ran, time stamps contradicting the rate and a max_lag of -1 or NaN were ignored.
+    x = np.random.default_rng(1).standard_normal(2000) * 1e-3
+    with pytest.raises(sinsim.InputError, match="beyond any sensor"):
+        sinsim.analyze({"rate": 100.0, "gx": np.r_[x[:-1], 1e300]})
+    with pytest.raises(sinsim.InputError, match="outside what an IMU record can be"):
+        sinsim.analyze({"rate": 1e12, "gx": x})
+    with pytest.raises(sinsim.InputError, match="disagrees with the time stamps"):
+        sinsim.analyze({"rate": 100.0, "t": np.arange(2000) / 200.0, "gx": x})
+    for lag in (-1.0, float("nan")):
+        with pytest.raises(sinsim.InputError, match="max lag"):
+            sinsim.analyze({"rate": 100.0, "gx": x}, max_lag=lag)
+    # Time stamps alone give the rate, as in a file.
+    assert "gx" in sinsim.analyze({"t": np.arange(2000) / 200.0, "gx": x})
