@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "common/error.hpp"
-#include "common/limits.hpp"
 #include "sim/ideal_imu.hpp"
 #include "sim/nav_loop.hpp"
 #include "sim/run.hpp"
@@ -58,11 +56,7 @@ namespace {
 /// One epoch's errors as floats. A value no float holds (NaN, inf, beyond 3.4e38) stops the batch
 /// with the time it happened, as `run` stops: `mc` wrote "CEP -nan" and exit 0.
 void store(float* row, const NavError& e) {
-  for (const nav::Vec3* v : {&e.pos_n, &e.vel_n, &e.euler})
-    if (!(v->array().abs() <= double(std::numeric_limits<float>::max())).all())
-      throw NumericalError("the navigation error became non-finite at t = " + limits::fmt(e.t, 9) +
-                           " s: the motion or the IMU errors are beyond what the simulation holds "
-                           "(docs/limits.md); nothing was written");
+  requireFiniteError(e, double(std::numeric_limits<float>::max()));
   row[kNorth] = float(e.pos_n.x());
   row[kEast] = float(e.pos_n.y());
   row[kDown] = float(e.pos_n.z());

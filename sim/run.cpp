@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -36,9 +37,10 @@ const char* kErrorHeader = "t_s,north_m,east_m,down_m,vn_mps,ve_mps,vd_mps,roll_
 
 // NaN never reaches an output file: a non-finite row stops the run (the OutputFiles guard then
 // removes the temporaries), with the time it happened.
-void requireFiniteRow(std::initializer_list<double> row, double t, const char* what) {
+void requireFiniteRow(std::initializer_list<double> row, double t, const char* what,
+                      double bound = std::numeric_limits<double>::infinity()) {
   for (double v : row)
-    if (!std::isfinite(v))
+    if (!(std::fabs(v) <= bound) || !std::isfinite(v))
       throw NumericalError(std::string("the ") + what + " became non-finite at t = " +
                            limits::fmt(t, 9) +
                            " s: the motion or the IMU errors are beyond what the simulation "
@@ -55,11 +57,15 @@ void writeState(std::FILE* f, const nav::NavState& s) {
                nav::wrapAngle(s.lon) * kDegPerRad, s.h, s.v_n.x(), s.v_n.y(), s.v_n.z(), e.x(), e.y(), e.z());
 }
 
-void requireFiniteError(const NavError& e) {
+}  // namespace
+
+void requireFiniteError(const NavError& e, double bound) {
   requireFiniteRow({e.pos_n.x(), e.pos_n.y(), e.pos_n.z(), e.vel_n.x(), e.vel_n.y(), e.vel_n.z(),
                     e.euler.x(), e.euler.y(), e.euler.z()},
-                   e.t, "navigation error");
+                   e.t, "navigation error", bound);
 }
+
+namespace {
 
 void writeError(std::FILE* f, const NavError& e) {
   std::fprintf(f, "%.6f,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", e.t, e.pos_n.x(),

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <cmath>
 #include <string>
@@ -31,6 +32,10 @@ struct NavError {
 /// exact to O(δ²/R), < 1 µm for errors below 100 m). Attitude as wrapped Euler differences
 /// (meaningless near pitch ±90°, where the Euler angles themselves are).
 NavError navError(const nav::Earth& earth, const nav::NavState& nav, const nav::NavState& truth);
+
+/// Throws NumericalError ("the navigation error became non-finite at t = ...") unless every
+/// component is finite and within `bound` (mc stores floats: 3.4e38).
+void requireFiniteError(const NavError& e, double bound = std::numeric_limits<double>::infinity());
 
 struct RunOptions {
   /// Output folder; empty: compute only, write nothing. Created (with parents) only after the
