@@ -93,7 +93,9 @@ void checkValues(const ParamSpec& p, const ParamSchema& s, Sensor sensor, SpecPr
     const double v = p.values[i];
     if (s.bound == Bound::any && std::isnan(v)) problems.add(key, "expected a number");
     if (s.bound == Bound::positive && !(std::isfinite(v) && v > 0))
-      problems.add(key, "must be positive, got \"" + shown(p, i) + "\"");
+      problems.add(key, p.dims[i] == Dimension::temperature()
+                            ? "must be above absolute zero (0 K = -273.15 degC), got \"" + shown(p, i) + "\""
+                            : "must be positive, got \"" + shown(p, i) + "\"");
     if (s.bound == Bound::nonNegative && !(v >= 0)) problems.add(key, "must be zero or positive");
   }
 }

@@ -45,7 +45,7 @@ const std::vector<ParamSchema>& paramsOf_temperature() {
     return d;
   }();
   static const std::vector<ParamSchema> p = {
-      param("T0", ParamKind::quantity, fixed(Dimension::temperature())).printed(8)
+      param("T0", ParamKind::quantity, fixed(Dimension::temperature())).positive().printed(8)
           .doc("reference temperature"),
       param("coefficients", ParamKind::list, perDegree)
           .doc("c1, c2, ...: signal/degC, signal/degC^2, ... (the constant term is `bias`)")};

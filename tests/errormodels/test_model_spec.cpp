@@ -360,6 +360,15 @@ TEST_CASE("spec: problems name file, line and key, from the reader and from from
   const std::string msg2 = messageOf([&] { errorModelFromString(text, "two.yaml"); });
   CHECK(msg2.find("two.yaml:4: gyro.x[1].sigma: must be positive, got \"-1 deg/s\"") !=
         std::string::npos);
+  // A reference temperature below absolute zero (0 K = -273.15 degC) is refused as such.
+  const std::string msg4 = messageOf([&] {
+    errorModelFromString("accel:\n  x:\n    - {type: temperature, T0: -300 degC, coefficients: [1e-4 m/s^2/K]}\n",
+                         "cold.yaml");
+  });
+  CHECK(msg4.find("cold.yaml:3: accel.x[0].T0: must be above absolute zero (0 K = -273.15 degC), got \"-300 degC\"") !=
+        std::string::npos);
+  CHECK_NOTHROW(errorModelFromString(
+      "accel:\n  x:\n    - {type: temperature, T0: -40 degC, coefficients: [1e-4 m/s^2/K]}\n", "cold.yaml"));
   // A spec built in code with a wrong dimension is refused with its key.
   ErrorModelSpec code = withEffect({}, Sensor::accel, EffectList::y,
                                    EffectSpec::make("white", {ParamSpec::quantity("density", 1.0, Dimension::time())}));
