@@ -31,6 +31,7 @@ struct Column {
   Role role = Role::Aux;
   int axis = 0;
   std::string header;  // as written
+  std::string unit;    // as written in the header's brackets
   double scale = 1.0;   // SI value = scale * file value + offset
   double offset = 0.0;
 };
@@ -175,6 +176,7 @@ std::vector<Column> parseHeader(const std::vector<std::string_view>& fields,
         fail(source, line, "header: column \"" + col.header + "\": unclosed unit bracket");
       name = trimmed(field.substr(0, open));
       unit = trimmed(field.substr(open + 1, close - open - 1));
+      col.unit = limits::echo(unit);
     }
     std::string key = lowered(name);
     if (const ColumnMap* m = mappedAs(options.columns, key, cols.size() + 1)) {
@@ -387,6 +389,14 @@ class RowReader {
   /// mapping) the first data row names the columns "column 1", ... and is read as a row too.
   void header(std::string_view raw, std::size_t number) {
     const std::string_view l = trimmed(raw);
+    if (raw.find('\0') != std::string_view::npos || raw.substr(0, 2) == "\xFF\xFE" || raw.substr(0, 2) == "\xFE\xFF")
+      fail(source_, number,
+           "the file is UTF-16 text (NUL bytes; a spreadsheet's \"Unicode text\" export): save it as "
+           "UTF-8 or ASCII CSV (iconv -f UTF-16 -t UTF-8 in.csv > out.csv)");
+    if (l.find('\r') != std::string_view::npos)
+      fail(source_, number,
+           "the lines end in a carriage return alone (CR, old Mac line ends), so the file reads as one "
+           "line: convert them to LF (tr '\\r' '\\n' < in.csv > out.csv)");
     if (l.empty() || l.front() == '#') return;
     const bool noHeader = headerless(options_.columns);
     headerLine_ = noHeader ? number - 1 : number;
@@ -486,7 +496,7 @@ class RowReader {
       case Role::Gyro: rec.gyro[col.axis] = std::move(v); break;
       case Role::Accel: rec.accel[col.axis] = std::move(v); break;
       case Role::Temperature: rec.temperature = std::move(v); break;
-      case Role::Aux: rec.aux.push_back({col.header, std::move(v)}); break;
+      case Role::Aux: rec.aux.push_back({col.header, std::move(v), col.unit}); break;
     }
   }
 
@@ -568,6 +578,39 @@ std::string timeWarning(const Record& record) {
          " Hz (--allow-irregular-time), the samples either side of a gap joined";
 }
 
+/// Auxiliary columns whose header unit says they hold a quantity the record lacks (see
+/// recordWarnings), each with the mapping that reads it.
+std::vector<std::string> unreadColumnWarnings(const Record& record) {
+  std::vector<std::string> out;
+  std::size_t gyroAxes = 0, accelAxes = 0;
+  for (int i = 0; i < 3; ++i) gyroAxes += record.hasGyro(i), accelAxes += record.hasAccel(i);
+  for (const AuxChannel& a : record.aux) {
+    if (a.unit.empty()) continue;
+    Dimension dim;
+    try {
+      dim = parseUnit(a.unit).dim;
+    } catch (const InputError&) {
+      continue;  // a unit of another kind (uT, hPa, ...): a column the record keeps for the user
+    }
+    struct Kind {
+      const char* what;
+      const char* key;
+    };
+    const std::optional<Kind> kind =
+        dim == Dimension::angularRate() && gyroAxes < 3                ? Kind{"an angular rate", "gx (gy, gz)"}
+        : dim == Dimension::acceleration() && accelAxes < 3            ? Kind{"an acceleration", "ax (ay, az)"}
+        : dim == Dimension::temperature() && record.temperature.empty() ? Kind{"a temperature", "temp"}
+        : dim == Dimension::time() && record.t.empty()                 ? Kind{"a time", "t"}
+                                                                       : std::optional<Kind>{};
+    if (!kind) continue;
+    const std::string name(trimmed(std::string_view(a.name).substr(0, a.name.find_first_of("[("))));
+    out.push_back("column \"" + a.name + "\" is in " + kind->what + " unit but its name is not one sinsim reads, "
+                  "so it is not used; name it " + kind->key + " in the header or map it: --columns \"" +
+                  std::string(kind->key).substr(0, std::string(kind->key).find(' ')) + "=" + name + "\"");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> recordWarnings(const Record& record) {
@@ -603,6 +646,7 @@ std::vector<std::string> recordWarnings(const Record& record) {
                     "are degrees per second at most): did you forget --gyro-unit deg/s? (or the file's unit, "
                     "e.g. mrad/s or deg/h: the values alone cannot tell which)");
   }
+  for (std::string& w : unreadColumnWarnings(record)) out.push_back(std::move(w));
   return out;
 }
 

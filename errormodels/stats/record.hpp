@@ -61,6 +61,7 @@ struct TimeIrregularity {
 struct AuxChannel {
   std::string name;            ///< header text as written
   std::vector<double> values;  ///< as in the file, no unit conversion
+  std::string unit;            ///< the unit written in the header's brackets; empty when none
 };
 
 struct Record {
@@ -118,6 +119,9 @@ bool isConstantChannel(const std::vector<double>& x);
 ///    rate (7.3e-5 rad/s) plus a bias of degrees per second at most, with a sample sd well below
 ///    1 deg/s, so means of norm above 0.5 "rad/s" or a median sample sd above 0.05 "rad/s" are
 ///    another unit read as rad/s (deg/s the likeliest; the values cannot tell mrad/s or deg/h).
+///  - columns: a column whose name is not read (kept as auxiliary) but whose header unit is an
+///    angular rate, an acceleration, a temperature or a time, while the record lacks that quantity
+///    (an axis of it): "gyro_x [deg/s]" beside no gx; it is named with the mapping that reads it.
 /// Over the channels present.
 std::vector<std::string> recordWarnings(const Record& record);
 

@@ -504,3 +504,43 @@ TEST_CASE("record: a logger's trailing separators, quoted names and a units row"
   CHECK(errorOf("t,gx,az\n0,abc,-9.8\n").find("column \"gx\": expected a finite number, got \"abc\"") !=
         std::string::npos);
 }
+
+TEST_CASE("record: UTF-16 text and lines ended by CR alone are named, not read as columns", "[record]") {
+  RecordOptions opt;
+  opt.rate_hz = 100.0;
+  // "gx,gy\n1,2\n" as a spreadsheet's UTF-16 LE export: a byte-order mark and a NUL after each byte.
+  std::string utf16 = "\xFF\xFE";
+  for (char c : std::string("gx,gy\n1,2\n")) utf16 += std::string(1, c) + '\0';
+  CHECK_THAT(errorOf(utf16, opt), Catch::Contains("rec.csv:1: the file is UTF-16 text") &&
+                                      Catch::Contains("iconv -f UTF-16 -t UTF-8"));
+  CHECK_THAT(errorOf(std::string("gx,gy\n1,2\n").insert(0, "\0", 1), opt), Catch::Contains("UTF-16"));
+  // Old Mac line ends: the whole file is one line, which held "more than 64 columns".
+  std::string cr = "t,gx,gy,gz,ax,ay,az";
+  for (int k = 0; k < 20; ++k) cr += "\r" + std::to_string(0.01 * k) + ",0,0,0,0,0,-9.8";
+  CHECK_THAT(errorOf(cr + "\r"), Catch::Contains("rec.csv:1: the lines end in a carriage return alone") &&
+                                     Catch::Contains("tr '\\r' '\\n'"));
+  // CRLF is read as it always was.
+  CHECK(parseRecord("gx,gy\r\n1,2\r\n3,4\r\n", "rec.csv", opt).gyro[1] == std::vector<double>{2.0, 4.0});
+}
+
+TEST_CASE("record: a column in a sensor's unit under a name not read is warned with its mapping", "[record][units]") {
+  RecordOptions opt;
+  opt.rate_hz = 100.0;
+  const std::string rows = "1,2,3,4,5\n1,2,3,4,5\n";
+  auto warnings = [&](const std::string& header) {
+    std::string all;
+    for (const std::string& w : recordWarnings(parseRecord(header + rows, "rec.csv", opt)))
+      if (w.find("its name is not one sinsim reads") != std::string::npos) all += w + "\n";
+    return all;
+  };
+  // A gyro on two named axes and one under its logger's name; a die temperature; a pressure.
+  const std::string w = warnings("gx,gy,gyro_z [deg/s],die_temp[degC],p [Pa]\n");
+  CHECK_THAT(w, Catch::Contains("column \"gyro_z [deg/s]\" is in an angular rate unit") &&
+                    Catch::Contains("--columns \"gx=gyro_z\"") && Catch::Contains("name it gx (gy, gz)"));
+  CHECK_THAT(w, Catch::Contains("column \"die_temp[degC]\" is in a temperature unit") &&
+                    Catch::Contains("--columns \"temp=die_temp\""));
+  CHECK(w.find("p [Pa]") == std::string::npos);  // a unit sinsim does not read: kept for the user
+  // A second temperature or a third gyro set beside a whole record is no warning.
+  CHECK(warnings("gx,gy,gz,temp,t2[degC]\n").empty());
+  CHECK(warnings("gx,gy,gz,g2[deg/s],g3[rad/s]\n").empty());
+}
