@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/terminal.hpp"
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/progress.hpp"
 #include "common/read_file.hpp"
 
@@ -104,10 +105,10 @@ int main(int argc, char** argv) {
     std::cerr << sinsim::cli::interruptedMessage(command) << "no output was written\n";
     return sinsim::cli::interruptedExitCode();
   } catch (const sinsim::Error& e) {
-    std::cerr << "sinsim: error: " << e.what() << "\n";
+    std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.what()) << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "sinsim: internal error: " << e.what() << "\n";
+    std::cerr << "sinsim: internal error: " << sinsim::limits::messageText(e.what()) << "\n";
     return 1;
   }
 }

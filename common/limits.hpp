@@ -93,8 +93,13 @@ constexpr std::size_t kMaxRecordCells = 300000000;
 constexpr std::size_t kMaxFieldChars = 64;
 
 /// `text` for a message: at most kMaxEchoChars characters, longer ones cut with a note of the
-/// full length; control characters (NUL, escapes) shown as \xNN.
+/// full length; control characters (NUL, escapes) and bytes that are not UTF-8 (Latin-1) shown
+/// as \xNN.
 std::string echo(std::string_view text);
+
+/// A whole message for the terminal: bytes that are not UTF-8 (a Latin-1 file name or key) shown
+/// as \xNN, control characters too except line ends and tabs.
+std::string messageText(std::string_view text);
 
 /// Does duration × rate exceed kMaxSamples (or is either not finite)? The product is formed in
 /// floating point before any integer conversion.

@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "python/bindings.hpp"
 
 namespace sinsim::python {
@@ -33,22 +34,25 @@ void bindExceptions(py::module_& m) {
            ".diagnostics lists them as (file, line, key, message).");
   static const py::handle numerical = make("NumericalError", py::make_tuple(error),
                                            "A numerical condition that valid input should not reach.");
+  // Messages reach Python as str: bytes that are not UTF-8 (a Latin-1 key or file name) are shown
+  // as \xNN, or the str could not be made and a UnicodeDecodeError would replace the error.
   py::register_exception_translator([](std::exception_ptr p) {
+    auto text = [](const std::string& s) { return limits::messageText(s); };
     try {
       if (p) std::rethrow_exception(p);
     } catch (const ConfigError& e) {
       py::list diags;
       for (const Diagnostic& d : e.diagnostics())
-        diags.append(py::make_tuple(d.file, d.line, d.key, d.message));
-      py::object ex = py::reinterpret_borrow<py::object>(config)(e.what());
+        diags.append(py::make_tuple(text(d.file), d.line, text(d.key), text(d.message)));
+      py::object ex = py::reinterpret_borrow<py::object>(config)(text(e.what()));
       ex.attr("diagnostics") = diags;
       PyErr_SetObject(config.ptr(), ex.ptr());
     } catch (const InputError& e) {
-      PyErr_SetString(input.ptr(), e.what());
+      PyErr_SetString(input.ptr(), text(e.what()).c_str());
     } catch (const NumericalError& e) {
-      PyErr_SetString(numerical.ptr(), e.what());
+      PyErr_SetString(numerical.ptr(), text(e.what()).c_str());
     } catch (const Error& e) {
-      PyErr_SetString(error.ptr(), e.what());
+      PyErr_SetString(error.ptr(), text(e.what()).c_str());
     }
   });
 }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/limits.hpp"
 #include "test_support.hpp"
 
 using Catch::Matchers::Contains;
@@ -263,4 +264,20 @@ TEST_CASE("sinsim: an output never replaces a file the command read") {
   CHECK(fs::is_symlink(d / "link.csv"));
   CHECK(slurp(d / "s.yaml").rfind("start:", 0) == 0);
   CHECK(runSinsim("fit " + r + " -o " + (d / "model.yaml").string() + " -q", d / "err") == 0);  // another file: as ever
+}
+
+TEST_CASE("sinsim: bytes that are not UTF-8 in a message are shown as \\xNN, valid UTF-8 as it is") {
+  CHECK(sinsim::limits::echo("gyro_\xe9t\xc3\xa9") == "gyro_\\xe9t\xc3\xa9");      // Latin-1 é, UTF-8 é
+  CHECK(sinsim::limits::echo("\xc3") == "\\xc3");                                  // a cut sequence
+  CHECK(sinsim::limits::echo("\xe2\x82\xac\xed\xa0\x80") == "\xe2\x82\xac\\xed\\xa0\\x80");  // €, a surrogate
+  CHECK(sinsim::limits::messageText("a\n\tb\x01\xff") == "a\n\tb\\x01\\xff");
+  // Through the command line: a Latin-1 key in a scenario (an editor's "temp\xe9rature").
+  const fs::path d = tempDir("latin1");
+  writeText(d / "s.yaml", "start: {latitude: 45 deg, longitude: 7 deg}\ntemp\xe9rature: 20 degC\n"
+                          "segments: [{type: static, duration: 1 s}]\n");
+  CHECK(runSinsim("run " + (d / "s.yaml").string() + " -o " + (d / "o").string(), d / "err") == 1);
+  const std::string err = slurp(d / "err");
+  CHECK_THAT(err, Contains("temp\\xe9rature"));
+  CHECK(err.find('\xe9') == std::string::npos);
+  CHECK_FALSE(fs::exists(d / "o"));
 }
