@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "errormodels/diagnose/base_refit.hpp"
 #include "errormodels/diagnose/channels.hpp"
+#include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/model_drift.hpp"
@@ -96,10 +97,11 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
     if (!bestC) {
       const Sensor sensor = isGyro(w.channel) ? Sensor::gyro : Sensor::accel;
       const auto present = effectTypesOn(model, sensor, w.channel % 3);
-      std::string why = std::find(present.begin(), present.end(), e) != present.end()
-                            ? "the model already has it"
-                            : "no evidence in the record to size it (no temperature channel, no PSD "
-                              "line or no isolated samples)";
+      std::string why = "no evidence in the record to size it";
+      if (std::find(present.begin(), present.end(), e) != present.end()) why = "the model already has it";
+      for (const DetectorType& t : detectorTypes())
+        if (t.effect == e && why != "the model already has it")
+          why += std::string(": its detector looks for ") + t.summary + ", and found none here";
       notes.push_back("cannot add " + e + " to " + w.d.channel + ": " + why);
       continue;
     }
@@ -179,6 +181,24 @@ std::vector<std::string> improvedHeader(const ErrorModelSpec& model, const Recor
   return header;
 }
 
+/// An effect asked for a channel the diagnosis left out (--channels, a dead channel) would be
+/// dropped in silence, the "improved" model written without it: refused with the channels there are.
+void requireDiagnosedChannels(const Run& run, const std::vector<AddRequest>& adds) {
+  for (const auto& a : adds) {
+    if (a.channel.empty()) continue;
+    std::string diagnosed;
+    bool found = false;
+    for (const auto& w : run.work) {
+      diagnosed += (diagnosed.empty() ? "" : " ") + w.d.channel;
+      found = found || w.d.channel == a.channel;
+    }
+    if (!found)
+      throw InputError("--add " + a.effect + ":" + a.channel + ": " + a.channel +
+                       " is not among the channels diagnosed (" + diagnosed +
+                       "): give it in --channels too, or leave :" + a.channel + " out; nothing was written");
+  }
+}
+
 }  // namespace
 
 Improvement improve(const Record& record, const ErrorModelSpec& model, const std::vector<AddRequest>& adds,
@@ -190,6 +210,7 @@ Improvement improve(const Record& record, const ErrorModelSpec& model, const std
   const Record& netRecord = net ? net->record : record;
   const ErrorModelSpec& netModel = net ? net->model : model;
   const Run run = diagnoseRun(netRecord, netModel, options);
+  requireDiagnosedChannels(run, adds);
   Improvement imp;
   imp.before = run.d;
   if (net) stateModelDrift(imp.before, net->drift);

@@ -495,3 +495,15 @@ TEST_CASE("fit writes a record's value lattice and diagnose of the same record n
       for (const auto& f : gx.findings) CHECK(!(f.effect == "quantization" && f.reported));
     }
 }
+
+TEST_CASE("diagnose: an effect added to a channel the diagnosis leaves out is refused, naming the channels diagnosed", "[diagnose]") {
+  // Before, `--channels gx --add ramp:az` wrote an "improved" model with nothing added, exit 0.
+  const auto r = record("", 7);
+  const auto base = errorModelFromString(kBase, "base.yaml");
+  try {
+    (void)dg::improve(r, base, {dg::AddRequest::parse("ramp:az")}, options());
+    FAIL("expected an InputError");
+  } catch (const sinsim::InputError& e) {
+    CHECK(std::string(e.what()).find("--add ramp:az: az is not among the channels diagnosed (gx)") != std::string::npos);
+  }
+}
