@@ -227,6 +227,8 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   if (!navigate(source, loop, onEpoch)) throw Interrupted();
   s.final = err;
   if (aiding) s.outages = aiding->aided().outages();
+  if (aiding)
+    if (std::string w = aiding->innovationWarning(); !w.empty()) s.warnings.push_back(std::move(w));
   s.rmsHorizontal = std::sqrt(sumH2 / static_cast<double>(rows));
   s.rmsVertical = std::sqrt(sumV2 / static_cast<double>(rows));
 

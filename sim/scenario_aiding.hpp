@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "sim/aided/aided_navigation.hpp"
 #include "sim/nav_loop.hpp"
@@ -40,11 +41,21 @@ class ScenarioAiding final : public NavAiding {
   }
   const aided::AidedNavigation& aided() const { return aided_; }
 
+  /// A warning when the GNSS innovations so far are far from what the filter's model predicts:
+  /// their summed NIS outside its chi-square 99.9 % band and its mean off by more than a factor
+  /// of 2 per degree of freedom (a model that understates the errors by ~1.4x in sigma, or
+  /// overstates them); empty with fewer than 10 fixes or when consistent. One run cannot tell
+  /// chance from a wrong model as well as `mc`'s NEES bands can: the warning points there.
+  std::string innovationWarning() const;
+
  private:
   aided::AidedNavigation aided_;
   std::FILE* filterCsv_ = nullptr;
   float* view_ = nullptr;
   std::size_t decimation_ = 1;
+  double nisSum_ = 0.0;    // Σ NIS over the fixes used
+  double nisDof_ = 0.0;    // Σ of their degrees of freedom
+  std::size_t fixes_ = 0;  // fixes used
 };
 
 }  // namespace sinsim::sim

@@ -46,11 +46,13 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
                                        const nav::StrapdownOptions& strapdownOptions,
                                        const nav::NavState& start) {
   if (!config.filter.enabled) return {};
+  std::vector<std::string> out;
+  if (std::string w = noFixWarning(config.gnss, config.alignment.duration); !w.empty()) out.push_back(std::move(w));
   constexpr double deg = kDegPerRad;
   char text[720];
   if (!(config.alignment.duration > 0.0)) {
     const nav::Vec3 s = config.initialErrors.attitude.spread();
-    if (!(s.maxCoeff() > kMaxStartAttitudeSigma)) return {};
+    if (!(s.maxCoeff() > kMaxStartAttitudeSigma)) return out;
     std::snprintf(text, sizeof text,
                   "initial_errors.attitude: the filter starts with an attitude 1-sigma of %.0f deg "
                   "(roll, pitch, yaw: %.1f, %.1f, %.1f deg); the error-state filter is linear in the "
@@ -58,7 +60,8 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
                   "until the attitude is observed are not to be trusted",
                   s.maxCoeff() * deg, s.x() * deg, s.y() * deg, s.z() * deg,
                   kMaxStartAttitudeSigma * deg);
-    return {text};
+    out.push_back(text);
+    return out;
   }
   // The alignment at the true start as the filter's model predicts it (ideal mean signals).
   ErrorStateFilter f(earth, config.filter.sensors, filterOptions(config, strapdownOptions));
@@ -68,7 +71,7 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
                         -C.transpose() * g_n, C.transpose() * earth.omega_ie_n(start.lat),
                         config.alignment.duration);
   const double yaw = std::sqrt(f.P()(nav::kAtt + 2, nav::kAtt + 2));
-  if (!(yaw > kMaxStartAttitudeSigma)) return {};
+  if (!(yaw > kMaxStartAttitudeSigma)) return out;
   std::snprintf(text, sizeof text,
                 "coarse alignment: the filter's own sensor model makes the gyrocompassed heading "
                 "uncertain by %.0f deg (1-sigma); the error-state filter is linear in the attitude "
@@ -78,7 +81,8 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
                 "the heading instead (no alignment, initial_errors.attitude as its accuracy)",
                 yaw * deg, kMaxStartAttitudeSigma * deg,
                 earth.rate() * std::cos(start.lat) * deg * 3600.0);
-  return {text};
+  out.push_back(text);
+  return out;
 }
 
 int neesDof(nav::VerticalChannel vertical) { return vertical == nav::VerticalChannel::Held ? 7 : 9; }
@@ -116,7 +120,7 @@ AidedNavigation::AidedNavigation(const nav::Earth& earth, const AidingConfig& co
       initialError_[3 * p + i] = parts[p]->random ? parts[p]->sigma[i] * w : parts[p]->value[i];
     }
   aligned_ = !(config.alignment.duration > 0.0);
-  for (const TimeWindow& w : config.gnss.outages) outages_.push_back({w, 0.0, 0.0, 0.0});
+  for (const TimeWindow& w : config.gnss.outages) outages_.push_back({w, NAN, NAN, NAN});
   sum_.f_n.setZero();
   sum_.C_nb.setZero();
 }
@@ -225,6 +229,12 @@ nav::ImuSample AidedNavigation::compensate(const nav::ImuSample& measured, const
   return c;
 }
 
+namespace {
+
+double horizontalSigma(const ErrorStateFilter& f) { return std::sqrt(f.P()(0, 0) + f.P()(1, 1)); }
+
+}  // namespace
+
 // Propagates the filter over the step accumulated since the last one, linearised at its means.
 void AidedNavigation::propagateStep(nav::Strapdown& sd) {
   nav::InsErrorPoint p;
@@ -238,6 +248,8 @@ void AidedNavigation::propagateStep(nav::Strapdown& sd) {
   scale.C_omega = sumScale_.C_omega / stepTime_;
   scale.C_f = sumScale_.C_f / stepTime_;
   filter_.propagate(p, stepTime_, scale);
+  if (pendingSigma_) outages_[*pendingSigma_].sigmaHorizontal = horizontalSigma(filter_);  // trackOutage
+  pendingSigma_.reset();
   // The sampled (ar) blocks' predicted effect over the step (zero without them, or without fixes).
   const Vec9 drift = filter_.takeNavCorrection();
   if (!drift.isZero()) sd.correct(drift.segment<3>(0), drift.segment<3>(3), drift.segment<3>(6));
@@ -277,30 +289,34 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
   const bool fixDue = truth.t + 0.5 * m.dt >= tick;
   // Fixes further apart than kMaxPropagationStep: the filter propagates at least that often in
   // between, so that its linearisation follows the motion.
-  if (!fixDue && stepTime_ + 0.5 * m.dt < kMaxPropagationStep) return out;
-  propagateStep(sd);
-  if (!fixDue) return out;
-  ++fixIndex_;
-
-  out.outage = g.inOutage(truth.t);
-  if (!out.outage)
-    fix(truth, m.dtheta_b / m.dt, ideal.dtheta_b / ideal.dt, sd, out);
-
-  out.filtered = true;
-  out.error = navErrorStates(*earth_, sd.state(), truth);
-  const Eigen::Matrix<double, 9, 9> P = filter_.P().topLeftCorner<9, 9>();
-  out.sigma = P.diagonal().cwiseSqrt();
-  out.nees = nees(out.error, P, sdOptions_.vertical);
-  for (OutageResult& o : outages_) {
-    if (!o.window.contains(truth.t)) continue;
-    const double hor = std::hypot(out.error[0], out.error[1]);
-    if (hor >= o.maxHorizontal) {
-      o.maxHorizontal = hor;
-      o.sigmaHorizontal = std::sqrt(P(0, 0) + P(1, 1));
-      o.t = truth.t;
-    }
+  if (fixDue || stepTime_ + 0.5 * m.dt >= kMaxPropagationStep) propagateStep(sd);
+  if (fixDue) {
+    ++fixIndex_;
+    out.outage = g.inOutage(truth.t);
+    if (!out.outage) fix(truth, m.dtheta_b / m.dt, ideal.dtheta_b / ideal.dt, sd, out);
+    out.filtered = true;
+    out.error = navErrorStates(*earth_, sd.state(), truth);
+    const Eigen::Matrix<double, 9, 9> P = filter_.P().topLeftCorner<9, 9>();
+    out.sigma = P.diagonal().cwiseSqrt();
+    out.nees = nees(out.error, P, sdOptions_.vertical);
   }
+  trackOutage(truth, sd);
   return out;
+}
+
+void AidedNavigation::trackOutage(const nav::NavState& truth, const nav::Strapdown& sd) {
+  for (std::size_t i = 0; i < outages_.size(); ++i) {
+    OutageResult& o = outages_[i];
+    if (!o.window.contains(truth.t)) continue;
+    const Vec9 e = navErrorStates(*earth_, sd.state(), truth);
+    const double hor = std::hypot(e[0], e[1]);
+    if (hor < o.maxHorizontal) continue;  // NaN at first: the window's first epoch
+    o.maxHorizontal = hor;
+    o.t = truth.t;
+    // A filter step now: its prediction; else the next step's (propagateStep), the last until then.
+    o.sigmaHorizontal = horizontalSigma(filter_);
+    pendingSigma_ = stepTime_ == 0.0 ? std::optional<std::size_t>() : std::optional<std::size_t>(i);
+  }
 }
 
 }  // namespace sinsim::sim::aided

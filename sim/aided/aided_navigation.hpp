@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,13 +33,16 @@
 
 namespace sinsim::sim::aided {
 
-/// One outage's outcome: the largest horizontal error inside the window and the filter's
-/// horizontal 1-sigma sqrt(P_NN + P_EE) at that moment.
+/// One outage's outcome: the largest horizontal error over the IMU epochs inside the window and
+/// the filter's horizontal 1-sigma sqrt(P_NN + P_EE) predicted at the first filter step at or
+/// after it, before that step's fix (for a maximum at the window's last IMU epoch: the fix at its
+/// end, one interval later; a run that ends between steps: the last step's). NaN for a window the
+/// filter never ran in (inside the alignment).
 struct OutageResult {
   TimeWindow window;
-  double maxHorizontal = 0.0;        // [m]
-  double sigmaHorizontal = 0.0;      // [m]
-  double t = 0.0;                    // when the maximum occurred [s]
+  double maxHorizontal = NAN;        // [m]
+  double sigmaHorizontal = NAN;      // [m]
+  double t = NAN;                    // when the maximum occurred [s]
 };
 
 /// The filter's view at one epoch, against the truth.
@@ -101,6 +105,8 @@ class AidedNavigation {
   // compensate() with the known g-sensitivity of the specific force's increment dv [m/s].
   nav::ImuSample compensate(const nav::ImuSample& measured, const nav::Vec3& dv, double temperature);
   void propagateStep(nav::Strapdown& sd);
+  // The outage windows' maxima, after the interval ending at truth.t.
+  void trackOutage(const nav::NavState& truth, const nav::Strapdown& sd);
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)
   // and the truth's; a velocity fix's lever-arm term needs them.
@@ -125,6 +131,8 @@ class AidedNavigation {
   double stepTime_ = 0.0;
   long long fixIndex_ = 0;  // next GNSS epoch number (t = k / rate)
   std::vector<OutageResult> outages_;
+  // The outage whose maximum came between filter steps: its sigma is the next step's prediction.
+  std::optional<std::size_t> pendingSigma_;
 };
 
 /// The 9 navigation errors nav − truth in the filter's states: δr_n [m] (radii at the truth),

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "errormodels/model_io.hpp"
 #include "sim/aided/filter_model.hpp"
 #include "sim/aided/known_errors.hpp"
@@ -95,7 +96,7 @@ void parseOutages(const ConfigNode& n, double duration, std::vector<TimeWindow>&
     if (!(std::isfinite(tw.start) && std::isfinite(tw.end))) continue;
     if (!w.check(tw.start >= 0.0 && tw.end > tw.start, "expected 0 ≤ start < end")) continue;
     w.check(tw.start < duration || !(duration > 0.0),
-            "the outage starts after the scenario's end");
+            "the outage starts at or after the scenario's end (no epoch inside it)");
     if (duration > 0.0 && tw.end > duration) tw.end = duration, tw.toTheEnd = true;  // "to the end"
     out.push_back(tw);
   }
@@ -126,6 +127,7 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
       n["lever_arm"].check(g.leverArm_b.norm() <= kMaxLeverArm, "expected an antenna within 1 km of the IMU");
   }
   parseOutages(n["outages"], duration, g.outages);
+  g.runEnd = duration;
 }
 
 // A known temperature polynomial is compensated at the scenario's sensor temperature: without
@@ -217,6 +219,40 @@ AidingConfig parseAiding(const ConfigNode& root, const std::string& baseDir, dou
   if (c.gnss.enabled && !root.has("filter"))
     root["gnss"].error("GNSS fixes need a filter to use them (filter: {model: FILE})");
   return c;
+}
+
+namespace {
+
+/// Is some GNSS clock epoch k / rate (k >= 1) inside [a, b)?
+bool fixEpochIn(double rate, double a, double b) {
+  const double k = std::max(1.0, std::ceil(a * rate - 1e-9));
+  return k / rate < b;
+}
+
+/// Does some GNSS clock epoch up to the scenario's end fall after the alignment and outside every
+/// outage (sorted, not overlapping)? Else the filter would never update: its outputs would be the
+/// free-inertial drift beside a covariance that never met a fix.
+bool anyFixUsed(const GnssConfig& g, double alignEnd, double duration) {
+  const double end = duration * (1.0 + 1e-12);  // the last epoch is the end's
+  double from = alignEnd;
+  for (const TimeWindow& w : g.outages) {
+    if (w.start > from && fixEpochIn(g.rate, from, std::min(w.start, end))) return true;
+    from = std::max(from, w.end);
+    if (w.toTheEnd) return false;
+  }
+  return from < end && fixEpochIn(g.rate, from, end);
+}
+
+}  // namespace
+
+std::string noFixWarning(const GnssConfig& g, double alignEnd) {
+  if (!(g.enabled && std::isfinite(g.rate) && g.rate > 0.0 && std::isfinite(g.runEnd) && g.runEnd > 0.0) ||
+      anyFixUsed(g, alignEnd, g.runEnd))
+    return "";
+  return "gnss: no fix is used: fixes every " + limits::fmt(1.0 / g.rate) + " s (rate " + limits::fmt(g.rate) +
+         " Hz) all fall after the scenario's end (" + limits::fmt(g.runEnd) +
+         " s), inside the alignment or inside an outage; the filter only propagates, the navigation is "
+         "the free-inertial one and its sigmas never met a fix";
 }
 
 const std::vector<std::string>& aidingKeys() {

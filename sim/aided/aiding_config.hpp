@@ -9,6 +9,7 @@
 // Read once by the scenario reader (parseAiding); nothing below re-reads YAML.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,8 +63,14 @@ struct GnssConfig {
   std::optional<nav::Vec3> velocitySigma;           // NED [m/s]; none: position only
   nav::Vec3 leverArm_b = nav::Vec3::Zero();         // antenna in body axes [m]
   std::vector<TimeWindow> outages;                  // sorted, no fixes inside
+  double runEnd = NAN;                              // [s] the scenario's end as read (NaN: unknown)
   bool inOutage(double t) const;
 };
+
+/// A warning when no fix falls after the alignment (`alignEnd` [s]), outside every outage and up
+/// to the scenario's end (GNSS at 0.001 Hz in a 10-min run; one outage over the whole run, GNSS
+/// "off" on purpose); empty otherwise.
+std::string noFixWarning(const GnssConfig& g, double alignEnd);
 
 struct FilterConfig {
   bool enabled = false;
