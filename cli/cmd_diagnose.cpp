@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "common/limits.hpp"
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
@@ -141,7 +142,8 @@ void addDiagnoseCommand(CLI::App& app, Action& action) {
   addRecordOptions(c, a->record);
   c->add_option("--realisations", a->realisations, "Monte Carlo realisations of the model (default 32)");
   c->add_option("--seed", a->seed, "seed of the realisations");
-  c->add_option("--threads", a->threads, "worker threads (default: all cores)");
+  c->add_option("--threads", a->threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(0u, sinsim::limits::kMaxThreads));
   auto* nav = c->add_option("--nav", a->scenario,
                             "navigation verdict along a scenario (default scenarios/car.yaml): "
                             "which term and tau band drive its drift, whether the model under- or "

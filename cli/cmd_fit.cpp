@@ -153,7 +153,8 @@ void addFitCommand(CLI::App& app, Action& action) {
       ->required();
   c->add_option("-o,--output", a->output, "model file to write (YAML)")->required();
   c->add_option("--axes", a->axes, "channels to fit, e.g. gx,gy,gz (default: all in the record)");
-  c->add_option("--threads", a->threads, "worker threads over the channels (default: all cores)");
+  c->add_option("--threads", a->threads, "worker threads over the channels (default: all cores)")
+      ->check(CLI::Range(0u, sinsim::limits::kMaxThreads));
   c->add_option("--kind", a->kind, "ar | gm | allan | latent | ar+slow | auto (default auto: see README; gm, latent and ar+slow: docs/fitting.md)");
   c->add_option("--order", a->order, "AR order P or auto (default auto: by --criterion)");
   c->add_option("--criterion", a->criterion, "order criterion: mdl (default) | bic | aic | fpe | paper");

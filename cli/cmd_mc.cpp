@@ -15,6 +15,7 @@
 #include <mpi.h>
 #endif
 
+#include "common/limits.hpp"
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
@@ -264,7 +265,8 @@ void addMcCommand(CLI::App& app, Action& action) {
   c->add_option("--model", a->models,
                 "Error model file (repeat for a comparison; none: perfect IMU). Default: the "
                 "scenario's errors:");
-  c->add_option("--threads", a->threads, "Worker threads (default: all cores)");
+  c->add_option("--threads", a->threads, "Worker threads (default: all cores)")
+      ->check(CLI::Range(0u, sinsim::limits::kMaxThreads));
   c->add_option("--seed", a->seed, "Seed; run k uses StreamKey{seed, k} (default: the scenario's)");
   c->add_flag("--resume", a->resume, "Continue an interrupted batch in DIR from its checkpoints");
   c->add_option("-o,--output", a->outDir, "Output folder (default out/mc-<scenario name>)");

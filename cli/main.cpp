@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
   // run index or a count must be the number given (`mc --runs -5` said "18446744073709551611 is
   // above the limit"). Both `--opt V` and `--opt=V`.
   static const char* const kUnsigned[] = {"--seed", "--run", "--runs", "--realisations",
-                                          "--nav-runs", "--stop-after"};
+                                          "--nav-runs", "--stop-after", "--threads"};
   for (int k = 1; k < argc; ++k) {
     std::string opt = argv[k], v;
     const std::size_t eq = opt.find('=');

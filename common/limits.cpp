@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/error.hpp"
+
 namespace sinsim::limits {
 
 namespace {
@@ -64,6 +66,12 @@ std::string fmt(double x, int digits) {
   os.precision(digits);
   os << x;
   return os.str();
+}
+
+void requireThreads(unsigned threads, const std::string& what) {
+  if (threads > kMaxThreads)
+    throw InputError(what + ": expected 0 (every core) to " + std::to_string(kMaxThreads) + " worker threads, got " +
+                     std::to_string(threads));
 }
 
 }  // namespace sinsim::limits

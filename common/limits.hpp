@@ -35,6 +35,9 @@ constexpr double kMaxQuantity = 1e12;
 /// Real IMUs sample at 1 Hz to a few kHz; 1 mHz admits slow logs (temperature, clocks).
 constexpr double kMinRate = 1e-3;
 constexpr double kMaxRate = 1e5;
+/// Most worker threads a command starts (--threads): beyond, thread creation fails
+/// (100,000 asked for 100,000 runs) long before it could help on any machine.
+constexpr unsigned kMaxThreads = 1024;
 /// [s] Longest scenario (10 days) and shortest segment (one sample of the fastest IMU rate).
 constexpr double kMaxDuration = 864000.0;
 constexpr double kMinSegmentDuration = 1e-5;
@@ -117,5 +120,8 @@ constexpr double kMaxMcResultBytes = 4.0 * (1u << 30);
 
 /// "1e+05" style number with enough digits to tell it from its neighbours (up to 12).
 std::string fmt(double x, int digits = 6);
+
+/// Throws InputError "`what`: expected 0 (every core) to kMaxThreads worker threads" beyond.
+void requireThreads(unsigned threads, const std::string& what);
 
 }  // namespace sinsim::limits

@@ -6,6 +6,7 @@
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/identify.hpp"
 #include "errormodels/model_io.hpp"
+#include "common/limits.hpp"
 #include "python/bindings.hpp"
 #include "sim/analysis.hpp"
 
@@ -118,6 +119,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
   o.channels = channels;
   o.realisations = realisations;
   o.seed = seed;
+  limits::requireThreads(threads, "threads");
   o.threads = threads;
   o.threshold = threshold;
   o.nextThreshold = nextThreshold;

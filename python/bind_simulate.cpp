@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "errormodels/model_io.hpp"
+#include "common/limits.hpp"
 #include "python/bindings.hpp"
 #include "sim/mc_headlines.hpp"
 #include "sim/mc_models.hpp"
@@ -194,6 +195,7 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
   sim::McOptions opt;
   opt.runs = runs;
   opt.seed = seed ? *seed : sc.seed.value_or(0);
+  limits::requireThreads(threads, "threads");
   opt.threads = threads;
   if (!times.is_none())
     for (const auto& t : times) opt.times.push_back(quantityArg(t, Dimension::time(), "times"));
