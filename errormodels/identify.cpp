@@ -339,6 +339,21 @@ void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, do
 }
 
 /// One identification of the record as `opt` says (skipAuto aside).
+/// [s] Records shorter than this are warned: they show tau up to a third of their length, and
+/// the slow terms a navigation drift depends on (Gauss-Markov, random walk, bias instability) are
+/// minutes to hours; static records for a model are 20 min to several hours.
+constexpr double kShortRecord = 60.0;
+
+std::string shortRecordWarning(const Record& record) {
+  const double T = record.duration();
+  if (!(T < kShortRecord)) return "";
+  return "the record is " + limits::fmt(T, 3) + " s long (" + std::to_string(record.size()) +
+         " samples): the fit sees tau up to " + limits::fmt(T / 3.0, 3) +
+         " s only, so no Gauss-Markov, random walk or bias instability slower than that can be told, and "
+         "the model written describes the short-tau noise alone (static records for a model are 20 min "
+         "to several hours)";
+}
+
 Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
   if (!(record.rate_hz > 0.0 && std::isfinite(record.rate_hz)))
     throw InputError(record.source + ": the record has no valid sample rate");
@@ -645,6 +660,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
                         warnings[k].end());
   }
   for (std::string& w : recordWarnings(record)) out.warnings.push_back(std::move(w));
+  if (std::string w = shortRecordWarning(record); !w.empty()) out.warnings.push_back(std::move(w));
   return out;
 }
 

@@ -1101,3 +1101,17 @@ TEST_CASE("auto writes the terms where its AR branch is further off the record t
   }
   CHECK(near == 10);
 }
+
+TEST_CASE("a record shorter than a minute is warned: its slow terms cannot be told", "[identify]") {
+  // 100 samples at 100 Hz of a white + random-walk gyro: tau reaches 0.33 s, the walk is minutes.
+  auto warned = [](double duration) {
+    const Record r = staticRecord("gyro: {x: [{type: white, density: 0.2 deg/sqrt(h)}, {type: random_walk, K: 5 deg/h/sqrt(h)}]}",
+                                  100.0, duration, 3);
+    for (const std::string& w : identify(r, IdentifyOptions{}).warnings)
+      if (w.find("the record is") != std::string::npos) return w;
+    return std::string();
+  };
+  const std::string w = warned(1.0);
+  CHECK(w.find("the record is 1 s long (100 samples): the fit sees tau up to 0.333 s only") != std::string::npos);
+  CHECK(warned(600.0).empty());
+}
