@@ -62,14 +62,22 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
     if (f.reported) o << "  " << a.channel << " " << f.effect << ": " << f.size << " — " << f.evidence << "\n";
   for (const std::string& u : unexplainedSentences(a)) o << "  " << a.channel << " unexplained: " << u << "\n";
   if (const std::string s = switchingSentence(a); !s.empty()) o << "  " << a.channel << " steps: " << s << "\n";
-  // The shapes are compared at the level the record shows (the fitted variance factor s); where
-  // nothing is reported, a base off by more than 2x in ADEV is said (no effect can lower a model
-  // that is too high). Beside findings s also absorbs their fit (a line's, a coarse lattice's).
+  // The shapes are compared at the level the record shows (the fitted variance factor s): a base
+  // off by more than 2x in ADEV is said (no effect can lower a model that is too high). Beside
+  // findings s also absorbs their fit (a line's, a coarse lattice's); a model far above the record
+  // scaled down as a whole may leave a finding standing in for a base term it overstated alone (a
+  // white density 3x too high beside a right AR: a Gauss-Markov of 0.08 s "found"), said too.
   const bool reported = std::any_of(a.findings.begin(), a.findings.end(), [](const Finding& f) { return f.reported; });
-  if (!reported && a.noiseScale > 0 && (a.noiseScale < 0.25 || a.noiseScale > 4))
+  if (a.noiseScale > 0 && (a.noiseScale < 0.25 || a.noiseScale > 4)) {
     o << "  " << a.channel << " level: the record's noise is x" << num(std::sqrt(a.noiseScale), 3)
       << " the model's base noise in ADEV (Allan variance factor " << num(a.noiseScale, 3)
-      << ", fitted with the findings): check the model's units and densities\n";
+      << ", fitted with the findings): check the model's units and densities";
+    if (reported && a.noiseScale < 0.25)
+      o << "; the findings are sized beside the whole base scaled by that factor, so where the model "
+           "overstates one term alone (a white density above the record's) a finding may stand in for the "
+           "other terms it scaled down: check the base first";
+    o << "\n";
+  }
 }
 
 }  // namespace

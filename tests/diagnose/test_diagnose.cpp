@@ -430,6 +430,16 @@ TEST_CASE("a model 10x too high is said to be off in level", "[diagnose]") {
   CHECK_THAT(table, Catch::Contains("gx level: the record's noise is x0.1"));
   CHECK_THAT(table, Catch::Contains("units and densities"));
   CHECK_THAT(dg::summaryTable(dg::diagnose(r, base, options())), !Catch::Contains("level:"));
+  // Beside a reported finding the level is said too, and that the finding was sized at it (a
+  // model overstating one term alone leaves the others short by the same factor).
+  auto withFinding = d;
+  dg::Finding f;
+  f.effect = "gauss_markov";
+  f.reported = true;
+  withFinding.axes.front().findings.insert(withFinding.axes.front().findings.begin(), f);
+  const auto both = dg::summaryTable(withFinding);
+  CHECK_THAT(both, Catch::Contains("gx level: the record's noise is x0.1") && Catch::Contains("check the base first"));
+  CHECK_THAT(table, !Catch::Contains("check the base first"));
 }
 
 // The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
