@@ -662,8 +662,21 @@ void describe(const Problem& p, const SetFit& f, LatentFit& out) {
   out.logCovariance = std::move(t.logCovariance);
   out.birgeScale = t.birgeScale;
   const double duration = p.dt * double(p.N);
+  const double tLo = p.minT, tHi = std::max(p.tau.back(), 2.0 * p.minT);  // the GM range searched
   for (std::size_t g = 0; g < m.gm.size(); ++g) {
     const double T = m.gm[g].tau;
+    // A tau on a bound of its search is a bound, not an estimate (a slow GM pinned at the largest
+    // Allan tau held a sigma 6x too small; a white record's GM pinned at the bottom stood in for
+    // white noise): said, since the T/3 test below cannot fire past the range's top.
+    if (T <= 1.01 * tLo)
+      out.warnings.push_back("gm" + std::to_string(g + 1) + ".tau " + fmt(T) + " s sits at the lowest tau searched (" +
+                             fmt(tLo) + " s: two sample intervals or half the fitted range's first tau): a bound, not "
+                             "an estimate; the record's correlation there is faster than the fit can follow");
+    if (T >= 0.99 * tHi)
+      out.warnings.push_back("gm" + std::to_string(g + 1) + ".tau " + fmt(T) + " s sits at the highest tau searched (" +
+                             fmt(tHi) + " s, the record's largest Allan tau): a bound, not an estimate; a slower "
+                             "correlation is not determined by this record and acts as a random walk (--kind latent or "
+                             "auto can write one)");
     if (T < 2.0 * p.dt)
       out.warnings.push_back("gm" + std::to_string(g + 1) + ".tau " + fmt(T) + " s is below two sample intervals (" +
                              fmt(2.0 * p.dt) + " s): the GM is indistinguishable from white noise there");

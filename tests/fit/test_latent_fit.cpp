@@ -564,3 +564,27 @@ TEST_CASE("latent fit: on a correlated value lattice the block means' slope test
   CHECK(falseDrifts <= 3);
   CHECK(found >= 9);
 }
+
+TEST_CASE("latent fit warns about a GM tau pinned at a bound of its search range", "[fit][latent]") {
+  // 20 min at 100 Hz: the GM is searched up to the largest Allan tau (N dt / 10 = 120 s at most).
+  // A GM of tau 2000 s (a walk over the record) is pinned at the top; its tau is a bound.
+  const double dt = 0.01;
+  const std::size_t N = 120000;
+  const auto m = octaves(N);
+  LatentFitOptions o;
+  o.sampleInterval = dt;
+  o.candidates = {{false, true, 1, false, false, false}};
+  LatentModel slow;
+  slow.white = 5.8e-5;
+  slow.gm = {{2e-3, 2000.0}};
+  const LatentFit f = fitLatentModel(m, latentAllanVariance(slow, dt, m), N, o);
+  std::string all;
+  for (const auto& w : f.warnings) all += w + "\n";
+  INFO(all);
+  CHECK(all.find("sits at the highest tau searched") != std::string::npos);
+  LatentModel ok;
+  ok.white = 5.8e-5;
+  ok.gm = {{2e-4, 2.0}};
+  for (const auto& w : fitLatentModel(m, latentAllanVariance(ok, dt, m), N, o).warnings)
+    CHECK(w.find("sits at") == std::string::npos);
+}
