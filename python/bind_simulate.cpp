@@ -79,6 +79,18 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
   sum["rms_vertical"] = s.rmsVertical;
   sum["wall_time"] = s.wallTime;
   sum["line"] = sim::summaryLine(s);
+  py::list outages;  // as summary.json's: NaN for a window the filter never ran in
+  for (const auto& o : s.outages) {
+    py::dict w;
+    w["start"] = o.window.start;
+    w["end"] = o.window.end;
+    w["max_horizontal"] = o.maxHorizontal;
+    w["at"] = o.t;
+    w["filter_sigma_horizontal"] = o.sigmaHorizontal;
+    outages.append(w);
+  }
+  sum["outages"] = outages;
+  sum["warnings"] = py::cast(s.warnings);
   d["summary"] = sum;
   d["output"] = s.outDir;
   return d;
@@ -103,6 +115,10 @@ py::dict run(const py::object& scenario, const py::object& model, std::optional<
     py::gil_scoped_release release;
     s = sim::run(sc, opt);
   }
+  // The run's warnings (a filter's start, no fix used, innovations beyond its model) as Python
+  // warnings, as `sinsim run` prints them and `fit`'s are.
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& w : s.warnings) warn("run: " + w);
   return runToDict(s, rows);
 }
 

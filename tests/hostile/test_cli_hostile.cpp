@@ -266,7 +266,7 @@ TEST_CASE("sinsim: an output never replaces a file the command read") {
   CHECK(runSinsim("fit " + r + " -o " + (d / "model.yaml").string() + " -q", d / "err") == 0);  // another file: as ever
 }
 
-TEST_CASE("sinsim: bytes that are not UTF-8 in a message are shown as \\xNN, valid UTF-8 as it is") {
+TEST_CASE("sinsim: bytes that are not UTF-8 in a message are shown as hex escapes and valid UTF-8 as it is") {
   CHECK(sinsim::limits::echo("gyro_\xe9t\xc3\xa9") == "gyro_\\xe9t\xc3\xa9");      // Latin-1 é, UTF-8 é
   CHECK(sinsim::limits::echo("\xc3") == "\\xc3");                                  // a cut sequence
   CHECK(sinsim::limits::echo("\xe2\x82\xac\xed\xa0\x80") == "\xe2\x82\xac\\xed\\xa0\\x80");  // €, a surrogate

@@ -170,3 +170,31 @@ def test_a_bias_window_that_is_nan_or_negative_is_refused():
     for bad in (float("nan"), -5.0):
         with pytest.raises(sinsim.InputError, match="bias window"):
             sinsim.run(static_scenario(1), model="none", bias_window=bad)
+
+
+def test_an_aided_run_gives_its_outages_and_warnings(source_dir, tmp_path):
+    # The default aided scenario: two outages, each maximum over every IMU epoch in its window
+    # (the summary.json the same run writes holds the same), no warning. GNSS at 0.001 Hz in the
+    # same 10 minutes uses no fix: warned as a Python warning and in the summary.
+    path = os.path.join(source_dir, "scenarios/car-10min-aided.yaml")
+    r = sinsim.run(path, output=str(tmp_path / "aided"))
+    out = r["summary"]["outages"]
+    assert [(o["start"], o["end"]) for o in out] == [(150.0, 180.0), (400.0, 460.0)]
+    import json
+    with open(tmp_path / "aided" / "summary.json") as f:
+        written = json.load(f)["outages"]
+    for o, w in zip(out, written):
+        assert o["max_horizontal"] == pytest.approx(w["max_horizontal_m"], rel=1e-12)
+        assert o["filter_sigma_horizontal"] == pytest.approx(w["filter_sigma_horizontal_m"], rel=1e-12)
+        assert w["start_s"] <= o["at"] < w["end_s"]
+    assert r["summary"]["warnings"] == []
+    with open(path) as f:
+        text = f.read()
+    assert "\n  rate: 1 Hz" in text  # the GNSS rate (output_rate is another key)
+    slow = tmp_path / "slow.yaml"
+    slow.write_text(text.replace("\n  rate: 1 Hz", "\n  rate: 0.001 Hz").replace(
+        "model: aided-model.yaml", "model: " + os.path.join(source_dir, "scenarios/aided-model.yaml")).replace(
+        "errors: aided-model.yaml", "errors: " + os.path.join(source_dir, "scenarios/aided-model.yaml")))
+    with pytest.warns(UserWarning, match="run: gnss: no fix is used"):
+        r = sinsim.run(str(slow))
+    assert any("no fix is used" in w for w in r["summary"]["warnings"])
