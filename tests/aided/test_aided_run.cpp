@@ -333,7 +333,7 @@ filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
   }
 }
 
-TEST_CASE("an outage's maximum is over every IMU epoch in its window, with the filter's sigma propagated there") {
+TEST_CASE("an outage's maximum is over every IMU epoch in its window, with the sigma the next filter step predicts") {
   // A 1 mg north accelerometer bias the filter's model lacks: the error grows through the 30 s
   // outage to its last IMU epoch (119.99 s), 10 ms before the next fix; a maximum taken at the
   // 1 Hz fixes stopped at 119 s, 4 % low. A window inside the alignment has no filter: empty.
@@ -368,7 +368,7 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]},
   CHECK(atRow == Approx(119.99).margin(1e-9));
   CHECK(w.maxHorizontal == Approx(maxRow).epsilon(1e-9));
   // The filter's sigma at the last fix epoch inside the window (119 s), from filter.csv: the one
-  // propagated 0.99 s further grew about as much as in the second before (it accelerates).
+  // the step at 120 s predicts (before its fix) grew about as much as in the second before.
   std::ifstream f(o.outDir + "/filter.csv");
   std::string row;
   std::vector<double> sigma;  // horizontal sigma at 118 s, 119 s
