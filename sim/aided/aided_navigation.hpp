@@ -68,7 +68,8 @@ int neesDof(nav::VerticalChannel vertical);
 constexpr double kMaxStartAttitudeSigma = 10.0 * kRadPerDeg;
 
 /// What every run of the scenario should warn about, from its aiding and true start (static when
-/// it aligns): a filter attitude 1-sigma at the start beyond kMaxStartAttitudeSigma — from
+/// it aligns): no GNSS fix used (noFixWarning); a filter attitude 1-sigma at the start beyond
+/// kMaxStartAttitudeSigma — from
 /// initial_errors.attitude, or from the coarse alignment as the filter's own model predicts it
 /// (ErrorStateFilter::startAfterAlignment; a gyro too poor to gyrocompass). Empty without a filter.
 std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConfig& config,
