@@ -415,3 +415,30 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}]}, accel: 
   CHECK(warnings("gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 2 m], outages: [[0 s, 119.5 s]]}\n").find("no fix") ==
         std::string::npos);
 }
+
+TEST_CASE("run warns when the GNSS innovations are far beyond what the filter's model predicts") {
+  // Truth: white gyro and accelerometer noise of a MEMS and a 10 mg accelerometer bias; the
+  // filter's model: the same, or ten times less noise and no bias. The NIS sum over the fixes is
+  // a chi-square of 3 per fix when the model is right.
+  const std::string base = std::string(kBase) + R"(
+errors: {gyro: {all: [{type: white, density: 0.3 deg/sqrt(h)}]},
+         accel: {all: [{type: white, density: 0.1 m/s/sqrt(h)}], x: [{type: bias, value: 10 mg}]}}
+gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 2 m]}
+)";
+  auto warnings = [&](const std::string& filter) {
+    std::string all;
+    for (const std::string& w : sim::run(sim::parseScenario(base + filter, "nis.yaml"), {}).warnings) all += w;
+    return all;
+  };
+  const std::string right = warnings(R"(
+filter: {model: {gyro: {all: [{type: white, density: 0.3 deg/sqrt(h)}]},
+                 accel: {all: [{type: white, density: 0.1 m/s/sqrt(h)}, {type: bias, sigma: 10 mg}]}}}
+)");
+  CHECK(right.find("innovations") == std::string::npos);
+  const std::string blind = warnings(R"(
+filter: {model: {gyro: {all: [{type: white, density: 0.03 deg/sqrt(h)}]},
+                 accel: {all: [{type: white, density: 0.01 m/s/sqrt(h)}]}}}
+)");
+  CHECK_THAT(blind, Catch::Contains("filter: the GNSS innovations are") &&
+                        Catch::Contains("understates the errors (over-confident"));
+}
