@@ -593,20 +593,21 @@ std::vector<std::string> unreadColumnWarnings(const Record& record) {
       continue;  // a unit of another kind (uT, hPa, ...): a column the record keeps for the user
     }
     struct Kind {
-      const char* what;
-      const char* key;
+      const char* what;   // the quantity its unit is
+      const char* names;  // the header names sinsim reads it under
+      const char* key;    // the mapping's quantity
     };
     const std::optional<Kind> kind =
-        dim == Dimension::angularRate() && gyroAxes < 3                ? Kind{"an angular rate", "gx (gy, gz)"}
-        : dim == Dimension::acceleration() && accelAxes < 3            ? Kind{"an acceleration", "ax (ay, az)"}
-        : dim == Dimension::temperature() && record.temperature.empty() ? Kind{"a temperature", "temp"}
-        : dim == Dimension::time() && record.t.empty()                 ? Kind{"a time", "t"}
+        dim == Dimension::angularRate() && gyroAxes < 3                ? Kind{"an angular rate", "gx (gy, gz)", "gx"}
+        : dim == Dimension::acceleration() && accelAxes < 3            ? Kind{"an acceleration", "ax (ay, az)", "ax"}
+        : dim == Dimension::temperature() && record.temperature.empty() ? Kind{"a temperature", "temp", "temp"}
+        : dim == Dimension::time() && record.t.empty()                 ? Kind{"a time", "t", "t"}
                                                                        : std::optional<Kind>{};
     if (!kind) continue;
     const std::string name(trimmed(std::string_view(a.name).substr(0, a.name.find_first_of("[("))));
     out.push_back("column \"" + a.name + "\" is in " + kind->what + " unit but its name is not one sinsim reads, "
-                  "so it is not used; name it " + kind->key + " in the header or map it: --columns \"" +
-                  std::string(kind->key).substr(0, std::string(kind->key).find(' ')) + "=" + name + "\"");
+                  "so it is not used; name it " + kind->names + " in the header or map it: --columns \"" +
+                  kind->key + "=" + name + "\"");
   }
   return out;
 }

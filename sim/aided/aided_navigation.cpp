@@ -300,15 +300,16 @@ FilterEpoch AidedNavigation::afterInterval(const nav::ImuSample& m, const nav::I
     out.sigma = P.diagonal().cwiseSqrt();
     out.nees = nees(out.error, P, sdOptions_.vertical);
   }
-  trackOutage(truth, sd);
+  trackOutage(truth, sd, out);
   return out;
 }
 
-void AidedNavigation::trackOutage(const nav::NavState& truth, const nav::Strapdown& sd) {
+void AidedNavigation::trackOutage(const nav::NavState& truth, const nav::Strapdown& sd, const FilterEpoch& epoch) {
   for (std::size_t i = 0; i < outages_.size(); ++i) {
     OutageResult& o = outages_[i];
     if (!o.window.contains(truth.t)) continue;
-    const Vec9 e = navErrorStates(*earth_, sd.state(), truth);
+    // A filter epoch has its error already; between them it is formed here (outage epochs only).
+    const Vec9 e = epoch.filtered ? Vec9(epoch.error) : navErrorStates(*earth_, sd.state(), truth);
     const double hor = std::hypot(e[0], e[1]);
     if (hor < o.maxHorizontal) continue;  // NaN at first: the window's first epoch
     o.maxHorizontal = hor;

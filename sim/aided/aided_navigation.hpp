@@ -106,8 +106,8 @@ class AidedNavigation {
   // compensate() with the known g-sensitivity of the specific force's increment dv [m/s].
   nav::ImuSample compensate(const nav::ImuSample& measured, const nav::Vec3& dv, double temperature);
   void propagateStep(nav::Strapdown& sd);
-  // The outage windows' maxima, after the interval ending at truth.t.
-  void trackOutage(const nav::NavState& truth, const nav::Strapdown& sd);
+  // The outage windows' maxima, after the interval ending at truth.t (`epoch`: its filter view).
+  void trackOutage(const nav::NavState& truth, const nav::Strapdown& sd, const FilterEpoch& epoch);
   void align(const nav::ImuSample& measured, const nav::NavState& truth, nav::Strapdown& sd);
   // rateNav, rateTrue: the last interval's mean body rates [rad/s], the navigation's (compensated)
   // and the truth's; a velocity fix's lever-arm term needs them.
