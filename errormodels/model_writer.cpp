@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "common/atomic_file.hpp"
+#include "common/constants.hpp"
 #include "errormodels/effect.hpp"
 #include "common/number_text.hpp"
 #include "errormodels/model_io.hpp"
@@ -52,7 +53,7 @@ std::string number(double v, int digits) {
 
 // A lone temperature is absolute: degC with its offset (parseQuantity adds 273.15 back).
 double shownIn(double si, const std::string& unit) {
-  return unit == "degC" ? si - 273.15 : si / parseUnit(unit).si;
+  return unit == "degC" ? si - kZeroCelsius : si / parseUnit(unit).si;
 }
 
 std::string value(double si, Dimension d, Sensor sensor, int digits) {
@@ -66,7 +67,7 @@ double readBack(double si, Dimension d, Sensor sensor, int digits) {
   const std::string unit = displayUnit(d, sensor);
   const double printed = std::strtod(number(unit.empty() ? si : shownIn(si, unit), digits).c_str(), nullptr);
   if (unit.empty()) return printed;
-  return unit == "degC" ? printed + 273.15 : printed * parseUnit(unit).si;
+  return unit == "degC" ? printed + kZeroCelsius : printed * parseUnit(unit).si;
 }
 
 std::string quoted(const std::string& s) {

@@ -12,6 +12,7 @@
 #include "errormodels/model_io.hpp"
 #include "common/limits.hpp"
 #include "python/bindings.hpp"
+#include "sim/mc_batch.hpp"
 #include "sim/mc_headlines.hpp"
 #include "sim/mc_models.hpp"
 #include "sim/mc_output.hpp"
@@ -241,6 +242,11 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
   if (!r.complete) throw Error("mc: the batch did not complete");
   py::dict d = mcToDict(ref, r, list.size(), runs);
   d["output"] = output;
+  // About every run (an aided filter's start), as `sinsim mc` prints them: a key and Python warnings.
+  const std::vector<std::string> warnings = sim::batchWarnings(ref);
+  d["warnings"] = warnings;
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& w : warnings) warn("mc: " + w);
   return d;
 }
 

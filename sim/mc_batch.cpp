@@ -14,6 +14,11 @@
 
 namespace sinsim::sim {
 
+std::vector<std::string> batchWarnings(const Reference& ref) {
+  if (ref.aiding.inert()) return {};
+  return aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
+}
+
 McCommandResult runMcBatch(const McRequest& request) {
   // ---- the reference: a scenario, or a static one matching a measured record ------------------
   Scenario sc;
@@ -56,8 +61,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.modelCount = models.size();
   batch.options = opt;
   batch.samples = ref.samples.size();
-  if (!ref.aiding.inert())
-    batch.warnings = aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
+  batch.warnings = batchWarnings(ref);
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
     for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (batch.result.complete && opt.partition.rank == 0)

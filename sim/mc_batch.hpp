@@ -38,6 +38,10 @@ struct McCommandResult {
   std::vector<std::string> warnings;  ///< about every run (aided: aided::startWarnings)
 };
 
+/// The warnings about every run of a batch along this reference (aided: the filter's start,
+/// aided::startWarnings); empty for a free-inertial one. `sinsim mc` and Python's `mc` print them.
+std::vector<std::string> batchWarnings(const Reference& ref);
+
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,
 /// a record without a model to compare with, and whatever the scenario, record, models and batch
 /// options refuse.

@@ -198,3 +198,7 @@ def test_an_aided_run_gives_its_outages_and_warnings(source_dir, tmp_path):
     with pytest.warns(UserWarning, match="run: gnss: no fix is used"):
         r = sinsim.run(str(slow))
     assert any("no fix is used" in w for w in r["summary"]["warnings"])
+    # mc along the same scenario warns too (it returned the batch in silence).
+    with pytest.warns(UserWarning, match="mc: gnss: no fix is used"):
+        b = sinsim.mc(str(slow), runs=2, threads=1)
+    assert any("no fix is used" in w for w in b["warnings"])

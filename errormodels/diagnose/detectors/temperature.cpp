@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <functional>
 
+#include "common/constants.hpp"
+
 namespace sinsim::errormodels::diagnose::detail {
 
 namespace {
@@ -37,9 +39,9 @@ void describeTemperature(const std::vector<double>& coef, double T0, const Units
     coefStated.push_back(stated(coef[p], unit));
     dims.push_back(signalDim / Dimension::temperature().pow(int(p) + 1));
   }
-  f.size = words + " about " + num(T0 - 273.15, 5) + " degC";
+  f.size = words + " about " + num(T0 - kZeroCelsius, 5) + " degC";
   // T0 stated to 8 digits in degC (an absolute temperature: the offset, not a factor).
-  const double T0stated = std::strtod(num(T0 - 273.15, 8).c_str(), nullptr) + 273.15;
+  const double T0stated = std::strtod(num(T0 - kZeroCelsius, 8).c_str(), nullptr) + kZeroCelsius;
   f.spec = EffectSpec::make("temperature",
                             {ParamSpec::quantity("T0", T0stated, Dimension::temperature()),
                              ParamSpec::quantities("coefficients", coefStated, dims)});
@@ -145,8 +147,8 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
         const double a = zGivenModel(m), b = zCurvature(m);
         return std::hypot(a, b);
       };
-    c.evidence = "block means follow the temperature (" + num(tmin - 273.15, 4) + ".." +
-                 num(tmax - 273.15, 4) + " degC): a degree-" + std::to_string(degree) +
+    c.evidence = "block means follow the temperature (" + num(tmin - kZeroCelsius, 4) + ".." +
+                 num(tmax - kZeroCelsius, 4) + " degC): a degree-" + std::to_string(degree) +
                  " polynomial explains " + num(100 * (1 - r / tot), 3) + " % of their variance" + confounded;
     const Dimension signalDim = ctx.signal;
     c.describe = [coef, T0, u, signalDim](double, Finding& f) { describeTemperature(coef, T0, u, signalDim, f); };
