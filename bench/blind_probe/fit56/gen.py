@@ -43,7 +43,7 @@ for i, c in enumerate(chans):
     N = N_g * s; tr = {'white_density': N}
     y = rng.standard_normal(n) * N / np.sqrt(dt)
     case = a.case
-    if case in ('wgm', 'wgmrw', 'wgmrw2'):
+    if case in ('wgm', 'wgmrw', 'wgmrw2', 'wgmq'):
         sig = a.gm_sig * D2R / 3600 * s; tau = a.gm_tau if a.gm_tau else taus[i]
         y += gm(sig, tau); tr['gm_sigma'] = sig; tr['gm_tau'] = tau
         if case in ('wgmrw', 'wgmrw2'):
@@ -56,7 +56,7 @@ for i, c in enumerate(chans):
     elif case in ('wflrw', 'wflrw2', 'wflrw3'):
         B = 10 * D2R / 3600 * s; K = {'wflrw': 30, 'wflrw2': 150, 'wflrw3': 70}[case] * D2R / 3600 / 60 * s
         y += flicker(B) + rw(K); tr.update(flicker_B=B, rw_K=K)
-    elif case == 'qw':
+    elif case in ('qw', 'wgmq'):
         pass
     elif case == 'wdrift':
         R = 40 * D2R / 3600 / 3600 * s * (1 if i % 2 == 0 else -1)
@@ -66,7 +66,7 @@ for i, c in enumerate(chans):
     else:
         raise SystemExit('unknown case')
     y = y + ideal[c]
-    if case == 'qw':
+    if case in ('qw', 'wgmq'):
         lsb = 2e-5 * s   # increment LSB [rad] or [m/s]
         inc = np.cumsum(y * dt)
         q = np.round(inc / lsb) * lsb
