@@ -242,8 +242,8 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
   if (!r.complete) throw Error("mc: the batch did not complete");
   py::dict d = mcToDict(ref, r, list.size(), runs);
   d["output"] = output;
-  // About every run (an aided filter's start), as `sinsim mc` prints them: a key and Python warnings.
-  const std::vector<std::string> warnings = sim::batchWarnings(ref);
+  // About every run (the duration's rounding, an aided filter's start), as `sinsim mc` prints them: a key and Python warnings.
+  const std::vector<std::string> warnings = sim::batchWarnings(sc, ref);
   d["warnings"] = warnings;
   const py::object warn = py::module_::import("warnings").attr("warn");
   for (const std::string& w : warnings) warn("mc: " + w);

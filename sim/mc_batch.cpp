@@ -14,9 +14,13 @@
 
 namespace sinsim::sim {
 
-std::vector<std::string> batchWarnings(const Reference& ref) {
-  if (ref.aiding.inert()) return {};
-  return aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial);
+std::vector<std::string> batchWarnings(const Scenario& sc, const Reference& ref) {
+  std::vector<std::string> w;
+  if (std::string d = sc.durationWarning(); !d.empty()) w.push_back(std::move(d));
+  if (!ref.aiding.inert())
+    for (std::string& s : aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial))
+      w.push_back(std::move(s));
+  return w;
 }
 
 McCommandResult runMcBatch(const McRequest& request) {
@@ -61,7 +65,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.modelCount = models.size();
   batch.options = opt;
   batch.samples = ref.samples.size();
-  batch.warnings = batchWarnings(ref);
+  batch.warnings = batchWarnings(sc, ref);
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
     for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (batch.result.complete && opt.partition.rank == 0)

@@ -14,6 +14,7 @@
 #include "sim/mc_models.hpp"
 #include "sim/measured.hpp"
 #include "sim/montecarlo.hpp"
+#include "sim/scenario.hpp"
 
 namespace sinsim::sim {
 
@@ -38,9 +39,10 @@ struct McCommandResult {
   std::vector<std::string> warnings;  ///< about every run (aided: aided::startWarnings)
 };
 
-/// The warnings about every run of a batch along this reference (aided: the filter's start,
-/// aided::startWarnings); empty for a free-inertial one. `sinsim mc` and Python's `mc` print them.
-std::vector<std::string> batchWarnings(const Reference& ref);
+/// The warnings about every run of a batch of scenario sc along its reference: a duration of no
+/// whole number of IMU intervals (Scenario::durationWarning), an aided filter's start
+/// (aided::startWarnings). `sinsim mc` and Python's `mc` print them.
+std::vector<std::string> batchWarnings(const Scenario& sc, const Reference& ref);
 
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,
 /// a record without a model to compare with, and whatever the scenario, record, models and batch

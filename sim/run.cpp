@@ -1,5 +1,6 @@
 #include "sim/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -7,6 +8,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -98,6 +100,35 @@ std::unique_ptr<ScenarioAiding> makeAiding(const Scenario& sc, const RunOptions&
   return std::make_unique<ScenarioAiding>(earth, sc, key);
 }
 
+/// Every file a run may write into its folder.
+constexpr const char* kRunFiles[] = {"truth.csv", "nav.csv", "errors.csv", "filter.csv", "imu.csv",
+                                     "summary.json"};
+
+/// Refuses a report written over one of the run's own files (`-o out --html out/truth.csv` wrote
+/// the page over the truth, exit 0).
+void refuseReportOverRunFile(const std::string& html, const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path page = fs::weakly_canonical(html, ec);
+  if (ec) return;  // the report's own checks (AtomicFile) say what is wrong with it
+  for (const char* name : kRunFiles)
+    if (page == fs::weakly_canonical(fs::path(dir) / name, ec) && !ec)
+      throw InputError("--html " + html + " is the run's own " + name + " in " + dir +
+                       ": give the report another name");
+}
+
+/// The run's file names in dir that this run does not write (imu.csv without --imu, filter.csv
+/// of a free-inertial run): an earlier run's, which summary.json would not list.
+std::vector<std::string> staleRunFiles(const std::string& dir, const std::vector<std::string>& written) {
+  std::vector<std::string> stale;
+  std::error_code ec;
+  for (const char* name : kRunFiles)
+    if (std::find(written.begin(), written.end(), name) == written.end() &&
+        std::filesystem::is_regular_file(std::filesystem::path(dir) / name, ec))
+      stale.push_back(name);
+  return stale;
+}
+
 }  // namespace
 
 NavError navError(const nav::Earth& earth, const nav::NavState& nav, const nav::NavState& truth) {
@@ -159,12 +190,12 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   }
 
   std::unique_ptr<RunTrack> track;
+  std::optional<AtomicFile> html;  // after `out`: destroyed first, its temporary before the folder
   if (!opt.htmlPath.empty()) {
-    const std::filesystem::path dir = std::filesystem::path(opt.htmlPath).parent_path();
-    std::error_code ec;
-    if (!dir.empty() && !std::filesystem::is_directory(dir, ec))
-      throw InputError("cannot write " + opt.htmlPath + ": folder " + dir.string() +
-                       " does not exist");
+    if (out) refuseReportOverRunFile(opt.htmlPath, out->dir());
+    // Opened now: a missing folder, a folder, a device or an input is refused before the run
+    // (it was after the outputs had been committed, which stayed behind).
+    html.emplace(opt.htmlPath);
     track = std::make_unique<RunTrack>(source.initial(),
                                        source.sampleCount() / decimation + 1);
   }
@@ -182,6 +213,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   s.duration = static_cast<double>(source.sampleCount()) * (1.0 / sc.imuRate);  // as IdealImu::dt()
   s.imuSamples = source.sampleCount();
   if (aiding) s.warnings = aided::startWarnings(earth, sc.aiding, sc.strapdown, source.initial());
+  if (std::string w = sc.durationWarning(); !w.empty()) s.warnings.insert(s.warnings.begin(), std::move(w));
   if (sc.aiding.filter.enabled) s.filter = filterSummaryLine(sc.aiding.filter);
   double sumH2 = 0.0, sumV2 = 0.0;
   long long rows = 0;
@@ -269,15 +301,21 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
                               {"max_horizontal_m", o.maxHorizontal}, {"at_s", o.t},
                               {"filter_sigma_horizontal_m", o.sigmaHorizontal}});
     if (sc.aiding.filter.enabled) j["filter"] = filterSummaryJson(sc.aiding.filter);
+    const std::vector<std::string> stale = staleRunFiles(out->dir(), s.files);
+    for (const std::string& name : stale)
+      s.warnings.push_back(name + " in " + out->dir() + " was an earlier run's (this run writes none): removed");
     if (!s.warnings.empty()) j["warnings"] = s.warnings;
     std::FILE* fSum = out->open("summary.json");
     const std::string text = jsonText(j, 2);
     std::fputs(text.c_str(), fSum);
     out->commit();
     s.outDir = out->dir();
+    std::error_code ec;  // after the commit: a failed run removes nothing
+    for (const std::string& name : stale) std::filesystem::remove(std::filesystem::path(out->dir()) / name, ec);
   }
   if (track) {
-    writeFileAtomic(opt.htmlPath, runReportHtml(s, *track));
+    std::fputs(runReportHtml(s, *track).c_str(), html->file());
+    html->commit();
     s.report = opt.htmlPath;
   }
   s.wallTime =

@@ -1,5 +1,6 @@
 #include "sim/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -220,6 +221,15 @@ double Scenario::duration() const {
 
 long long Scenario::decimation() const {
   return std::max(1LL, std::llround(imuRate / outputRate));
+}
+
+std::string Scenario::durationWarning() const {
+  const double T = duration(), n = T * imuRate;
+  if (!std::isfinite(n) || std::abs(n - std::round(n)) <= 1e-6 * std::max(1.0, n)) return {};
+  const double end = double(std::llround(n)) / imuRate;
+  return "the segments add up to " + limits::fmt(T) + " s, not a whole number of IMU intervals (" +
+         limits::fmt(1.0 / imuRate) + " s): the run ends at the nearest sample, " + limits::fmt(end) +
+         " s (" + (end < T ? "before the last segment ends" : "the last segment's end state held after it") + ")";
 }
 
 Scenario loadScenario(const std::string& path) {

@@ -45,6 +45,9 @@ struct Scenario {
   MotionProfile motion() const { return MotionProfile(start, segments); }
   /// IMU samples per output row: imuRate / outputRate (an integer by validation).
   long long decimation() const;
+  /// A warning when the segments add up to no whole number of IMU intervals (the run ends at the
+  /// nearest sample, before or after the last segment's end), else empty.
+  std::string durationWarning() const;
 };
 
 /// Reads a scenario file. Every problem of the file (and of an error-model file it names) is

@@ -64,7 +64,8 @@ double readDuration(const ConfigNode& n) {
                "expected a positive duration, got \"" + limits::echo(d.asString().value_or("")) +
                    "\""))
     return NAN;
-  if (!d.check(*v >= limits::kMinSegmentDuration && *v <= limits::kMaxDuration,
+  // 1e-12 relative: "10 us" is 10 * 1e-6 = 9.999999999999999e-06 s, below 1e-5 by rounding.
+  if (!d.check(*v >= limits::kMinSegmentDuration * (1.0 - 1e-12) && *v <= limits::kMaxDuration,
                "expected a duration from " + limits::fmt(limits::kMinSegmentDuration) + " s to " +
                    limits::fmt(limits::kMaxDuration) + " s (10 days), got \"" +
                    limits::echo(d.asString().value_or("")) + "\" (docs/limits.md)"))

@@ -180,6 +180,44 @@ TEST_CASE("sinsim run --html: a report with the track, the errors and the attitu
   CHECK(r.exitCode == 1);
   CHECK(r.err.find("nowhere") != std::string::npos);
   CHECK_FALSE(fs::exists(tmp / "b"));
+
+  // A report over the run's own truth.csv (it was written over it, exit 0), or onto a folder or an
+  // input (refused after the run, its outputs left behind): refused before, no folder left.
+  for (const std::string& page : {(tmp / "c" / "truth.csv").string(), tmp.string(),
+                                   kFixtures + "good_short.yaml"}) {
+    r = sinsim("run " + scenario + " -o '" + (tmp / "c").string() + "' --html '" + page + "'", tmp);
+    INFO(page << "\nstderr: " << r.err);
+    CHECK(r.exitCode == 1);
+    CHECK(r.err.find(page) != std::string::npos);
+    CHECK_FALSE(fs::exists(tmp / "c"));
+  }
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim run: an earlier run's imu.csv in the folder is removed, and a duration between "
+          "IMU samples is warned") {
+  const fs::path tmp = tempDir("stale");
+  const std::string scenario = "'" + kFixtures + "good_short.yaml'";
+  Result r = sinsim("run " + scenario + " -o '" + (tmp / "a").string() + "' --imu", tmp);
+  REQUIRE(r.exitCode == 0);
+  REQUIRE(fs::exists(tmp / "a" / "imu.csv"));
+  r = sinsim("run " + scenario + " -o '" + (tmp / "a").string() + "'", tmp);
+  INFO("stderr: " << r.err);
+  CHECK(r.exitCode == 0);
+  CHECK(r.err.find("imu.csv in " + (tmp / "a").string() + " was an earlier run's") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "a" / "imu.csv"));
+  CHECK(fs::exists(tmp / "a" / "truth.csv"));
+
+  {
+    std::ofstream s(tmp / "odd.yaml");
+    s << "name: odd\nstart: {latitude: 45 deg, longitude: 7 deg}\nimu_rate: 100 Hz\noutput_rate: 100 Hz\n"
+         "segments:\n  - {type: accelerate, speed: 10 m/s, duration: 1.005 s}\n";
+  }
+  r = sinsim("run odd.yaml -o b", tmp, tmp.string());
+  INFO("stderr: " << r.err);
+  CHECK(r.exitCode == 0);
+  CHECK(r.err.find("the segments add up to 1.005 s, not a whole number of IMU intervals (0.01 s): "
+                   "the run ends at the nearest sample, 1 s") != std::string::npos);
   fs::remove_all(tmp);
 }
 
