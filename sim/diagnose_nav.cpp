@@ -7,8 +7,10 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <utility>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "common/parallel.hpp"
 #include "common/progress.hpp"
 #include "errormodels/imu_model.hpp"
@@ -165,6 +167,24 @@ std::string directionOf(double percentile) {
   return percentile >= 100.0 ? "under-predicts" : percentile <= 0.0 ? "over-predicts" : "consistent";
 }
 
+/// BandVerdict::excessBand of b (modelRms already as rms; total: the model's summed mean square).
+/// A correct model puts a band's drift (2-D, about Rayleigh) beyond 3x its rms with chance
+/// ~exp(-9) = 1e-4, so over ~16 bands it is named for ~0.2 % of records.
+int excessBand(const std::vector<std::vector<std::array<double, 2>>>& runs, const BandVerdict& b,
+               double total) {
+  int best = -1;
+  for (std::size_t j = 0; j < b.tau.size(); ++j) {
+    if (!(b.record[j] >= BandVerdict::kExcessRatio * b.modelRms[j]) ||
+        !(b.record[j] * b.record[j] >= 0.25 * total))
+      continue;
+    const bool beyondAll = std::all_of(runs.begin(), runs.end(), [&](const auto& r) {
+      return std::hypot(r[j][0], r[j][1]) < b.record[j];
+    });
+    if (beyondAll && (best < 0 || b.record[j] > b.record[std::size_t(best)])) best = int(j);
+  }
+  return best;
+}
+
 // The band verdict from the model's band drifts (per run) and the record's.
 BandVerdict bandVerdict(const std::vector<std::vector<std::array<double, 2>>>& runs,
                         const std::vector<std::array<double, 2>>& record, std::vector<double> tau) {
@@ -179,16 +199,9 @@ BandVerdict bandVerdict(const std::vector<std::vector<std::array<double, 2>>>& r
     total += b.modelRms[j];
     b.record.push_back(std::hypot(record[j][0], record[j][1]));
   }
-  std::vector<std::size_t> order(nb);
-  for (std::size_t j = 0; j < nb; ++j) order[j] = j, b.share.push_back(total > 0 ? b.modelRms[j] / total : 0.0);
-  std::stable_sort(order.begin(), order.end(), [&](auto i, auto j) { return b.share[i] > b.share[j]; });
-  std::size_t lo = order[0], hi = order[0];
-  double held = 0.0;
-  for (std::size_t i = 0; i < nb && held < 0.5; ++i) {
-    held += b.share[order[i]];
-    lo = std::min(lo, order[i]);
-    hi = std::max(hi, order[i]);
-  }
+  for (std::size_t j = 0; j < nb; ++j) b.share.push_back(total > 0 ? b.modelRms[j] / total : 0.0);
+  const std::pair<std::size_t, std::size_t> band = drivingBands(b.share);
+  const std::size_t lo = band.first, hi = band.second;
   b.from = b.tau[lo];
   b.to = b.tau[hi];
   auto inBand = [&](const std::vector<std::array<double, 2>>& r) {
@@ -209,6 +222,7 @@ BandVerdict bandVerdict(const std::vector<std::vector<std::array<double, 2>>>& r
   b.recordLinear = std::hypot(all[0], all[1]);
   b.percentile = mcstats::percentileOf(model, b.recordDrift);
   b.direction = directionOf(b.percentile);
+  b.excessBand = excessBand(runs, b, total);
   return b;
 }
 
@@ -330,6 +344,12 @@ NavVerdict navigationVerdict(const errormodels::Record& record,
   mo.biasWindow = o.biasWindow;
   s.setup = measuredSetup(record, mo);
   s.rest = buildReference(s.setup.scenario);
+  // Checked here to name diagnose's option (the loop's own check names run's --bias-window).
+  const double replay = double(s.rest.samples.size()) / s.rest.imuRate;
+  if (!(s.setup.biasWindow <= replay + 0.5 / s.rest.imuRate))
+    throw InputError("the bias window (--nav-bias-window) of " + limits::fmt(s.setup.biasWindow) +
+                     " s is longer than the record's replay at rest (" + limits::fmt(replay) +
+                     " s: the shorter of the record and scenario " + scenario.name + ")");
   s.nav.biasWindow = s.setup.biasWindow;
   s.record = navigateMeasured(s.setup, s.rest, s.nav).errors;
 

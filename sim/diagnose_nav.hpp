@@ -65,14 +65,20 @@ struct BandVerdict {
   std::vector<double> share;       ///< of the model's summed mean-square band drift
   std::vector<double> modelRms;    ///< √E[h²] of the model's band-alone drift [m]
   std::vector<double> record;      ///< the record's band-alone horizontal drift [m]
-  /// The driving band: the fewest bands holding ≥ half of the model's mean square, as the τ range
-  /// from the smallest to the largest of them (the bands between included).
+  /// The driving band: the fewest adjacent bands holding ≥ half of the model's mean square (of
+  /// equal counts, the largest share).
   double from = 0.0, to = 0.0;     ///< [s]
   double shareInBand = 0.0;        ///< of the model's mean square in [from, to]
   double modelP50 = 0.0, modelP95 = 0.0;  ///< the model's drift from [from, to] [m]
   double recordDrift = 0.0;        ///< the record's drift from [from, to] [m]
   double percentile = 50.0;        ///< of recordDrift among the model's runs [%]
   std::string direction;           ///< as ModelDrift::direction
+  /// Where the record drifts far beyond the model although the model's own share there is small
+  /// (a term the model lacks; the driving band is the model's view and cannot show it): the band
+  /// whose record drift is largest among those at ≥ kExcessRatio times the model's rms there,
+  /// beyond every run, and at least half the model's whole rms drift; -1: none.
+  static constexpr double kExcessRatio = 3.0;
+  int excessBand = -1;
   /// The record's drift from all bands together (the linearised model's whole answer) [m], to
   /// compare with the navigated drift (NavVerdict::record): they agree while errors stay small.
   double recordLinear = 0.0;

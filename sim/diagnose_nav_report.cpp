@@ -47,6 +47,13 @@ std::string modelLines(const ModelDrift& d, const NavVerdict& v) {
        ", the model's median " + lengthText(b.modelP50, 3) + ", 95 % " + lengthText(b.modelP95, 3) +
        " -> percentile " + significant(b.percentile, 3) + ": " +
        verdictWords(b.direction, v.runs, d.tail) + "\n";
+  if (b.excessBand >= 0) {
+    const std::size_t j = std::size_t(b.excessBand);
+    s += "    but at tau " + tauText(b.tau[j]) + " the record drifts " + lengthText(b.record[j], 3) + ", " +
+         significant(b.record[j] / b.modelRms[j], 3) + "x the model's rms there (" +
+         lengthText(b.modelRms[j], 3) + ", beyond all " + std::to_string(v.runs) +
+         " runs): the model lacks what drives the record's drift at that tau\n";
+  }
   s += "    the record at rest drifts " + lengthText(v.record.endP50(), 3) + " in " +
        minutes(v.replayDuration) + "; the model at rest: median " + lengthText(d.replay.endP50(), 3) +
        ", 95 % " + lengthText(d.replay.endP95(), 3) + " -> percentile " +
@@ -80,7 +87,9 @@ nlohmann::json modelJson(const ModelDrift& d) {
                              {"driving_record_m", b.recordDrift},
                              {"driving_record_percentile", b.percentile},
                              {"driving_direction", b.direction},
-                             {"record_linear_m", b.recordLinear}};
+                             {"record_linear_m", b.recordLinear},
+                             {"excess_tau_s", b.excessBand >= 0 ? nlohmann::json(b.tau[std::size_t(b.excessBand)])
+                                                                : nlohmann::json(nullptr)}};
   return {{"model", d.label},
           {"scenario_drift", curveJson(d.scenario)},
           {"replay_drift", curveJson(d.replay)},
@@ -134,6 +143,12 @@ std::string navWarningText(const NavVerdict& v) {
     const double change = t.meanSquare - (was ? was->meanSquare : 0.0);
     if (up ? change > 0 : change < 0) moved.emplace_back(std::fabs(change), &t);
   }
+  // A group the improved model dropped (an edited model without the random walk): its whole mean
+  // square went; the warning named no group for such a fall.
+  std::vector<const TermShare*> dropped;
+  if (!up)
+    for (const auto& t : v.model.terms)
+      if (!findTerm(v.improved->terms, t)) moved.emplace_back(t.meanSquare, &t), dropped.push_back(&t);
   std::sort(moved.begin(), moved.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   std::string s = "the improved model predicts " + significant(v.ratio, 3) +
                   "x the horizontal drift of the model along " + v.scenario + " (median " +
@@ -142,9 +157,12 @@ std::string navWarningText(const NavVerdict& v) {
   bool deterministic = false;
   for (std::size_t i = 0; i < moved.size() && i < 3; ++i) {
     const TermShare& t = *moved[i].second;
+    const bool gone = std::find(dropped.begin(), dropped.end(), &t) != dropped.end();
     s += std::string(i == 0 ? "; it comes from " : ", ") + t.sensor + " " + t.effect + " (" +
-         pct(t.share) + " of the improved model's mean-square drift, " + pct(t.deterministic) +
-         " of it deterministic)";
+         (gone ? "left out: it held " + pct(t.share) + " of the model's mean-square drift"
+               : pct(t.share) + " of the improved model's mean-square drift, " +
+                     pct(t.deterministic) + " of it deterministic") +
+         ")";
     deterministic = deterministic || (up && t.deterministic > 0.5);
   }
   s += ".";

@@ -2,6 +2,7 @@
 #include "sim/drift_bands.hpp"
 
 #include <cmath>
+#include <numeric>
 
 #include "common/error.hpp"
 
@@ -80,6 +81,20 @@ std::vector<std::array<double, 2>> driftByBand(const ErrorSignal& x, const Drift
     for (int c = 0; c < 2; ++c)
       band[j][c] = j + 1 < levels ? level[j][c] - level[j + 1][c] : level[j][c];
   return band;
+}
+
+std::pair<std::size_t, std::size_t> drivingBands(const std::vector<double>& share) {
+  const std::size_t nb = share.size();
+  for (std::size_t width = 1; width <= nb; ++width) {
+    std::size_t best = nb;
+    double bestSum = -1.0;
+    for (std::size_t lo = 0; lo + width <= nb; ++lo) {
+      const double sum = std::accumulate(share.begin() + long(lo), share.begin() + long(lo + width), 0.0);
+      if (sum > bestSum) bestSum = sum, best = lo;
+    }
+    if (bestSum >= 0.5 || width == nb) return {best, best + width - 1};
+  }
+  return {0, 0};  // no band at all (nb = 0): the caller has none to report
 }
 
 }  // namespace sinsim::sim

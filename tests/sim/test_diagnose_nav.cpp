@@ -102,15 +102,20 @@ TEST_CASE("nav verdict: records from the model itself are inside its runs, a mis
   const auto spec = errorModelFromString(kWhite, "white.yaml");
   // A correct model puts a record above (or below) all 32 runs with probability 1/33 each: 6.1 %
   // "not consistent" per criterion. Over 12 records P(≥ 4 not consistent) = 0.6 %.
-  int endOut = 0, bandOut = 0;
+  // A band beyond 3x the model's rms there, beyond all runs and holding half its whole rms drift
+  // (BandVerdict::excessBand): ~exp(-9) per band, ~0.2 % per record: none of 12.
+  int endOut = 0, bandOut = 0, excess = 0;
   for (std::uint64_t run = 10; run < 22; ++run) {
     const auto v = sim::navigationVerdict(recordFrom(kWhite, run), spec, nullptr, restScenario(), options());
     endOut += v.model.direction != "consistent";
     bandOut += v.model.bands.direction != "consistent";
+    excess += v.model.bands.excessBand >= 0;
   }
-  INFO("end drift outside: " << endOut << " of 12, driving band outside: " << bandOut << " of 12");
+  INFO("end drift outside: " << endOut << " of 12, driving band outside: " << bandOut
+                             << " of 12, a band in excess: " << excess << " of 12");
   CHECK(endOut <= 3);
   CHECK(bandOut <= 3);
+  CHECK(excess == 0);
 
   // A gyro random walk of K = 1e-4 rad/s/√s: its drift g K T^3.5/√252 ≈ 1.2 km dwarfs the white
   // noise's 34 m: the record is above every run (each of 3 records).
@@ -122,7 +127,18 @@ TEST_CASE("nav verdict: records from the model itself are inside its runs, a mis
     const auto v = sim::navigationVerdict(recordFrom(withRw, run), spec, nullptr, restScenario(), options());
     CHECK(v.model.direction == "under-predicts");
     CHECK(v.model.bands.direction == "under-predicts");
+    // The walk's drift comes from long tau (T^3.5): the band in excess is named there.
+    REQUIRE(v.model.bands.excessBand >= 0);
+    CHECK(v.model.bands.tau[std::size_t(v.model.bands.excessBand)] >= 5.0);
+    CHECK(sim::navVerdictText(v).find("the model lacks what drives the record's drift") != std::string::npos);
   }
+  // The walk left out of an edited model: the fall below 1/2 names the group that went (it named
+  // none).
+  const auto rwSpec = errorModelFromString(withRw, "rw.yaml");
+  const auto v = sim::navigationVerdict(recordFrom(withRw, 40), rwSpec, &spec, restScenario(), options());
+  REQUIRE(v.improved);
+  CHECK(v.ratio < 0.5);
+  CHECK(v.warning.find("gyro random_walk (left out") != std::string::npos);
 }
 
 TEST_CASE("nav verdict: paired before/after, and the warning for a deterministic warm-up") {

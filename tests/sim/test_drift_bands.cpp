@@ -89,3 +89,14 @@ TEST_CASE("drift bands: white accelerometer noise through a bias window, varianc
   CHECK(sample / var > lo);
   CHECK(sample / var < hi);
 }
+
+TEST_CASE("drift bands: the driving band is the fewest adjacent bands holding half") {
+  using P = std::pair<std::size_t, std::size_t>;
+  // helper-18's shares (tau 20, 41, 82, 164 s): two adjacent bands hold 60 %; the three from
+  // 20 s to 82 s (72 %, the 10 % between counted) were reported before.
+  CHECK(sim::drivingBands({0.21, 0.10, 0.41, 0.19, 0.09}) == P{2, 3});
+  CHECK(sim::drivingBands({0.1, 0.6, 0.3}) == P{1, 1});           // one band alone
+  CHECK(sim::drivingBands({0.2, 0.2, 0.2, 0.2, 0.2}) == P{0, 2});  // three, the first of equals
+  CHECK(sim::drivingBands({0.45, 0.02, 0.49}) == P{1, 2});  // of two pairs, the larger
+  CHECK(sim::drivingBands({}) == P{0, 0});
+}
