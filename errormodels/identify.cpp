@@ -517,6 +517,13 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
         // writes the AR with slow terms, not a bare AR to compare it with).
         if (!den.empty() && opt.kind == IdentifyKind::Ar)
           ax.arDenoised = fit::selectArOrder(den, os);
+        const auto& sel = opt.arOnDenoised ? ax.arDenoised : ax.ar;  // the AR written
+        if (sel && sel->paperCapped)
+          warnings[slot].push_back(
+              std::string(c.name) + ": the paper's rule asks for AR order " + std::to_string(*sel->paperOrder) +
+              " (T_c " + significant(*sel->correlationTime, 4) + " s): capped at --max-order " +
+              std::to_string(opt.maxOrder) + "; a correlation that slow is a slow term, not an AR's "
+              "(--kind ar+slow or auto)");
       }
 
       ax.written.sensor = sensor;
@@ -530,6 +537,11 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
             std::string("1/e correlation time of the ") +
             (den.empty() ? "raw" : "denoised") +
             " ACF: " + significant(*ax.correlationTime * 1e3, 4) + " ms");
+      else
+        ax.written.notes.push_back(
+            std::string("the ") + (den.empty() ? "raw" : "denoised") +
+            " ACF stays above 1/e up to its largest lag (" + significant(maxLag * dt, 4) +
+            " s): the paper's rule takes T_c from each fitted series' AR (its MDL order)");
       if (ax.denoise)
         ax.written.notes.push_back(
             "db5 denoise: level " + std::to_string(ax.denoise->level) +

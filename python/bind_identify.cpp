@@ -18,15 +18,24 @@ namespace em = errormodels;
 // The loader's options as `--gyro-unit`, `--accel-unit`, `--rate`, `--allow-irregular-time`.
 em::RecordOptions recordOptions(const std::optional<std::string>& gyroUnit,
                                 const std::optional<std::string>& accelUnit,
-                                std::optional<double> rate, bool allowIrregular) {
+                                const py::object& rate, bool allowIrregular) {
   em::RecordOptions o;
   o.gyro_unit = gyroUnit;
   o.accel_unit = accelUnit;
-  if (rate && !(std::isfinite(*rate) && *rate > 0))
-    throw InputError("rate: expected a positive sample rate in Hz");
-  o.rate_hz = rate;
+  if (!rate.is_none()) {  // a number [Hz] or a string with its unit ("100 Hz"), as --rate
+    const double hz = quantityArg(rate, Dimension::frequency(), "rate");
+    if (!(std::isfinite(hz) && hz > 0)) throw InputError("rate: expected a positive sample rate in Hz");
+    o.rate_hz = hz;
+  }
   o.allow_irregular_time = allowIrregular;
   return o;
+}
+
+// Python warnings "<command>: <text>", as the CLI prints them on stderr.
+void warnAll(const std::string& command, const std::vector<std::string>& warnings) {
+  if (warnings.empty()) return;
+  const py::object warn = py::module_::import("warnings").attr("warn");
+  for (const std::string& w : warnings) warn(command + ": " + w);
 }
 
 py::dict channelDict(const sim::ChannelStats& c) {
@@ -45,7 +54,7 @@ py::dict channelDict(const sim::ChannelStats& c) {
 py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
                  const std::string& tau, double confidence, bool denoise, const std::string& json,
                  const std::string& html, const std::optional<std::string>& gyroUnit,
-                 const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+                 const std::optional<std::string>& accelUnit, const py::object& rate) {
   if (tau != "octave" && tau != "decade")
     throw InputError("tau: expected octave or decade, got \"" + tau + "\"");
   sim::AnalysisOptions opt;
@@ -61,6 +70,10 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
     stats = sim::analyzeRecord(rec, opt);
     if (!json.empty() || !html.empty()) sim::writeAnalysis(rec, stats, opt, json, html);
   }
+  // As `sinsim analyze` warns (a constant channel, a forgotten unit, ms stamps read as seconds):
+  // none was raised.
+  warnAll("analyze", sim::analysisWarnings(stats));
+  warnAll("analyze", em::recordWarnings(rec));
   py::dict d;
   for (const auto& c : stats) d[c.name.c_str()] = channelDict(c);
   return d;
@@ -69,7 +82,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
 Model fit(const py::object& record, const std::string& kind, const std::vector<std::string>& axes,
           std::optional<std::size_t> order, const std::string& criterion, std::size_t maxOrder,
           bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
-          const std::optional<std::string>& accelUnit, std::optional<double> rate, const std::string& lines) {
+          const std::optional<std::string>& accelUnit, const py::object& rate, const std::string& lines) {
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
   opt.fitLines = em::fitLinesByName(lines);
@@ -89,8 +102,7 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
     py::gil_scoped_release release;
     id = em::identify(rec, opt);
   }
-  const py::object warn = py::module_::import("warnings").attr("warn");
-  for (const auto& w : id->warnings) warn("fit: " + w);
+  warnAll("fit", id->warnings);
   return {id->modelSpec(), "fit"};
 }
 
@@ -111,10 +123,11 @@ py::dict diagnose(const py::object& record, const py::object& model,
                   const std::vector<std::string>& channels, std::size_t realisations,
                   std::uint64_t seed, unsigned threads, double threshold, double nextThreshold,
                   const std::optional<std::string>& gyroUnit,
-                  const std::optional<std::string>& accelUnit, std::optional<double> rate) {
+                  const std::optional<std::string>& accelUnit, const py::object& rate) {
   namespace dg = em::diagnose;
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   const Model m = toModel(model);  // a path is read as `--model` reads it (loadErrorModel)
+  warnAll("diagnose", em::recordWarnings(rec));
   dg::DiagnoseOptions o;
   o.channels = channels;
   o.realisations = realisations;
@@ -157,7 +170,7 @@ void bindIdentify(py::module_& mod) {
   mod.def(
       "load_record",
       [](const std::string& path, const std::optional<std::string>& gyroUnit,
-         const std::optional<std::string>& accelUnit, std::optional<double> rate,
+         const std::optional<std::string>& accelUnit, const py::object& rate,
          bool allowIrregular) {
         return recordDict(em::loadRecord(path, recordOptions(gyroUnit, accelUnit, rate, allowIrregular)));
       },

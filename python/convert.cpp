@@ -7,6 +7,7 @@
 #include "common/config.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/units.hpp"
 #include "errormodels/model_io.hpp"
 #include "errormodels/stats/record_time.hpp"
 
@@ -135,6 +136,26 @@ errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptio
     r.accel[i] = column(d, a[i]);
   }
   r.temperature = column(d, "temp");
+  // The arrays are SI unless gyro_unit / accel_unit say otherwise (they were ignored, and an
+  // unknown unit passed in silence): converted here, with the file reader's dimension check.
+  auto convert = [&](const std::optional<std::string>& unit, Dimension dim, const char* what,
+                     std::array<std::vector<double>, 3>& columns) {
+    if (!unit) return;
+    Quantity q;
+    try {
+      q = parseUnit(*unit);
+    } catch (const InputError& e) {
+      throw InputError(std::string(what) + ": " + e.what());
+    }
+    if (q.dim != dim)
+      throw InputError(std::string(what) + ": \"" + *unit + "\" has dimension " + q.dim.siUnit() +
+                       ", expected " + dim.siUnit() + " (e.g. " + exampleUnit(dim) + ")");
+    for (auto& c : columns)
+      for (double& x : c) x *= q.si;
+  };
+  convert(options.gyro_unit, Dimension::angularRate(), "gyro_unit", r.gyro);
+  r.gyroUnitStated = options.gyro_unit.has_value();
+  convert(options.accel_unit, Dimension::acceleration(), "accel_unit", r.accel);
   std::size_t n = 0;
   auto agree = [&](const std::vector<double>& c, const std::string& name) {
     if (c.empty()) return;
@@ -157,7 +178,7 @@ errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptio
   if (n == 0) throw InputError("record dict: no samples (give gx..az arrays)");
   r.rows = n;
   errormodels::RecordOptions o = options;
-  if (d.contains("rate")) o.rate_hz = d["rate"].cast<double>();
+  if (d.contains("rate")) o.rate_hz = quantityArg(d["rate"], Dimension::frequency(), "record dict: \"rate\"");
   if (o.rate_hz && !(std::isfinite(*o.rate_hz) && *o.rate_hz > 0))
     throw InputError("record dict: \"rate\" must be a sample rate [Hz] > 0");
   if (!r.t.empty()) {

@@ -107,6 +107,10 @@ void addAr(ListBuilder& b, const ArFit& ar, double rate, const Units& u, Dimensi
       b.line << ", paper's rule -> " << *orders->paperOrder << " (T_c "
              << num(*orders->correlationTime * 1e3, 4) << " ms)";
     b.line << "; selected " << orders->selectedOrder << " by " << toString(orders->selectedBy);
+    if (orders->paperCapped)
+      b.line << " (the rule's order capped at the largest fitted, --max-order " << orders->selectedOrder << ")";
+    if (orders->selectedOrder == 0)
+      b.line << " (order 0 is white noise; an AR needs one coefficient: AR(1) written, its a1 near 0)";
     b.endComment();
   }
   (void)u;

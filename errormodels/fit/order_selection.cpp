@@ -128,7 +128,8 @@ OrderSelection selectArOrder(const std::vector<double>& x, const OrderSelectionO
       case OrderCriterion::PaperRule:
         if (!out.paperOrder)
           throw InputError("order selection: the paper's rule needs a navigation step");
-        out.selectedOrder = *out.paperOrder;
+        out.paperCapped = *out.paperOrder > options.maxOrder;
+        out.selectedOrder = std::min(*out.paperOrder, options.maxOrder);
         break;
       case OrderCriterion::Forced:
         throw InputError("order selection: criterion 'forced' needs forcedOrder");

@@ -73,6 +73,9 @@ struct OrderSelection {
   std::optional<double> correlationTime;   ///< [s] the T_c used by the paper's rule
   std::size_t selectedOrder = 0;
   OrderCriterion selectedBy = OrderCriterion::MDL;
+  /// The paper's rule asked for more than maxOrder (a T_c of minutes: 90466 on a denoised record
+  /// whose Burg at that order ran for 10+ minutes, deaf to Ctrl-C): selectedOrder is maxOrder.
+  bool paperCapped = false;
   ArFit fit;  ///< the fit at selectedOrder (at least order 1)
 };
 

@@ -493,7 +493,10 @@ class RowReader {
                    " (SI) is beyond any sensor (|x| <= " + limits::fmt(limits::kMaxQuantity) + "; docs/limits.md)");
     switch (col.role) {
       case Role::Time: rec.t = std::move(v); break;
-      case Role::Gyro: rec.gyro[col.axis] = std::move(v); break;
+      case Role::Gyro:
+        rec.gyro[col.axis] = std::move(v);
+        rec.gyroUnitStated = rec.gyroUnitStated || !col.unit.empty() || options_.gyro_unit.has_value();
+        break;
       case Role::Accel: rec.accel[col.axis] = std::move(v); break;
       case Role::Temperature: rec.temperature = std::move(v); break;
       case Role::Aux: rec.aux.push_back({col.header, std::move(v), col.unit}); break;
@@ -641,7 +644,9 @@ std::vector<std::string> recordWarnings(const Record& record) {
   if (!gyroSd.empty()) {
     std::sort(gyroSd.begin(), gyroSd.end());
     const double w = std::sqrt(g2), sd = gyroSd[gyroSd.size() / 2];
-    if (w > 0.5 || sd > 0.05)
+    // The sd alone (a noisy gyro at a high rate reaches 3 deg/s) asks only where no unit was
+    // stated: `--gyro-unit deg/s` on a deg/s record was asked whether it was forgotten.
+    if (w > 0.5 || (sd > 0.05 && !record.gyroUnitStated))
       out.push_back("gyro mean |w| = " + significant(w, 3) + " rad/s, sample sd " + significant(sd, 3) +
                     " rad/s in a static record (Earth rate is 7.3e-5 rad/s, a gyro's bias and noise "
                     "are degrees per second at most): did you forget --gyro-unit deg/s? (or the file's unit, "

@@ -73,6 +73,9 @@ struct Record {
   std::array<std::vector<double>, 3> gyro;
   /// f_b per axis x, y, z [m/s^2]; an axis absent from the file is an empty vector
   std::array<std::vector<double>, 3> accel;
+  /// A gyro column's unit was written in its header or given (--gyro-unit): recordWarnings then
+  /// does not ask whether it was forgotten.
+  bool gyroUnitStated = false;
   /// [K] sensor temperature; empty when absent
   std::vector<double> temperature;
   std::vector<AuxChannel> aux;

@@ -105,4 +105,14 @@ TEST_CASE("Order selection can be forced and refuses impossible requests", "[fit
   CHECK_THROWS_AS(selectArOrder(x, rule), sinsim::InputError);
   rule.correlationTime = 0.030;
   CHECK(selectArOrder(x, rule).selectedOrder == 4);
+  CHECK_FALSE(selectArOrder(x, rule).paperCapped);
+  // A T_c of 100 s (a denoised record's slow wander) asks for order 10001: capped at maxOrder,
+  // said so (Burg at 90466 on 2e5 samples ran for 10+ minutes, deaf to Ctrl-C).
+  rule.correlationTime = 100.0;
+  rule.maxOrder = 8;
+  const auto capped = selectArOrder(x, rule);
+  CHECK(*capped.paperOrder == 10001);
+  CHECK(capped.paperCapped);
+  CHECK(capped.selectedOrder == 8);
+  CHECK(capped.fit.order == 8);
 }

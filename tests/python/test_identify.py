@@ -170,3 +170,36 @@ def test_a_record_dict_is_checked_as_a_file_is():
             sinsim.analyze({"rate": 100.0, "gx": x}, max_lag=lag)
     # Time stamps alone give the rate, as in a file.
     assert "gx" in sinsim.analyze({"t": np.arange(2000) / 200.0, "gx": x})
+
+
+def test_a_record_dict_takes_units_and_a_rate_with_its_unit():
+    # gyro_unit / accel_unit were ignored for a dict (deg/s arrays read as rad/s, 57x, and an
+    # unknown unit passed), and "rate": "100 Hz" raised a raw pybind RuntimeError.
+    x = np.random.default_rng(2).standard_normal(4000) * 0.2  # deg/s
+    si = sinsim.analyze({"rate": 100.0, "gx": x * math.pi / 180})["gx"]["sd"]
+    deg = sinsim.analyze({"rate": "100 Hz", "gx": x}, gyro_unit="deg/s")["gx"]["sd"]
+    assert deg == pytest.approx(si, rel=1e-12)
+    g = sinsim.analyze({"rate": 100.0, "az": x / 9.80665 - 1.0}, accel_unit="g")["az"]["mean"]
+    assert g == pytest.approx(np.mean(x) - 9.80665, rel=1e-12)
+    assert sinsim.analyze({"gx": x}, rate="0.1 kHz")["gx"]["sd"] == pytest.approx(np.std(x), rel=1e-12)
+    with pytest.raises(sinsim.InputError, match="gyro_unit"):
+        sinsim.analyze({"rate": 100.0, "gx": x}, gyro_unit="blah")
+    with pytest.raises(sinsim.InputError, match="gyro_unit: \"m/s\\^2\" has dimension"):
+        sinsim.analyze({"rate": 100.0, "gx": x}, gyro_unit="m/s^2")
+    with pytest.raises(sinsim.InputError, match="rate"):
+        sinsim.analyze({"rate": "100 m", "gx": x})
+
+
+def test_analyze_raises_the_warnings_the_cli_prints():
+    # Python analyze raised none: a constant channel, and a deg/s gyro read as rad/s.
+    x = np.random.default_rng(3).standard_normal(4000) * 0.2
+    with pytest.warns(UserWarning) as caught:
+        sinsim.analyze({"rate": 100.0, "gx": x, "gy": np.zeros(4000)})
+    texts = [str(w.message) for w in caught]
+    assert any(t.startswith("analyze: ") and "gy is constant" in t for t in texts)
+    assert any("did you forget --gyro-unit deg/s?" in t for t in texts)
+    # With the unit stated, the sd alone (3 deg/s of a noisy gyro) asks nothing.
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sinsim.analyze({"rate": 100.0, "gx": x * 15}, gyro_unit="deg/s")

@@ -317,6 +317,15 @@ TEST_CASE("record: a static record's units that look forgotten are named", "[rec
   std::string mems = "gx\n";
   for (int k = 0; k < 100; ++k) mems += std::to_string(0.01 + (k % 2 ? 0.005 : -0.005)) + "\n";
   CHECK(recordWarnings(parseRecord(mems, "mems.csv", o)).empty());
+  // A noisy gyro (sd 3.4 deg/s = 0.059 rad/s) with its unit stated, by the option or the header:
+  // the sd alone asked "did you forget --gyro-unit deg/s?" (helper-17); unstated it still asks.
+  std::string noisy = "gx\n";
+  for (int k = 0; k < 100; ++k) noisy += std::string(k % 2 ? "3.4" : "-3.4") + "\n";
+  CHECK(recordWarnings(parseRecord(noisy, "noisy.csv", o)).empty());
+  RecordOptions bare;
+  bare.rate_hz = 100.0;
+  CHECK(recordWarnings(parseRecord("gx [deg/s]" + noisy.substr(2), "noisy.csv", bare)).empty());
+  CHECK(has(recordWarnings(parseRecord(noisy, "noisy.csv", bare)), "did you forget --gyro-unit deg/s?"));
 }
 
 TEST_CASE("record: an accelerometer in mg, ft/s^2 or counts read as m/s^2 is named", "[record][units]") {
