@@ -235,6 +235,8 @@ std::string Dimension::siUnit() const {
     part += part.empty() ? term : "*" + term;
   }
   if (num.empty()) num = "1";
+  // "rad/(s*K)": "rad/s*K" read as rad*K/s.
+  if (den.find('*') != std::string::npos) den = "(" + den + ")";
   return den.empty() ? num : num + "/" + den;
 }
 

@@ -101,8 +101,8 @@ FolderLock::FolderLock(const std::string& dir) {
     fd_ = -1;
     if (err == EWOULDBLOCK)
       throw InputError("another sinsim process is writing into " + dir +
-                       "; wait for it to finish (then --resume if it was interrupted) or choose "
-                       "another folder");
+                       "; wait for it to finish (an interrupted `mc` batch goes on with `mc --resume`) or "
+                       "choose another folder");
     throw InputError("cannot lock output folder " + dir + ": " + std::strerror(err));
   }
 }

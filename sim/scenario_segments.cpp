@@ -326,6 +326,16 @@ bool layout(const std::vector<SegmentSpec>& specs, PlanCursor& c, std::vector<Se
             sp.node.error("the turn changes the heading by 0 deg" + note);
             return false;
           }
+        } else if (seg.bank == BankMode::Coordinated && std::isfinite(seg.duration) && seg.duration > 0.0) {
+          // bank: auto peaks where an explicit bank is refused (88 deg ran in silence).
+          const double peak = std::atan(2.0 * c.speed * std::abs(seg.change) / seg.duration / kBankGravity);
+          if (peak > kMaxBank * (1.0 + 1e-12)) {
+            sp.node.error("bank: auto peaks at " + limits::fmt(peak / kRadPerDeg) + " deg, beyond 80 deg at " +
+                          limits::fmt(c.speed) + " m/s; give a duration of at least " +
+                          limits::fmt(2.0 * c.speed * std::abs(seg.change) / (kBankGravity * std::tan(kMaxBank))) +
+                          " s" + note);
+            return false;
+          }
         }
         break;
       case SegmentKind::Climb: {

@@ -86,4 +86,6 @@ TEST_CASE("dimensions print in SI") {
   CHECK(Dimension::acceleration().siUnit() == "m/s^2");
   CHECK((Dimension::angularRate() * Dimension::time().sqrt()).siUnit() == "rad/s^(1/2)");
   CHECK(Dimension::none().siUnit() == "1");
+  // A compound denominator in parentheses: rad/s*K read as rad*K/s (helper-19).
+  CHECK((Dimension::angularRate() / Dimension::temperature()).siUnit() == "rad/(s*K)");
 }

@@ -202,6 +202,22 @@ segments:
     INFO(listing(ds));
     CHECK(has(ds, 3, "segments[0]", "needs forward speed"));
   }
+  SECTION("bank: auto beyond the 80 deg an explicit bank may have") {
+    // 180 deg in 5 s at 300 m/s: peak tan(phi) = 2 * 300 * pi / 5 / 9.80665 -> 88.51 deg; it ran.
+    // The shortest duration keeping 80 deg: 2 * 300 * pi / (9.80665 tan 80 deg) = 33.89 s.
+    const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg, speed: 300 m/s}
+segments:
+  - {type: turn, heading_change: 180 deg, duration: 5 s, bank: auto}
+)");
+    INFO(listing(ds));
+    CHECK(has(ds, 3, "segments[0]", "bank: auto peaks at 88.5099 deg, beyond 80 deg"));
+    CHECK(has(ds, 3, "segments[0]", "at least 33.8922 s"));
+    // 34 s keeps it: parses.
+    CHECK_NOTHROW(sim::parseScenario(R"(start: {latitude: 45 deg, longitude: 7 deg, speed: 300 m/s}
+segments:
+  - {type: turn, heading_change: 180 deg, duration: 34 s, bank: auto}
+)", "ok.yaml"));
+  }
 }
 
 TEST_CASE("bad scenario: error model file that does not exist is located at errors") {
