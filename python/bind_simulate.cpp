@@ -33,13 +33,10 @@ std::string slurp(const std::string& path) {
 }
 
 // The scenario with `model` as its error model, refused like `sinsim run --model` refuses it
-// (sim/run.cpp, sim/mc_models.cpp: the check sits inline there; no typed entry point in sim/).
+// (sim::requireTemperatureFor).
 sim::Scenario withModel(sim::Scenario sc, const Model& m) {
   sc.errors = imuModel(m);
-  if (!sc.errors.empty() && sc.errors.needsTemperature() && !sc.temperature.present)
-    throw InputError("the error model " + m.label +
-                     " has temperature-dependent effects but scenario " + sc.name +
-                     " has no temperature profile");
+  sim::requireTemperatureFor(sc, sc.errors, m.label);
   return sc;
 }
 

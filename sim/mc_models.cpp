@@ -41,9 +41,7 @@ std::vector<McModel> loadMcModels(const std::vector<std::string>& files, const S
     }
     McModel m{std::filesystem::path(f).stem().string(), errormodels::ImuErrorModel::load(f),
               slurp(f)};
-    if (!m.model.empty() && m.model.needsTemperature() && !sc.temperature.present)
-      throw InputError("the error model " + f + " has temperature-dependent effects but the "
-                       "scenario has no temperature profile");
+    requireTemperatureFor(sc, m.model, f);
     addUnique(models, std::move(m));
   }
   for (const auto& m : models)  // refuse a model that cannot run at the IMU rate, before any file

@@ -153,10 +153,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   if (opt.model) {
     model = *opt.model == "none" ? errormodels::ImuErrorModel::none()
                                  : errormodels::ImuErrorModel::load(*opt.model);
-    if (!model.empty() && model.needsTemperature() && !sc.temperature.present)
-      throw InputError("the error model " + model.source() +
-                       " has temperature-dependent effects but scenario " + sc.name +
-                       " has no temperature profile");
+    requireTemperatureFor(sc, model, model.source());
   }
   const std::uint64_t seed = opt.seed ? *opt.seed : sc.seed.value_or(0);
   std::unique_ptr<errormodels::ImuCorruptor> corruptor;

@@ -236,6 +236,14 @@ std::string Scenario::durationWarning() const {
          " s (" + (end < T ? "before the last segment ends" : "the last segment's end state held after it") + ")";
 }
 
+void requireTemperatureFor(const Scenario& sc, const errormodels::ImuErrorModel& model,
+                           const std::string& label) {
+  if (model.empty() || !model.needsTemperature() || sc.temperature.present) return;
+  throw InputError((sc.file.empty() ? "scenario " + sc.name : sc.file) + ": no temperature: key, while the error model " +
+                   label + " has temperature-dependent effects; add one to the scenario (e.g. "
+                   "temperature: 25 degC, or {start: 20 degC, end: 45 degC})");
+}
+
 Scenario loadScenario(const std::string& path) {
   ConfigFile file = ConfigFile::load(path);
   const fs::path dir = fs::path(path).parent_path();

@@ -50,6 +50,12 @@ struct Scenario {
   std::string durationWarning() const;
 };
 
+/// Refuses a model with temperature-dependent effects for a scenario without `temperature:`
+/// (`run --model`, `mc --model`, Python's models): InputError naming the scenario file, the model
+/// (`label`) and the key to add.
+void requireTemperatureFor(const Scenario& sc, const errormodels::ImuErrorModel& model,
+                           const std::string& label);
+
 /// Reads a scenario file. Every problem of the file (and of an error-model file it names) is
 /// collected and thrown at once as a ConfigError whose diagnostics carry file, line and key path.
 Scenario loadScenario(const std::string& path);

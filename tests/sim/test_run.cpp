@@ -249,6 +249,22 @@ segments: [{type: static, duration: 60 s}]
     CHECK(e.diagnostics()[0].line == 5);
     CHECK(e.diagnostics()[0].message.find("temperature") != std::string::npos);
   }
+  // The same model given as --model to a scenario without one: the message names the scenario
+  // file and the key to add (it named neither).
+  sim::Scenario bare = sc;
+  bare.temperature = {};
+  bare.errors = errormodels::ImuErrorModel::none();
+  sim::RunOptions opt;
+  opt.model = (dir / "models" / "thermal.yaml").string();
+  try {
+    sim::run(bare, opt);
+    FAIL("a temperature-dependent --model without temperature was accepted");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    INFO(m);
+    CHECK(m.find((dir / "warm.yaml").string() + ": no temperature: key, while the error model") != std::string::npos);
+    CHECK(m.find("e.g. temperature: 25 degC") != std::string::npos);
+  }
   fs::remove_all(dir);
 }
 
