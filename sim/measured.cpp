@@ -122,6 +122,11 @@ MeasuredSetup measuredSetup(errormodels::Record record, const MeasuredOptions& o
   n -= n % std::size_t(perOut);  // whole output epochs
   if (n == 0) throw InputError(rec.source + ": the record is shorter than one output epoch");
   m.biasWindow = o.biasWindow ? *o.biasWindow : std::min(60.0, 0.1 * double(n) / rate);
+  // Here, with the record's name (the loop's own check named neither it nor diagnose's option).
+  if (!(m.biasWindow <= double(n) / rate + 0.5 / rate))
+    throw InputError(rec.source + ": the bias window (" + o.biasWindowOption + ") of " + limits::fmt(m.biasWindow) +
+                     " s is longer than the record used (" + limits::fmt(double(n) / rate) + " s" +
+                     (o.duration ? ", the shorter of the record and " + limits::fmt(*o.duration) + " s" : "") + ")");
 
   MotionStart start;
   start.lat = o.lat;

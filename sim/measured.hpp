@@ -33,6 +33,7 @@ struct MeasuredOptions {
   std::optional<nav::Vec3> attitude;
   double heading = 0.0;                 // [rad]
   std::optional<double> biasWindow;     // [s]; unset: min(60 s, 10 % of the used record)
+  std::string biasWindowOption = "--bias-window";  // its name in messages (diagnose: --nav-bias-window)
   double skip = 0.0;                    // [s] dropped from the start (a warm-up)
   std::optional<double> duration;       // [s] used after the skip; unset: all
   nav::StrapdownOptions strapdown{nav::VerticalChannel::Held, 100.0};

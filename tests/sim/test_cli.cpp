@@ -256,5 +256,19 @@ TEST_CASE("sinsim diagnose --nav: the verdict on the terminal, in the JSON and t
   CHECK(r.exitCode == 1);
   CHECK(r.err.find("aiding keys") != std::string::npos);
   CHECK_FALSE(fs::exists(tmp / "aided.json"));
+
+  // A bias window longer than the replay: the record and diagnose's own option named (it said
+  // run's --bias-window and no file); mc --measured names its option and the record too.
+  r = sinsim("diagnose rec.csv --model m.yaml --nav rest.yaml --nav-bias-window \"5 min\" --json long.json",
+             tmp, tmp.string());
+  CHECK(r.exitCode == 1);
+  CHECK(r.err.find("rec.csv: the bias window (--nav-bias-window) of 300 s is longer than the record used (120 s")
+        != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "long.json"));
+  r = sinsim("mc --measured rec.csv --model m.yaml --runs 2 --bias-window \"5 min\" -o mcm", tmp, tmp.string());
+  CHECK(r.exitCode == 1);
+  CHECK(r.err.find("rec.csv: the bias window (--bias-window) of 300 s is longer than the record used (180 s)")
+        != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "mcm"));
   fs::remove_all(tmp);
 }
