@@ -104,6 +104,9 @@ int main(int argc, char** argv) {
     // Every writer is atomic and was unwound: nothing half-written is left behind.
     std::cerr << sinsim::cli::interruptedMessage(command) << "no output was written\n";
     return sinsim::cli::interruptedExitCode();
+  } catch (const sinsim::OptionError& e) {  // an option's value: a bad command line, as CLI11's
+    std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.what()) << "\n";
+    return 2;
   } catch (const sinsim::Error& e) {
     std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.what()) << "\n";
     return 1;

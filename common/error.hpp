@@ -20,6 +20,13 @@ class InputError : public Error {
   using Error::Error;
 };
 
+/// A command-line option's value that cannot be read ("--bias-window 5 m"): a bad command line,
+/// which the CLI answers with exit code 2 as CLI11's own refusals (an InputError elsewhere).
+class OptionError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// One problem found in an input file, located by file, line and key path.
 struct Diagnostic {
   std::string file;     ///< path as the user gave it

@@ -322,7 +322,7 @@ double parseOptionQuantity(std::string_view text, Dimension expected, const std:
     if (q.dim != expected) return parseQuantityAs(text, expected);  // its message
     return q.si;
   } catch (const InputError& e) {
-    throw InputError(option + ": " + e.what());
+    throw OptionError(option + ": " + e.what());
   }
 }
 
@@ -336,7 +336,7 @@ double parseDuration(std::string_view text, const std::string& option) {
     if (!(q.si >= 0.0)) throw InputError("expected a non-negative time, got \"" + limits::echo(trimmed(text)) + "\"");
     return q.si;
   } catch (const InputError& e) {
-    throw InputError(option + ": " + e.what());
+    throw OptionError(option + ": " + e.what());
   }
 }
 

@@ -81,12 +81,13 @@ Quantity parseUnit(std::string_view unit);
 double parseQuantityAs(std::string_view text, Dimension expected);
 
 /// A command-line option's quantity (parseQuantityAs; with `plainIsSi` a plain number is taken
-/// in SI units: "100" for --rate is 100 Hz). Must be finite; errors are prefixed with `option`.
+/// in SI units: "100" for --rate is 100 Hz). Must be finite; errors are OptionError (exit 2)
+/// prefixed with `option`.
 double parseOptionQuantity(std::string_view text, Dimension expected, const std::string& option,
                            bool plainIsSi = false);
 
-/// A time option: "90" (seconds), "90 s", "10 min", "2 h"; >= 0. Errors are prefixed with
-/// `option` ("--duration: ...").
+/// A time option: "90" (seconds), "90 s", "10 min", "2 h"; >= 0. Errors are OptionError
+/// prefixed with `option` ("--duration: ...").
 double parseDuration(std::string_view text, const std::string& option);
 
 /// A typical unit for messages ("deg/s", "m/s^2", "deg/sqrt(h)"), falling back to the SI form.

@@ -123,6 +123,14 @@ TEST_CASE("sinsim run: a good scenario, overrides, and a bad model or option") {
 
   r = sinsim("run " + scenario + " --seed minus-one", tmp);
   CHECK(r.exitCode == 2);  // command-line error (CLI11)
+  // An option value sinsim reads itself is a bad command line too (it exited 1).
+  for (const char* bad : {"5 m", "-1 s", "nan"}) {
+    r = sinsim("run " + scenario + " --bias-window '" + bad + "' -o '" + (tmp / "bw").string() + "'", tmp);
+    INFO(bad << ": " << r.err);
+    CHECK(r.exitCode == 2);
+    CHECK(r.err.find("--bias-window: ") != std::string::npos);
+    CHECK_FALSE(fs::exists(tmp / "bw"));
+  }
 
   // A negative count is no huge one: CLI11 alone read "-5" as 2^64 - 5.
   for (const char* args : {"mc SC --runs -5", "mc SC --runs=-5", "mc SC --runs 2 --stop-after -1",
