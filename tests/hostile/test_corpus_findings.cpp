@@ -158,11 +158,11 @@ TEST_CASE("corpus finding, unnamed errors: the file or option is named") {
   CHECK_THAT(slurp(d / "err"), Contains((d / "s2.yaml").string() + " with model " +
                                         (d / "ramp.yaml").string() + ": the navigation error became non-finite"));
   CHECK_FALSE(fs::exists(d / "out2"));
-  // Option values: the option is named.
+  // Option values: the option is named; one that cannot be read is a bad command line (exit 2).
   writeText(d / "m.yaml", "gyro: {}\n");
   CHECK(runSinsim("synth " + (d / "m.yaml").string() + " --rate 100 --duration 1 --latitude 1e400 -o " +
                       (d / "x.csv").string(),
-                  d / "err") == 1);
+                  d / "err") == 2);
   CHECK_THAT(slurp(d / "err"), Contains("--latitude: "));
   CHECK(runSinsim("run " + (d / "s2.yaml").string() + " --bias-window 1e-9 -o " +
                       (d / "out3").string(),
