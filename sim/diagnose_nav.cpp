@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "common/error.hpp"
-#include "common/limits.hpp"
 #include "common/parallel.hpp"
 #include "common/progress.hpp"
 #include "errormodels/imu_model.hpp"
