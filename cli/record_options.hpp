@@ -63,7 +63,11 @@ inline errormodels::RecordOptions recordOptions(const RecordArgs& r) {
   if (r.skip == "auto")
     throw InputError("--skip auto: only `sinsim fit` finds a settling to skip; give a time, e.g. \"10 min\"");
   if (!r.skip.empty()) ro.skip_s = parseDuration(r.skip, "--skip");
-  if (!r.duration.empty()) ro.duration_s = parseDuration(r.duration, "--duration");
+  if (!r.duration.empty()) {
+    ro.duration_s = parseDuration(r.duration, "--duration");
+    if (!(*ro.duration_s > 0.0))
+      throw OptionError("--duration: expected a positive time, got \"" + limits::echo(r.duration) + "\"");
+  }
   return ro;
 }
 

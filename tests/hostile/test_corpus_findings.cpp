@@ -164,6 +164,13 @@ TEST_CASE("corpus finding, unnamed errors: the file or option is named") {
                       (d / "x.csv").string(),
                   d / "err") == 2);
   CHECK_THAT(slurp(d / "err"), Contains("--latitude: "));
+  // A record's --duration of zero is a bad command line too, named as the option (not the record).
+  writeText(d / "rec.csv", "t,gx,gy,gz,ax,ay,az\n0,0,0,0,0,0,9.8\n0.01,0,0,0,0,0,9.8\n");
+  CHECK(runSinsim("analyze " + (d / "rec.csv").string() + " --duration 0s --json " +
+                      (d / "a.json").string(),
+                  d / "err") == 2);
+  CHECK_THAT(slurp(d / "err"), Contains("--duration: expected a positive time"));
+  CHECK_FALSE(fs::exists(d / "a.json"));
   CHECK(runSinsim("run " + (d / "s2.yaml").string() + " --bias-window 1e-9 -o " +
                       (d / "out3").string(),
                   d / "err") == 1);
