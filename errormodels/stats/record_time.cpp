@@ -67,8 +67,8 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
   for (std::size_t k = 1; k < n; ++k) {
     if (!(t[k] > t[k - 1])) {
       recordError(rec.source, lineOf(k),
-           "time stamp " + std::to_string(t[k]) + " s does not increase (previous " +
-               std::to_string(t[k - 1]) + " s)");
+           "time stamp " + limits::fmt(t[k] + 0.0, 12) + " s does not increase (previous " +
+               limits::fmt(t[k - 1] + 0.0, 12) + " s)");
     }
   }
   if (n < 2 && !options.rate_hz) recordError(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");

@@ -145,6 +145,9 @@ TEST_CASE("record: irregular and gapped time stamps are reported, not resampled"
   CHECK(r.irregularities[0].dt == Approx(0.03));
   CHECK_FALSE(r.irregularities[1].gap);
   CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.01,0\n"), Catch::Contains("rec.csv:4") && Catch::Contains("does not increase"));
+  // Stamps finer than a microsecond are printed as given, not as "-0.000000".
+  CHECK_THAT(errorOf("t,gx\n-0.0000001,0\n-0.0000002,0\n"),
+             Catch::Contains("time stamp -2e-07 s does not increase (previous -1e-07 s)"));
   RecordOptions wrong_rate;
   wrong_rate.rate_hz = 50.0;
   CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.02,0\n", wrong_rate), Catch::Contains("disagrees"));
