@@ -90,8 +90,30 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
   struct Entry {
     YAML::Node node;
     bool leave;
+    std::size_t frame;  // the node's place in `frames` (its key path)
   };
-  std::vector<Entry> stack{{root, false}};
+  // The key path of each node pushed, as links to its parent: a duplicate key is named by its
+  // whole path ("gyro.x[0].density"), built only when one is reported. The keys' text lives in
+  // the tree, which outlives the walk.
+  struct Frame {
+    std::size_t parent;
+    bool item;             // a sequence's item `index`, else the map's `key`
+    std::string_view key;
+    std::size_t index;
+  };
+  std::vector<Frame> frames{{0, false, {}, 0}};
+  auto pathOf = [&](std::size_t f) {
+    std::vector<std::size_t> chain;
+    for (; f != 0; f = frames[f].parent) chain.push_back(f);
+    std::string path;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      const Frame& fr = frames[*it];
+      if (fr.item) path += "[" + std::to_string(fr.index) + "]";
+      else path += (path.empty() ? "" : ".") + limits::echo(fr.key);
+    }
+    return path;
+  };
+  std::vector<Entry> stack{{root, false, 0}};
   std::unordered_set<int> onPath;  // text positions of the open containers (-1: built in code)
   std::size_t visits = 0;
   while (!stack.empty()) {
@@ -116,10 +138,13 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
                        "an alias refers to a node that contains it (a structure without end)"});
         return out;
       }
-      stack.push_back({n, true});
+      stack.push_back({n, true, e.frame});
     }
     if (n.IsSequence()) {
-      for (std::size_t i = n.size(); i-- > 0;) stack.push_back({n[i], false});
+      for (std::size_t i = n.size(); i-- > 0;) {
+        frames.push_back({e.frame, true, {}, i});
+        stack.push_back({n[i], false, frames.size() - 1});
+      }
     } else if (n.IsMap()) {
       std::unordered_map<std::string, int> seen;  // key -> line; hashed: a map may be huge
       for (const auto& kv : n) {
@@ -129,11 +154,13 @@ std::vector<Diagnostic> checkTree(const YAML::Node& root, const std::string& nam
         }
         const int line = lineOf(kv.first, 0);
         const auto [it, fresh] = seen.emplace(kv.first.Scalar(), line);
+        const std::string& key = kv.first.Scalar();
+        frames.push_back({e.frame, false, key, 0});
         if (!fresh)
-          out.push_back({name, line, limits::echo(it->first),
+          out.push_back({name, line, pathOf(frames.size() - 1),
                          "duplicate key (first given at " + name + ":" +
                              std::to_string(it->second) + ")"});
-        stack.push_back({kv.second, false});
+        stack.push_back({kv.second, false, frames.size() - 1});
       }
     }
   }

@@ -25,19 +25,25 @@ using sinsim::test::writeText;
 
 }  // namespace
 
-TEST_CASE("duplicate keys are refused naming the lines of both (the first used to win)") {
+TEST_CASE("duplicate keys are refused naming the lines of both and the key path (the first used to win)") {
   const std::string msg = messageOf([] {
     ConfigFile::fromString("imu_rate: 100 Hz\nseed: 1\nimu_rate: 200 Hz\n", "dup.yaml");
   });
   CHECK_THAT(msg, Contains("dup.yaml:3: imu_rate: duplicate key (first given at dup.yaml:1)"));
-  // ... at any depth, e.g. a noise density inside an effect.
+  // ... at any depth, e.g. a noise density inside an effect, named by its whole path.
   CHECK_THAT(messageOf([] {
                errormodels::ImuErrorModel::fromString(
                    "gyro:\n  all:\n    - type: white\n      density: 0.1 deg/sqrt(h)\n"
                    "      density: 9 deg/sqrt(h)\n",
                    "m.yaml");
              }),
-             Contains("m.yaml:5: density: duplicate key (first given at m.yaml:4)"));
+             Contains("m.yaml:5: gyro.all[0].density: duplicate key (first given at m.yaml:4)"));
+  CHECK_THAT(messageOf([] {
+               ConfigFile::fromString("segments:\n  - {type: static, duration: 1 s}\n"
+                                      "  - {type: static, duration: 1 s, duration: 2 s}\n",
+                                      "s.yaml");
+             }),
+             Contains("s.yaml:3: segments[1].duration: duplicate key (first given at s.yaml:3)"));
 }
 
 TEST_CASE("a second YAML document is refused, not ignored") {
