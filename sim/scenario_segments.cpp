@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
@@ -192,8 +193,12 @@ SegmentSpec parseSegment(const ConfigNode& n, ParsedSegments& parsed) {
   sp.seg.type = type;
   if (type == "repeat") {
     n.allowKeys({"type", "count", "segments"});
-    sp.count = n.integer("count");
-    if (n.has("count")) n["count"].check(sp.count >= 1, "expected a count ≥ 1");
+    const ConfigNode countNode = n.require("count");
+    if (countNode.exists()) {
+      const std::optional<long long> count = countNode.asInteger();  // reports a non-integer
+      sp.count = count.value_or(0);
+      if (count) countNode.check(*count >= 1, "expected a count ≥ 1");  // once: not after "2.5"
+    }
     sp.body = std::make_shared<const std::vector<SegmentSpec>>(
         parseSegmentList(n.require("segments"), parsed));
     return sp;

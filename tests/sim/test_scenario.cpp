@@ -169,6 +169,16 @@ segments:
   CHECK(ds.size() == 9);
 }
 
+TEST_CASE("bad scenario: a repeat count of 2.5 is one problem, said once") {
+  const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg}
+segments:
+  - {type: repeat, count: 2.5, segments: [{type: static, duration: 1 s}]}
+)");
+  INFO(listing(ds));
+  CHECK(has(ds, 3, "segments[0].count", "expected an integer"));
+  CHECK(ds.size() == 1);
+}
+
 TEST_CASE("bad scenario: motions that cannot be flown, located at their segment") {
   SECTION("static while moving") {
     const auto ds = problems(R"(start: {latitude: 45 deg, longitude: 7 deg, speed: 10 m/s}
