@@ -29,6 +29,7 @@ namespace sinsim::sim {
 struct McConsistencyClass {
   std::size_t epochs = 0, inside = 0;
   double meanOfAverages = NAN;
+  std::size_t above = 0;  // epochs whose run-average lies above the band (the rest outside: below)
   double fractionInside() const { return epochs ? double(inside) / double(epochs) : NAN; }
 };
 

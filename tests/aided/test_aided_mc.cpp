@@ -259,7 +259,7 @@ TEST_CASE("mc names attitude errors beyond small angles when the NEES is above i
   // The words: said only beside an over-confident NEES, with the share and the largest error.
   sim::McAidedSummary s;
   s.label = "m";
-  s.neesAiding = {100, 10, 50.0};
+  s.neesAiding = {100, 10, 50.0, 90};
   s.filterEpochs = 1000, s.largeAttitudeEpochs = 400, s.largestAttitude = 0.5;
   auto says = [](const sim::McAidedSummary& x) {
     for (const std::string& t : x.sentences())
@@ -271,7 +271,33 @@ TEST_CASE("mc names attitude errors beyond small angles when the NEES is above i
                    "its model, sets the NEES, which is then no test of the model alone.");
   s.neesAiding = {100, 95, 9.1};  // consistent: nothing to qualify
   CHECK(says(s).empty());
-  s.neesAiding = {100, 10, 50.0};
+  s.neesAiding = {100, 10, 50.0, 90};
   s.largeAttitudeEpochs = 40;  // 4 %: below the share named
   CHECK(says(s).empty());
+}
+
+TEST_CASE("aided mc verdict: the side of the band is the epochs' count, not the mean's") {
+  auto verdict = [](const sim::McConsistencyClass& outage) {
+    sim::McAidedSummary s;
+    s.label = "m";
+    s.neesDof = 7;
+    s.neesAiding = {100, 99, 7.0};
+    s.neesOutage = outage;
+    for (const std::string& t : s.sentences())
+      if (t.find("in outages") != std::string::npos) return t;
+    return std::string();
+  };
+  // helper-20's static run: 102/119 outside, 74 below and 28 above, the mean pulled just above 7
+  // by the few far above.
+  CHECK(verdict({119, 17, 7.02, 28}) ==
+        "m: in outages the NEES lies outside its band at 102/119 epochs (above it at 28, below at 74; "
+        "mean 7.02 against 7): the filter is over-confident at some epochs and pessimistic at others "
+        "there: no scaling of its model fits them all (filter_consistency.csv shows when) (a "
+        "consistent filter leaves more than 20 % of the epochs outside with probability <= 5 %).");
+  // 92 below and 10 above with a mean above 7: pessimistic, as most epochs say.
+  CHECK_THAT(verdict({119, 17, 7.5, 10}),
+             Catch::Contains("(above it at 10, below at 92; mean 7.5 against 7): the filter is "
+                             "pessimistic there, its model overstates the errors"));
+  CHECK_THAT(verdict({119, 17, 3.0, 100}), Catch::Contains("the filter is over-confident there"));
+  CHECK(verdict({119, 100, 7.0, 10}).empty());  // 84 % inside: nothing said
 }
