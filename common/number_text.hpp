@@ -46,10 +46,34 @@ inline std::string durationText(double s) {
   return t + " " + unit;
 }
 
-/// A p-value as read in a paper: "0.03", "0.0012", "1e-12", "< 1e-300" (underflow).
+/// v with `digits` significant digits and never an exponent: "0.00012", "2200", "22345" (more
+/// digits rather than "2.2e+04"); "–" when not finite. For text that is read, not parsed.
+inline std::string plainSignificant(double v, int digits = 4) {
+  if (!std::isfinite(v)) return "–";
+  const std::string s = significant(v, digits);
+  if (s.find('e') == std::string::npos) return s;
+  const int mag = int(std::floor(std::log10(std::fabs(v))));
+  char buf[400];  // |v| <= 1.8e308: 309 digits at most
+  std::snprintf(buf, sizeof buf, "%.*f", std::clamp(digits - 1 - mag, 0, 12), v);
+  std::string t = buf;
+  if (t.find('.') != std::string::npos) {  // as %g: no trailing zeros
+    while (t.back() == '0') t.pop_back();
+    if (t.back() == '.') t.pop_back();
+  }
+  return t;
+}
+
+/// A p-value as read in a paper: "0.03", "0.0012", "1e-12", "< 1e-300" (underflow, denormals).
 inline std::string pValueText(double p) {
-  if (!(p > 0)) return p == 0 ? "< 1e-300" : significant(p);
+  if (!(p >= 1e-300)) return p >= 0 ? "< 1e-300" : significant(p);
   return significant(p, p >= 1e-3 ? 2 : 1);
+}
+
+/// "p = 0.03", "p < 1e-300", or "p not defined" (NaN: e.g. a test of one pair).
+inline std::string pStatement(double p) {
+  if (std::isnan(p)) return "p not defined";
+  const std::string v = pValueText(p);
+  return v[0] == '<' ? "p " + v : "p = " + v;
 }
 
 }  // namespace sinsim

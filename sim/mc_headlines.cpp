@@ -15,16 +15,19 @@ std::string McPairedHeadline::sentence() const {
   const std::string& less = bMore ? a : b;
   const double hi = std::max(meanA, meanB), lo = std::min(meanA, meanB);
   const std::string evidence = " (mean " + lengthText(hi, 3) + " vs " + lengthText(lo, 3) + ", " +
-                               std::to_string(runs) + " paired runs, paired t-test p = " +
-                               pValueText(pT) + ").";
+                               std::to_string(runs) + (runs == 1 ? " paired run" : " paired runs") +
+                               ", paired t-test " + pStatement(pT) + ").";
   const std::string when = " at " + durationText(t);
   if (!(pT < 0.05) || !(lo > 0))
     return "No significant difference in horizontal drift between " + more + " and " + less +
            when + evidence;
+  // "2 times" or "94 % more", decided on the ratio as printed (two digits): 1.9999999 is 2 times,
+  // not "1e+02 % more"; large ratios without an exponent ("2200 times").
   const double ratio = hi / lo;
-  const std::string amount = ratio >= 2.0 ? significant(ratio, 2) + " times the horizontal drift of "
-                                          : significant(100.0 * (ratio - 1.0), 2) +
-                                                " % more horizontal drift than ";
+  const bool times = std::stod(significant(ratio, 2)) >= 2.0;
+  const std::string amount = times ? plainSignificant(ratio, 2) + " times the horizontal drift of "
+                                   : plainSignificant(100.0 * (ratio - 1.0), 2) +
+                                         " % more horizontal drift than ";
   return more + " predicts " + amount + less + when + evidence;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "sim/aided/aided_output.hpp"
 #include "sim/mc_aided_output.hpp"
 #include "sim/mc_per_run.hpp"
 #include "sim/mc_stats.hpp"
@@ -120,12 +121,16 @@ void writeMcOutputs(const McBatch& batch, const std::string& outDir,
         std::fprintf(f, "%s,%.6f", label.c_str(), ref.epochTime(e));
         for (int q = 0; q < kMetrics; ++q) {
           const MetricStats& ms = st.at(m, e, q);
-          std::fprintf(f, ",%.9g,%.9g,%.9g", ms.mean, ms.sd, ms.rms);
+          std::fprintf(f, ",%.9g", ms.mean);
+          aided::writeCsvNumber(f, "%.9g", ms.sd);  // empty for one run: no sample sd
+          std::fprintf(f, ",%.9g", ms.rms);
           for (std::size_t i = 0; i < pct.size(); ++i) std::fprintf(f, ",%.9g", ms.p[i]);
         }
         for (int fl = 0; fl < kErrorFields; ++fl)
-          std::fprintf(f, ",%.9g,%.9g", st.fieldMean[m][e * kErrorFields + fl],
-                       st.fieldSd[m][e * kErrorFields + fl]);
+        {
+          std::fprintf(f, ",%.9g", st.fieldMean[m][e * kErrorFields + fl]);
+          aided::writeCsvNumber(f, "%.9g", st.fieldSd[m][e * kErrorFields + fl]);
+        }
         std::fputs("\n", f);
       }
     }

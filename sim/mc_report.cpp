@@ -14,13 +14,7 @@ namespace sinsim::sim {
 namespace {
 
 // `sig` significant digits, never in exponent notation (tables are read, not parsed).
-std::string num(double v, int sig = 4) {
-  if (!std::isfinite(v)) return "–";
-  const std::string s = significant(v, sig);
-  if (s.find('e') == std::string::npos) return s;
-  const int mag = int(std::floor(std::log10(std::fabs(v))));
-  return report::formatFixed(v, std::clamp(sig - 1 - mag, 0, 12));
-}
+std::string num(double v, int sig = 4) { return plainSignificant(v, sig); }
 
 std::string pText(double p) { return std::isfinite(p) ? pValueText(p) : "–"; }
 // A percentage without exponent: "70", "8.2", "0.41", "0".

@@ -3,6 +3,7 @@
 // function of its inputs in the order given (no scheduling dependence).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace sinsim::sim::mcstats {
 /// of x, accumulated in index order in double precision (two passes for the deviation).
 struct Moments {
   std::size_t n = 0;
-  double mean = 0.0, sd = 0.0, rms = 0.0;
+  double mean = 0.0, sd = NAN, rms = 0.0;  // sd: sample sd (n - 1), undefined below 2 values
 };
 Moments moments(const std::vector<double>& x);
 

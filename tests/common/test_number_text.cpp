@@ -43,6 +43,17 @@ TEST_CASE("pValueText: two digits down to 0.001, then one", "[text]") {
   CHECK(pValueText(0.0012) == "0.0012");
   CHECK(pValueText(1.2e-12) == "1e-12");
   CHECK(pValueText(0.0) == "< 1e-300");
+  CHECK(pValueText(2.5e-320) == "< 1e-300");  // a denormal
+  CHECK(sinsim::pStatement(0.034) == "p = 0.034");
+  CHECK(sinsim::pStatement(0.0) == "p < 1e-300");
+  CHECK(sinsim::pStatement(NAN) == "p not defined");
+}
+
+TEST_CASE("plainSignificant: significant digits, never an exponent") {
+  CHECK(sinsim::plainSignificant(2.5e-5) == "0.000025");
+  CHECK(sinsim::plainSignificant(2234.0, 2) == "2234");
+  CHECK(sinsim::plainSignificant(1.25, 2) == "1.2");
+  CHECK(sinsim::plainSignificant(NAN) == "–");
 }
 
 TEST_CASE("JSON text: bytes that are not UTF-8 are replaced, not thrown at the end of a run") {
