@@ -150,18 +150,28 @@ void printBatch(const sim::McCommandResult& batch, int size) {
     // Runs are saved in whole chunks: runs of a chunk cut short are not counted.
     std::cerr << (progress::interruptFlag().load() ? interruptedMessage("mc")
                                                    : std::string("sinsim mc: stopped (run limit); "))
-              << r.runsComputed << " runs computed this session, " << r.runsSaved << " of "
-              << r.runsTotal << " runs saved in " << opt.outDir
-              << "/runs. Continue with the same command and --resume.\n";
+              << r.runsComputedAll << " runs computed this session, ";
+    if (r.runsSaved == 0)  // (one process: its empty folders were removed)
+      std::cerr << "none saved (runs are saved in chunks of " << sim::kChunkRuns
+                << " per model, and no chunk was finished). Run the same command again.\n";
+    else
+      std::cerr << r.runsSaved << " of " << r.runsTotal << " runs saved in " << opt.outDir
+                << "/runs. Continue with the same command and --resume.\n";
     return;
   }
   std::cout << "sinsim mc: " << batch.scenarioName << ", " << batch.modelCount << " model(s) x "
-            << opt.runs << " runs" << (opt.budget ? " (+ budget variants)" : "") << " -> "
+            << opt.runs << " runs"
+            << (r.labels.size() > batch.modelCount
+                    ? " (+ " + std::to_string(r.labels.size() - batch.modelCount) + " budget variants)"
+                    : std::string())
+            << " -> "
             << opt.outDir << " (";
   for (std::size_t i = 0; i < r.files.size(); ++i) std::cout << (i ? ", " : "") << r.files[i];
   std::cout << ")\n  " << r.runsComputedAll << " runs computed";
   if (r.runsResumed) std::cout << ", " << r.runsResumed << " resumed from checkpoints";
   if (!r.damaged.empty()) std::cout << " (" << r.damaged.size() << " damaged checkpoint(s) recomputed)";
+  if (r.resized)
+    std::cout << " (" << r.resized << " chunk(s) an earlier --runs had cut to another length recomputed)";
   std::cout << " in " << fmt(r.wallTime, "%.2f") << " s wall, " << fmt(r.cpuTime, "%.2f")
             << " s CPU, " << r.threads << " thread(s)"
             << (size > 1 ? " per rank, " + std::to_string(size) + " MPI ranks" : std::string())
@@ -171,13 +181,14 @@ void printBatch(const sim::McCommandResult& batch, int size) {
     std::cout << "  " << h.label << ": horizontal error at " << durationText(h.t) << ": CEP "
               << lengthText(h.cep) << ", R95 " << lengthText(h.r95) << "\n";
   for (const sim::McPairedHeadline& p : batch.headlines.pairs)
-    std::cout << "  " << p.sentence() << " Wilcoxon p = " << pValueText(p.pWilcoxon) << ".\n";
+    std::cout << "  " << p.sentence() << " Wilcoxon " << pStatement(p.pWilcoxon) << ".\n";
   for (const sim::McAidedSummary& s : batch.headlines.aided)
     for (const std::string& line : s.sentences()) std::cout << "  " << line << "\n";
   if (!batch.headlines.measured.empty()) std::cout << "  " << batch.headlines.measured << "\n";
 }
 
 int runMc(const Args& a) {
+  if (a.runs == 0) throw OptionError("--runs: expected at least 1 run per model, got 0");
   int rank = 0, size = 1;
   sim::McPartition partition;
 #ifdef SINSIM_HAVE_MPI
@@ -262,9 +273,12 @@ void addMcCommand(CLI::App& app, Action& action) {
       "mc", "Monte Carlo: N realisations per error model, drift statistics, paired comparison");
   c->add_option("scenario", a->scenario, "Scenario YAML file");
   c->add_option("--runs", a->runs, "Realisations per model (default 100)");
+  // One file per --model (repeat it): `--model A.yaml scenario.yaml` must not take the scenario
+  // for a second model.
   c->add_option("--model", a->models,
                 "Error model file (repeat for a comparison; none: perfect IMU). Default: the "
-                "scenario's errors:");
+                "scenario's errors:")
+      ->allow_extra_args(false);
   c->add_option("--threads", a->threads, "Worker threads (default: all cores)")
       ->check(CLI::Range(0u, sinsim::limits::kMaxThreads));
   c->add_option("--seed", a->seed, "Seed; run k uses StreamKey{seed, k} (default: the scenario's)");

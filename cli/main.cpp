@@ -82,8 +82,9 @@ int main(int argc, char** argv) {
     const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
     (void)x;
     if (v.find_first_not_of("0123456789") != std::string::npos || errno == ERANGE) {
-      std::cerr << "sinsim: error: " << opt << ": expected an integer from 0 to "
-                << "18446744073709551615, got \"" << v.substr(0, 40) << "\"\n";
+      // No bounds here: each option's own range (--runs from 1) is checked where it is used.
+      std::cerr << "sinsim: error: " << opt << ": expected a whole number (digits only), got \""
+                << v.substr(0, 40) << "\"\n";
       return 2;
     }
   }

@@ -166,6 +166,24 @@ std::string CheckpointStore::path(const ChunkKey& k) const {
   return (fs::path(outDir_) / "runs" / dirs_[k.model] / name).string();
 }
 
+namespace {
+
+/// Whether runs/ holds a chunk file (r<first>.bin in a model's folder): the empty model folders of
+/// a batch stopped before its first chunk was saved hold nothing to resume or to protect.
+bool holdsChunks(const fs::path& runsDir) {
+  std::error_code ec;
+  for (const auto& d : fs::directory_iterator(runsDir, ec)) {
+    if (!d.is_directory(ec)) continue;
+    for (const auto& f : fs::directory_iterator(d.path(), ec)) {
+      const std::string n = f.path().filename().string();
+      if (n.size() > 5 && n[0] == 'r' && n.compare(n.size() - 4, 4, ".bin") == 0) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 void CheckpointStore::prepare(bool resume) {
   const fs::path runsDir = fs::path(outDir_) / "runs";
   std::error_code ec;
@@ -175,7 +193,7 @@ void CheckpointStore::prepare(bool resume) {
   fs::create_directories(outDir_, ec);
   if (ec) throw InputError("cannot create " + outDir_ + ": " + ec.message());
   lock_ = std::make_unique<FolderLock>(outDir_);
-  if (!resume && fs::exists(runsDir, ec) && !fs::is_empty(runsDir, ec))
+  if (!resume && fs::is_directory(runsDir, ec) && holdsChunks(runsDir))
     throw InputError(outDir_ + " holds the checkpoints of a batch (" + runsDir.string() +
                      "); pass --resume to continue it, or choose another folder");
   if (resume && fs::exists(runsDir, ec)) {
@@ -223,8 +241,14 @@ CheckpointStore::State CheckpointStore::read(const ChunkKey& k, float* out) cons
   ChunkHeader h{};
   std::uint32_t stored = 0;
   State st = State::damaged;
-  if (std::fread(&h, sizeof h, 1, f) == 1 && std::memcmp(h.magic, kMagic, 8) == 0 &&
-      h.count == k.count && h.epochs == epochs_ && h.fields == kErrorFields &&
+  const bool header = std::fread(&h, sizeof h, 1, f) == 1 && std::memcmp(h.magic, kMagic, 8) == 0;
+  if (header && h.count != k.count && h.first == k.first && h.fingerprint == fps_[k.model] &&
+      h.epochs == epochs_ && h.fields == kErrorFields) {
+    // Grown or shrunk with --resume --runs: the old last chunk is short (or long), not damaged.
+    std::fclose(f);
+    return State::resized;
+  }
+  if (header && h.count == k.count && h.epochs == epochs_ && h.fields == kErrorFields &&
       std::fread(out, sizeof(float), n, f) == n && std::fread(&stored, sizeof stored, 1, f) == 1 &&
       std::fgetc(f) == EOF &&
       crcOf(crcOf(0, &h, sizeof h), out, n * sizeof(float)) == stored) {

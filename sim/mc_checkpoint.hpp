@@ -38,6 +38,7 @@ class CheckpointStore {
     valid,    // checksum and header match
     damaged,  // unreadable, truncated, zeroed, an older format or a checksum mismatch: recompute
     foreign,  // intact but computed from other inputs: refuse to resume
+    resized,  // this batch's chunk as a batch of another --runs cut it (the last, short chunk): recompute
   };
 
   /// fingerprints[m] identifies model m (labels[m] names its folder). Touches no file.

@@ -39,7 +39,15 @@ std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<do
     if (!(std::isfinite(t) && t >= 0 && t <= ref.epochTime(ref.epochs() - 1) + 1e-9))
       throw InputError("--times: report time " + limits::fmt(t) + " s is outside the run (0 to " +
                        limits::fmt(ref.epochTime(ref.epochs() - 1)) + " s)");
-    epochs.push_back(std::size_t(std::llround(t * ref.outputRate)));
+    const std::size_t e = std::size_t(std::llround(t * ref.outputRate));
+    const auto same = std::find(epochs.begin(), epochs.end(), e);
+    if (same != epochs.end())  // counted twice in every table and test otherwise (per_run.csv's rows too)
+      throw InputError("--times: times " + std::to_string(same - epochs.begin() + 1) + " and " +
+                       std::to_string(epochs.size() + 1) + " (" +
+                       limits::fmt(times[std::size_t(same - epochs.begin())]) + " s, " + limits::fmt(t) +
+                       " s) fall on the same output epoch (" + limits::fmt(ref.epochTime(e)) + " s at " +
+                       limits::fmt(ref.outputRate) + " Hz); give each time once");
+    epochs.push_back(e);
   }
   if (epochs.empty()) epochs.push_back(ref.epochs() - 1);
   return epochs;
@@ -140,6 +148,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
       continue;
     }
     if (st == CheckpointStore::State::damaged) result.damaged.push_back(store.path(wk));
+    if (st == CheckpointStore::State::resized) ++result.resized;
     if (int(w % std::size_t(opt.partition.size)) != opt.partition.rank) continue;
     pending.push_back(wk);
     pendingRuns += wk.count;
@@ -263,6 +272,8 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
         complete = false;
     }
     result.complete = complete;
+    // Stopped before any chunk was saved: nothing to resume, no empty folders left behind.
+    if (!complete && result.runsSaved == 0 && opt.partition.size <= 1) store.discardEmpty();
     if (complete) {
       writeMcOutputs(batch, opt.outDir, result.files);
       result.errors = std::move(batch.errors);
@@ -275,6 +286,9 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   result.wallTime =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   result.cpuTime = processCpuTime() - cpuStart;
+  if (opt.partition.sum)  // every rank's CPU, not rank 0's alone (to the microsecond)
+    result.cpuTime =
+        1e-6 * double(opt.partition.sum(std::uint64_t(std::llround(std::max(0.0, result.cpuTime) * 1e6))));
   return result;
 }
 

@@ -99,9 +99,12 @@ struct McResult {
   /// Checkpoints found damaged (checksum mismatch, truncated, zeroed, older format) and
   /// therefore recomputed by this session (their paths; rank 0 sees every one).
   std::vector<std::string> damaged;
+  /// Chunks recomputed because another --runs had cut them to another length (a grown batch's
+  /// old last chunk): intact, not damaged.
+  std::size_t resized = 0;
   std::vector<std::string> files;  // outputs written (rank 0, when complete)
   double wallTime = 0.0;           // [s]
-  double cpuTime = 0.0;            // [s] of this process
+  double cpuTime = 0.0;            // [s] of every process of the batch (MPI ranks summed)
   unsigned threads = 0;
   /// Per model (incl. budget variants, in order), runs × ref.runFloats() values (errors, then an
   /// aided run's filter view), for callers that want the raw values (tests); filled on rank 0

@@ -118,6 +118,7 @@ TEST_CASE("sinsim mc: threads 1 and 2 write identical files, a stopped batch res
     CHECK(r1.out.find(std::string(" at ") + t + " (mean ") != std::string::npos);
   }
   CHECK(r1.out.find("20 paired runs, paired t-test p = ") != std::string::npos);
+  CHECK(r1.out.find("2 model(s) x 20 runs (+ 12 budget variants) -> ") != std::string::npos);
   CHECK(r1.out.find("e+0") == std::string::npos);  // no exponent notation for a drift
   checkPerRunCsv(tmp / "t1");
   const Result r2 = sinsim(common + " --threads 2 -o '" + (tmp / "t2").string() + "'", tmp);
@@ -139,6 +140,57 @@ TEST_CASE("sinsim mc: threads 1 and 2 write identical files, a stopped batch res
   REQUIRE(res.exitCode == 0);
   CHECK(res.out.find("resumed from checkpoints") != std::string::npos);
   requireSameFolders(tmp / "t1", part);
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: a batch grown with --resume recomputes its short last chunk, not called damaged") {
+  const fs::path tmp = tempDir("grown");
+  const fs::path sc = writeScenario(tmp);
+  const std::string common = "mc '" + sc.string() + "' --seed 3 --threads 1 --model '" + sourceDir() +
+                             "/scenarios/adis16355-gm.yaml'";
+  REQUIRE(sinsim(common + " --runs 6 -o '" + (tmp / "g").string() + "'", tmp).exitCode == 0);
+  const Result grown = sinsim(common + " --runs 10 --resume -o '" + (tmp / "g").string() + "'", tmp);
+  INFO(grown.err);
+  REQUIRE(grown.exitCode == 0);
+  CHECK(grown.err.find("damaged") == std::string::npos);
+  CHECK(grown.out.find("damaged") == std::string::npos);
+  CHECK(grown.out.find("1 chunk(s) an earlier --runs had cut to another length recomputed") !=
+        std::string::npos);
+  REQUIRE(sinsim(common + " --runs 10 -o '" + (tmp / "fresh").string() + "'", tmp).exitCode == 0);
+  requireSameFolders(tmp / "fresh", tmp / "g");
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: --budget of a model with one effect says there is nothing to switch off") {
+  const fs::path tmp = tempDir("budget1");
+  const fs::path sc = writeScenario(tmp);
+  std::ofstream(tmp / "one.yaml") << "gyro: {x: [{type: white, density: 0.1 deg/sqrt(h)}]}\n";
+  const Result r = sinsim("mc '" + sc.string() + "' --runs 2 --threads 1 --budget --model '" +
+                              (tmp / "one.yaml").string() + "' -o '" + (tmp / "o").string() + "'",
+                          tmp);
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.err.find("--budget: model one has one effect, which is all its drift: nothing to switch off") !=
+        std::string::npos);
+  CHECK(r.out.find("budget variants") == std::string::npos);
+  fs::remove_all(tmp);
+}
+
+TEST_CASE("sinsim mc: stopped before its first chunk, nothing is left to resume or to refuse") {
+  const fs::path tmp = tempDir("nochunk");
+  const fs::path sc = writeScenario(tmp);
+  const std::string common = "mc '" + sc.string() + "' --seed 3 --threads 1 --runs 16 --model '" +
+                             sourceDir() + "/scenarios/adis16355-gm.yaml' -o '" + (tmp / "n").string() + "'";
+  const Result s = sinsim(common + " --stop-after 3", tmp);
+  CHECK(s.exitCode == 130);
+  CHECK(s.err.find("none saved (runs are saved in chunks of 8 per model") != std::string::npos);
+  CHECK(s.err.find("--resume") == std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "n"));  // the folder it created, empty, is gone
+  // A folder that held only the empty model folders of such a batch is no batch to protect.
+  fs::create_directories(tmp / "n" / "runs" / "adis16355-gm-0123abcd");
+  const Result again = sinsim(common, tmp);
+  INFO(again.err);
+  CHECK(again.exitCode == 0);
   fs::remove_all(tmp);
 }
 
@@ -190,11 +242,17 @@ TEST_CASE("sinsim mc: checkpoints are protected: no silent overwrite, no resume 
   CHECK(other.err.find("other inputs") != std::string::npos);
   // Bad input: nothing is created.
   const Result bad = sinsim("mc '" + sc.string() + "' --runs 0 -o '" + (tmp / "x").string() + "'", tmp);
-  CHECK(bad.exitCode == 1);
+  CHECK(bad.exitCode == 2);  // a bad command line, as --runs -1
+  CHECK(bad.err.find("--runs: expected at least 1 run per model, got 0") != std::string::npos);
   CHECK_FALSE(fs::exists(tmp / "x"));
   const Result badTime = sinsim(base + " --times 999 -o '" + (tmp / "y").string() + "'", tmp);
   CHECK(badTime.exitCode == 1);
   CHECK(badTime.err.find("outside the run") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "y"));
+  // One output epoch named twice would be counted twice in every table and test.
+  const Result twice = sinsim(base + " --times \"30,0.5 min\" -o '" + (tmp / "y").string() + "'", tmp);
+  CHECK(twice.exitCode == 1);
+  CHECK(twice.err.find("--times: times 1 and 2 (30 s, 30 s) fall on the same output epoch") != std::string::npos);
   CHECK_FALSE(fs::exists(tmp / "y"));
   fs::remove_all(tmp);
 }

@@ -142,7 +142,7 @@ TEST_CASE("sinsim run: a good scenario, overrides, and a bad model or option") {
     r = sinsim(a + " -o '" + (tmp / "c").string() + "'", tmp);
     INFO(a << "\nstderr: " << r.err);
     CHECK(r.exitCode == 2);
-    CHECK(r.err.find("expected an integer from 0 to 18446744073709551615, got \"-") != std::string::npos);
+    CHECK(r.err.find("expected a whole number (digits only), got \"-") != std::string::npos);
     CHECK(r.err.find("18446744073709551611") == std::string::npos);
     CHECK_FALSE(fs::exists(tmp / "c"));
   }
