@@ -35,6 +35,8 @@ ConfigError::ConfigError(std::vector<Diagnostic> diagnostics)
 
 void rethrowWithContext(const std::string& where, const Error& e) {
   const std::string what = e.what();
+  // A bad option's value is the command line's, not the file's: kept as it is (exit 2).
+  if (dynamic_cast<const OptionError*>(&e)) throw OptionError(what);
   if (what.rfind(where, 0) == 0) throw InputError(what);
   // "FILE: channel gx is constant" already names the file: add only the missing part.
   const std::size_t colon = where.find(": ");

@@ -63,7 +63,8 @@ class NumericalError : public Error {
 
 /// An Error raised deep inside a computation (statistics, fitting: "burg: the series is
 /// constant") rethrown as an InputError that says where: "`where`: message", e.g.
-/// "run1.csv: channel gx: burg: ...". A message that already starts with `where` is kept as is.
+/// "run1.csv: channel gx: burg: ...". A message that already starts with `where` is kept as is; an
+/// OptionError (a bad command-line value) is rethrown unchanged.
 [[noreturn]] void rethrowWithContext(const std::string& where, const Error& e);
 
 /// Runs f(); any sinsim::Error escaping it is rethrown by rethrowWithContext(where, ...).

@@ -172,12 +172,12 @@ namespace detail {
 
 Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& o) {
   if (o.realisations < 8 || o.realisations > 100000)
-    throw InputError("--realisations: at least 8 and at most 100000 Monte Carlo realisations, got " +
+    throw OptionError("--realisations: at least 8 and at most 100000 Monte Carlo realisations, got " +
                      std::to_string(o.realisations));
   if (!(std::isfinite(o.threshold) && o.threshold > 0))
-    throw InputError("--threshold: expected a positive score");
+    throw OptionError("--threshold: expected a positive score");
   if (!(std::isfinite(o.nextThreshold) && o.nextThreshold > 0))
-    throw InputError("--next-threshold: expected a positive score");
+    throw OptionError("--next-threshold: expected a positive score");
   if (!(o.bandLevel > 0 && o.bandLevel < 1)) throw InputError("band level must be in (0, 1)");
   if (record.rows < 256) throw InputError(record.source + ": at least 256 samples are needed");
   const std::vector<int> channels = channelsToDiagnose(record, o);

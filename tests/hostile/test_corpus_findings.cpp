@@ -171,6 +171,14 @@ TEST_CASE("corpus finding, unnamed errors: the file or option is named") {
                   d / "err") == 2);
   CHECK_THAT(slurp(d / "err"), Contains("--duration: expected a positive time"));
   CHECK_FALSE(fs::exists(d / "a.json"));
+  // An option the diagnosis checks (--realisations 4) is the command line's: exit 2, the record's
+  // name not put in front of it.
+  writeText(d / "w.yaml", "gyro: {x: [{type: white, density: 0.1 deg/sqrt(h)}]}\n");
+  CHECK(runSinsim("diagnose " + (d / "rec.csv").string() + " --model " + (d / "w.yaml").string() +
+                      " --realisations 4 --json " + (d / "g.json").string(),
+                  d / "err") == 2);
+  CHECK_THAT(slurp(d / "err"), Contains("sinsim: error: --realisations: at least 8"));
+  CHECK_FALSE(fs::exists(d / "g.json"));
   CHECK(runSinsim("run " + (d / "s2.yaml").string() + " --bias-window 1e-9 -o " +
                       (d / "out3").string(),
                   d / "err") == 1);
