@@ -17,12 +17,13 @@ out=${3:-out/outage-nees}
 mkdir -p "$out"
 . "$root/examples/outage-study/study_scenario.sh"
 white=$root/examples/outage-study/filter-white.yaml
-sed 's/density: \([0-9.]*\)/density: \1e-1/' "$white" > "$out/white10.yaml"
+# the model beside the cell's scenario, not at its name (white10.yaml is the scenario)
+sed 's/density: \([0-9.]*\)/density: \1e-1/' "$white" > "$out/filter-white10.yaml"
 for cell in ar5 gm white white10; do
   case $cell in
     ar5|gm) model=$root/scenarios/adis16355-$cell.yaml ;;
     white) model=$white ;;
-    white10) model=$(cd "$out" && pwd)/white10.yaml ;;
+    white10) model=$(cd "$out" && pwd)/filter-white10.yaml ;;
   esac
   study_scenario "$cell" "$model" "$model" > "$out/$cell.yaml"
   echo "$cell: $n seeds" >&2
@@ -30,5 +31,5 @@ for cell in ar5 gm white white10; do
     "$sinsim" run "$out/$cell.yaml" --seed "$s" -o "$out/$cell/s$s" >/dev/null
     rm -f "$out/$cell/s$s/truth.csv" "$out/$cell/s$s/nav.csv" "$out/$cell/s$s/errors.csv"
   done
-  python3 "$here/components.py" "$out/$cell"
+  /usr/bin/python3 "$here/components.py" "$out/$cell"
 done
