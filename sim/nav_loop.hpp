@@ -43,7 +43,7 @@ struct NavLoopOptions {
   /// gravity) [s]. 0: nothing removed.
   double biasWindow = 0.0;
   NavAiding* aiding = nullptr;               // not owned; nullptr: pure inertial
-  const std::atomic<bool>* cancel = nullptr; // checked every 65536 intervals
+  const std::atomic<bool>* cancel = nullptr; // checked every 1024 intervals and at the end
 };
 
 /// Called for epoch 0 (the start: e.index == 0, no sample, e.truth = the initial state) and after

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "errormodels/imu_model.hpp"
+#include "common/progress.hpp"
 #include "sim/imu_source.hpp"
 #include "sim/nav_loop.hpp"
 #include "sim/reference.hpp"
@@ -118,4 +119,24 @@ TEST_CASE("nav loop: the aiding hook sees every interval, measured and ideal apa
   // a(1 − e²)/(1 − e² sin²φ)^1.5): 9.9493 m; 1 mm allows for the printed digits.
   REQUIRE(rows.size() > 1);
   CHECK(rows.front().pos_n.x() == Approx(9.9493).margin(1e-3));
+}
+
+// Ctrl-C sets progress::interruptFlag(); the loop looks at it every 1024 intervals and at its end.
+// Every 65536 let a short aided run (200 s at 100 Hz) finish with exit 0 after Ctrl-C and took
+// 1.5 s to stop a long one (a blind probe, fifty-seventh session).
+TEST_CASE("nav loop: a set interrupt flag stops a run within 1024 intervals, and a short run at its end") {
+  sim::Scenario sc = sim::parseScenario(kMoving, "loop.yaml");  // 3000 intervals
+  std::size_t rows = 0;
+  sim::RunOptions ro;
+  ro.onRow = [&](const sim::NavError&) { ++rows; };
+  progress::interruptFlag().store(true);
+  CHECK_THROWS_AS(sim::run(sc, ro), sinsim::Interrupted);
+  CHECK(rows <= 12);  // 1 Hz rows of the first 1024 intervals at 100 Hz
+  rows = 0;
+  sim::Scenario shortOne = sim::parseScenario(
+      "start: {latitude: 45 deg, longitude: 7 deg}\nimu_rate: 100 Hz\nsegments: [{type: static, duration: 5 s}]\n",
+      "short.yaml");  // 500 intervals: never at a multiple of 1024
+  CHECK_THROWS_AS(sim::run(shortOne, ro), sinsim::Interrupted);
+  progress::interruptFlag().store(false);
+  CHECK_NOTHROW(sim::run(shortOne, ro));
 }
