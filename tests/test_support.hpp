@@ -2,6 +2,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -71,11 +72,32 @@ inline std::string slurp(const std::filesystem::path& path) {
   return s.str();
 }
 
-/// A fresh, empty folder `<temp>/<name>` for one test's files.
+/// The folders freshTempDir made in this process, removed when it ends (kept when the environment
+/// sets SINSIM_KEEP_TEST_FILES, to look at a failing test's files).
+struct TempDirs {
+  std::vector<std::filesystem::path> made;
+  ~TempDirs() {
+    if (std::getenv("SINSIM_KEEP_TEST_FILES") != nullptr) return;
+    for (const auto& d : made) {
+      std::error_code ignored;
+      std::filesystem::remove_all(d, ignored);
+    }
+  }
+};
+
+inline TempDirs& tempDirs() {
+  static TempDirs dirs;
+  return dirs;
+}
+
+/// A fresh, empty folder `<temp>/<name>-<pid>` for one test's files: ctest runs test cases as
+/// processes side by side, so a fixed name would let two of them share (and wipe) one folder.
 inline std::filesystem::path freshTempDir(const std::string& name) {
-  const std::filesystem::path d = std::filesystem::temp_directory_path() / name;
+  const std::filesystem::path d =
+      std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
+  tempDirs().made.push_back(d);
   return d;
 }
 

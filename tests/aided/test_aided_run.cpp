@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "sim/run.hpp"
 #include "sim/scenario_aiding.hpp"
+#include "test_support.hpp"
 
 using namespace sinsim;
 
@@ -34,7 +35,7 @@ segments:
 )";
 
 std::string tmpDir(const char* name) {
-  return (std::filesystem::temp_directory_path() / ("sinsim-aided-" + std::string(name))).string();
+  return sinsim::test::freshTempDir("sinsim-aided-" + std::string(name)).string();
 }
 }  // namespace
 

@@ -20,9 +20,7 @@ namespace fs = std::filesystem;
 using sinsim::test::slurp;
 
 TEST_CASE("sinsim analyze: white noise gives the closed-form Allan deviation and PSD", "[cli]") {
-  const fs::path dir = fs::temp_directory_path() / "sinsim_test_analyze_cli";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = sinsim::test::freshTempDir("sinsim_test_analyze_cli");
   const double fs_hz = 100.0, sigma = 0.1;  // [Hz], [rad/s] per sample
   const int n = 60000;                      // 10 min
   {

@@ -18,9 +18,7 @@ namespace fs = std::filesystem;
 using sinsim::test::slurp;
 
 TEST_CASE("sinsim fit: synth -> fit -> load, synth and run with the model", "[identify][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "sinsim_test_identify_cli";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = sinsim::test::freshTempDir("sinsim_test_identify_cli");
   const fs::path err = dir / "stderr.txt";
   const std::string preset = std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml";
   REQUIRE(sinsim::test::runSinsim("synth " + preset + " --rate 1000 --duration 120 --seed 3 -o " + (dir / "s.csv").string(), err) == 0);
