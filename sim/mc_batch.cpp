@@ -68,11 +68,13 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.warnings = batchWarnings(sc, ref);
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
     for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
-  if (opt.budget)  // runMonteCarlo switches off effects of models with two or more
+  if (opt.budget)
     for (const McModel& m : models)
-      if (const std::size_t n = m.model.empty() ? 0 : m.model.effectNames().size(); n < 2)
+      if (budgetEffects(m).empty())
         batch.warnings.push_back("--budget: model " + m.label +
-                                 (n ? " has one effect, which is all its drift" : " has no effect") +
+                                 (m.model.empty() || m.model.effectNames().empty()
+                                      ? " has no effect"
+                                      : " has one effect, which is all its drift") +
                                  ": nothing to switch off");
   if (batch.result.complete && opt.partition.rank == 0)
     batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times, measuredSetup ? &measured : nullptr);

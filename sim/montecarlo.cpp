@@ -33,6 +33,13 @@ double processCpuTime() {
 
 }  // namespace
 
+std::vector<std::string> budgetEffects(const McModel& m) {
+  if (m.model.empty()) return {};
+  std::vector<std::string> names = m.model.effectNames();
+  if (names.size() < 2) names.clear();
+  return names;
+}
+
 std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<double>& times) {
   std::vector<std::size_t> epochs;
   for (double t : times) {
@@ -90,9 +97,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   }
   if (opt.budget) {
     for (std::size_t i = 0; i < primaryModels.size(); ++i) {
-      const auto names = batch.effectNames[i];
-      if (names.size() < 2) continue;  // one effect: its share is the whole drift
-      for (const auto& name : names) {
+      for (const auto& name : budgetEffects(primaryModels[i])) {
         McModel v = primaryModels[i];
         v.label = primaryModels[i].label + " without " + name;
         v.model = primaryModels[i].model.filtered([&](const std::string& n) { return n != name; });

@@ -36,6 +36,10 @@ struct McModel {
   std::string identity;
 };
 
+/// The effects --budget switches off one at a time in `m`: all of its effects when it has two or
+/// more, none otherwise (one effect's share is the whole drift).
+std::vector<std::string> budgetEffects(const McModel& m);
+
 /// A measured record navigated along the same reference (see cmd_mc --measured): its errors at
 /// every output epoch, epochs() × kErrorFields.
 struct McMeasured {
