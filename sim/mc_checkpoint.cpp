@@ -160,10 +160,28 @@ CheckpointStore::CheckpointStore(std::string outDir, std::size_t epochs, std::si
 
 CheckpointStore::~CheckpointStore() = default;
 
+namespace {
+
+// A chunk's file in its model's folder: r<first run, nine digits>.bin.
+constexpr char kChunkPrefix = 'r';
+constexpr const char* kChunkSuffix = ".bin";
+
+std::string chunkFileName(std::uint64_t first) {
+  char digits[24];
+  std::snprintf(digits, sizeof digits, "%09llu", static_cast<unsigned long long>(first));
+  return kChunkPrefix + std::string(digits) + kChunkSuffix;
+}
+
+bool isChunkFileName(const std::string& n) {
+  const std::size_t suffix = std::strlen(kChunkSuffix);
+  return n.size() > suffix + 1 && n[0] == kChunkPrefix &&
+         n.compare(n.size() - suffix, suffix, kChunkSuffix) == 0;
+}
+
+}  // namespace
+
 std::string CheckpointStore::path(const ChunkKey& k) const {
-  char name[32];
-  std::snprintf(name, sizeof name, "r%09llu.bin", static_cast<unsigned long long>(k.first));
-  return (fs::path(outDir_) / "runs" / dirs_[k.model] / name).string();
+  return (fs::path(outDir_) / "runs" / dirs_[k.model] / chunkFileName(k.first)).string();
 }
 
 namespace {
@@ -175,8 +193,7 @@ bool holdsChunks(const fs::path& runsDir) {
   for (const auto& d : fs::directory_iterator(runsDir, ec)) {
     if (!d.is_directory(ec)) continue;
     for (const auto& f : fs::directory_iterator(d.path(), ec)) {
-      const std::string n = f.path().filename().string();
-      if (n.size() > 5 && n[0] == 'r' && n.compare(n.size() - 4, 4, ".bin") == 0) return true;
+      if (isChunkFileName(f.path().filename().string())) return true;
     }
   }
   return false;
