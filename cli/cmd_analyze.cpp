@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "errormodels/stats/record.hpp"
@@ -48,6 +49,9 @@ int runAnalyze(const AnalyzeArgs& a) {
   opt.denoise = a.denoise == "db5";
   opt.fullJson = a.fullJson;
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
+  // Both outputs before the work: never the JSON written and the HTML refused.
+  for (const std::string& out : {a.json_out, a.html_out})
+    if (!out.empty()) requireWritableTarget(out);
   if (a.segment > 0 && static_cast<std::size_t>(a.segment) > rec.size())
     throw InputError("--segment: " + std::to_string(a.segment) + " samples, longer than the " +
                      std::to_string(rec.size()) + "-sample record " + a.data);

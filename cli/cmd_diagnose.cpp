@@ -85,6 +85,10 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   std::vector<dg::AddRequest> adds;
   for (const auto& s : a.add) adds.push_back(dg::AddRequest::parse(s));
   if (!adds.empty() && !a.edited.empty()) throw InputError("give either --add or --edited, not both");
+  // Every output before the work: never some written and the next refused.
+  const std::string improvedOut = a.output.empty() ? defaultOutput(a.model) : a.output;
+  for (const std::string& out : {adds.empty() ? std::string() : improvedOut, a.json, a.html})
+    if (!out.empty()) requireWritableTarget(out);
 
   DiagnoseCommand command;  // for the page's "what next"
   command.base = "sinsim diagnose " + a.data + recordOptionsText(a.record);
@@ -106,10 +110,9 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
     if (nav) std::cout << sim::navVerdictText(*nav);
     if (!a.edited.empty()) command.improvedModel = a.edited;
     if (!adds.empty()) {
-      const std::string out = a.output.empty() ? defaultOutput(a.model) : a.output;
-      errormodels::writeErrorModel(out, imp.model);
-      command.improvedModel = out;
-      std::cout << "wrote the improved model " << out << "\n";
+      errormodels::writeErrorModel(improvedOut, imp.model);
+      command.improvedModel = improvedOut;
+      std::cout << "wrote the improved model " << improvedOut << "\n";
     }
     if (!a.json.empty()) writeFileAtomic(a.json, sim::diagnoseJsonWithNav(imp, nav ? &*nav : nullptr));
     if (!a.html.empty()) writeDiagnoseReport(a.html, imp.before, &imp, &command, nav ? &*nav : nullptr);

@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/record_options.hpp"
 #include "cli/terminal.hpp"
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
 #include "common/units.hpp"
@@ -132,6 +133,7 @@ int runFit(const FitArgs& a) {
   }
   const errormodels::RecordOptions ro = recordOptions(recordArgs);
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
+  requireWritableTarget(a.output);  // before the fit, not after it
 
   const errormodels::Identification id = errormodels::identify(rec, opt);
   endProgressLine();

@@ -21,22 +21,15 @@ namespace fs = std::filesystem;
 /// Opens a fresh hidden temporary beside `path`: ".NAME.tmp.PID.N", N a process-wide counter, so
 /// threads and processes writing the same target never share one; O_EXCL never reuses a stale
 /// file.
+fs::path folderOf(const fs::path& target) {
+  return target.has_parent_path() ? target.parent_path() : fs::path(".");
+}
+
 std::FILE* openTemporary(const std::string& path, std::string& temp) {
   static std::atomic<unsigned long> counter{0};
+  requireWritableTarget(path);
   const fs::path target(path);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError("cannot write " + path + ": folder " + dir.string() + " does not exist");
-  // The rename at the end replaces whatever the name points at: a device (`-o /dev/null` run as
-  // root would turn /dev/null into a regular file), a pipe or a folder is refused first.
-  const fs::file_status st = fs::status(target, ec);
-  if (fs::is_directory(st))
-    throw InputError("cannot write " + path + ": it is a folder; give a file name");
-  if (fs::exists(st) && !fs::is_regular_file(st))
-    throw InputError("cannot write " + path +
-                     ": it is a device, pipe or socket; sinsim writes regular files only");
-  requireNotAnInput(path);
+  const fs::path dir = folderOf(target);
   for (int attempt = 0; attempt < 100; ++attempt) {
     temp = (dir / ("." + target.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
                    std::to_string(counter++)))
@@ -57,6 +50,25 @@ std::FILE* openTemporary(const std::string& path, std::string& temp) {
 }
 
 }  // namespace
+
+void requireWritableTarget(const std::string& path) {
+  const fs::path target(path);
+  const fs::path dir = folderOf(target);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError("cannot write " + path + ": folder " + dir.string() + " does not exist");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw InputError("cannot write " + path + ": folder " + dir.string() + ": " + std::strerror(errno));
+  // The rename at the end replaces whatever the name points at: a device (`-o /dev/null` run as
+  // root would turn /dev/null into a regular file), a pipe or a folder is refused first.
+  const fs::file_status st = fs::status(target, ec);
+  if (fs::is_directory(st))
+    throw InputError("cannot write " + path + ": it is a folder; give a file name");
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw InputError("cannot write " + path +
+                     ": it is a device, pipe or socket; sinsim writes regular files only");
+  requireNotAnInput(path);
+}
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   fp_ = openTemporary(path_, temp_);

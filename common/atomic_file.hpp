@@ -10,6 +10,12 @@
 
 namespace sinsim {
 
+/// Throws InputError unless `path` can be written: its folder exists and is writable, and the
+/// name is not a folder, a device, a pipe or an input of this command. Commands call it for every
+/// output before their work, so that a bad output name never costs the work or leaves some
+/// outputs written and others not.
+void requireWritableTarget(const std::string& path);
+
 /// Writes `text` to `path` atomically. Throws InputError when the folder does not exist or the
 /// temporary cannot be created, Error on a write or rename failure.
 void writeFileAtomic(const std::string& path, std::string_view text);

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/atomic_file.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
@@ -225,6 +226,9 @@ std::vector<ChannelStats> analyzeRecord(const errormodels::Record& rec, const An
 void writeAnalysis(const errormodels::Record& rec, const std::vector<ChannelStats>& stats,
                    const AnalysisOptions& a, const std::string& jsonPath,
                    const std::string& htmlPath) {
+  // Both before either is written (an output file's folder is not created, docs/limits.md).
+  for (const std::string& out : {jsonPath, htmlPath})
+    if (!out.empty()) requireWritableTarget(out);
   if (!jsonPath.empty()) {
     json out;
     out["source"] = rec.source;

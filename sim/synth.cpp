@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/atomic_file.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/limits.hpp"
@@ -52,6 +53,7 @@ long long writeStaticRecord(const errormodels::ImuErrorModel& model, const Stati
   const long long n = std::llround(o.duration * o.rate);
   const double dt = 1.0 / o.rate;
 
+  requireWritableTarget(path);  // an output file's folder is not created (docs/limits.md)
   const std::filesystem::path target(path);
   OutputFiles out(target.has_parent_path() ? target.parent_path().string() : ".");
   std::FILE* f = out.open(target.filename().string());

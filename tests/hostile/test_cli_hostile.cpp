@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "common/limits.hpp"
 #include "test_support.hpp"
@@ -280,4 +281,37 @@ TEST_CASE("sinsim: bytes that are not UTF-8 in a message are shown as hex escape
   CHECK_THAT(err, Contains("temp\\xe9rature"));
   CHECK(err.find('\xe9') == std::string::npos);
   CHECK_FALSE(fs::exists(d / "o"));
+}
+
+TEST_CASE("sinsim analyze, synth and diagnose: an output in a missing folder is refused before the work, nothing written") {
+  // Before: analyze wrote its JSON and then refused the HTML (exit 1 with one output written);
+  // diagnose ran the whole diagnosis, wrote the improved model and the JSON, then refused the
+  // HTML; synth created the folder, while every other output file's missing folder was refused.
+  const fs::path d = tempDir("outputs");
+  const std::string model = std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml";
+  const std::string rec = (d / "r.csv").string();
+  REQUIRE(runSinsim("synth " + model + " --rate 100 --duration 60 --seed 1 -o " + rec, d / "err") == 0);
+  const std::string missing = (d / "no" / "such").string();
+  const struct {
+    std::string args, refused;
+    std::vector<fs::path> notWritten;
+  } cases[] = {
+      {"analyze " + rec + " --json " + (d / "a.json").string() + " --html " + missing + "/a.html",
+       missing + "/a.html", {d / "a.json"}},
+      {"synth " + model + " --rate 100 --duration 60 -o " + missing + "/s.csv", missing + "/s.csv", {}},
+      {"diagnose " + rec + " --model " + model + " --add white:gx -o " + (d / "m.yaml").string() +
+           " --json " + (d / "d.json").string() + " --html " + missing + "/d.html",
+       missing + "/d.html", {d / "m.yaml", d / "d.json"}},
+      {"diagnose " + rec + " --model " + model + " --add white:gx -o " + missing + "/m.yaml",
+       missing + "/m.yaml", {}},
+  };
+  for (const auto& c : cases) {
+    INFO(c.args);
+    CHECK(runSinsim(c.args, d / "err") == 1);
+    const std::string err = slurp(d / "err");
+    CHECK_THAT(err, Contains("cannot write " + c.refused + ": folder " + missing + " does not exist"));
+    CHECK(err.find("wall") == std::string::npos);  // refused before the diagnosis ran
+    for (const fs::path& p : c.notWritten) CHECK_FALSE(fs::exists(p));
+  }
+  CHECK_FALSE(fs::exists(d / "no"));
 }
