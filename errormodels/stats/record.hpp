@@ -31,7 +31,8 @@ struct RecordOptions {
   /// Unit of the ax/ay/az columns ("g", "m/s^2", "mg", ...). Unset: the header's unit, else m/s^2.
   std::optional<std::string> accel_unit;
   /// Sample rate [Hz]. Required when the file has no time column; with a time column it must
-  /// agree with the time stamps (within time_tolerance).
+  /// agree with the time stamps: to 0.1 % with their span's rate when they are regular, to
+  /// time_tolerance with their median step otherwise.
   std::optional<double> rate_hz;
   /// A time step is irregular when |dt - dt_nominal| > time_tolerance * dt_nominal. [1]
   double time_tolerance = 0.01;

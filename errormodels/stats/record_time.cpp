@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -59,6 +60,26 @@ double roundedGridResolution(const std::vector<double>& t, double tolerance) {
   return r;
 }
 
+namespace {
+
+/// A rate option and the rate of regular time stamps (their span's, exact to the stamps' digits)
+/// must agree this closely: within the 1 % a single step may be off, --rate 100.5 on 100 Hz
+/// stamps replaced them silently (every tau and the rate written into a fitted model 0.5 % off).
+constexpr double kRateAgreement = 1e-3;
+
+void requireRateAgrees(const Record& rec, double option, double spanRate, const char* what) {
+  if (std::abs(option - spanRate) <= kRateAgreement * spanRate) return;
+  std::ostringstream os;
+  os.precision(10);
+  os << "the rate option (--rate) " << option << " Hz disagrees with the time stamps (" << what
+     << " " << spanRate << " Hz, " << std::setprecision(2) << 100.0 * std::abs(option / spanRate - 1.0)
+     << " % apart; they must agree to " << 100.0 * kRateAgreement
+     << " %): leave the rate out to read the stamps' rate, or fix the time column";
+  recordError(rec.source, 0, os.str());
+}
+
+}  // namespace
+
 /// Checks that time stamps increase and are uniform; first_line is the file line of row 0.
 void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options) {
   const std::vector<double>& t = rec.t;
@@ -77,11 +98,10 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
   const double rounding = n >= 3 ? roundedGridResolution(t, options.time_tolerance) : 0.0;
   if (rounding > 0.0) {
     const double span = (t[n - 1] - t[0]) / double(n - 1);
-    if (options.rate_hz && std::abs(1.0 / *options.rate_hz - span) > options.time_tolerance * span) {
-      std::ostringstream os;
-      os << "the rate option (--rate) " << *options.rate_hz << " Hz disagrees with the time stamps (rounded to "
-         << rounding << " s; their span gives " << 1.0 / span << " Hz)";
-      recordError(rec.source, 0, os.str());
+    if (options.rate_hz) {
+      std::ostringstream what;
+      what << "rounded to " << rounding << " s; their span gives";
+      requireRateAgrees(rec, *options.rate_hz, 1.0 / span, what.str().c_str());
     }
     rec.rate_hz = options.rate_hz ? *options.rate_hz : 1.0 / span;
     rec.time_rounding_s = rounding;
@@ -96,16 +116,9 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
     std::nth_element(dt.begin(), mid, dt.end());
     dt0 = *mid;  // median step: robust to a few gaps
   }
-  if (options.rate_hz) {
-    const double dt_opt = 1.0 / *options.rate_hz;
-    if (n >= 2 && std::abs(dt_opt - dt0) > options.time_tolerance * dt_opt) {
-      std::ostringstream os;
-      os << "the rate option (--rate) " << *options.rate_hz << " Hz disagrees with the time stamps (median step "
-         << dt0 << " s, i.e. " << 1.0 / dt0 << " Hz)";
-      recordError(rec.source, 0, os.str());
-    }
-    dt0 = dt_opt;
-  }
+  // Irregular steps are those off the stamps' own median step: a rate option 1 % off made every
+  // regular step "irregular" (--rate 101 on 100 Hz stamps: 15250 irregular steps).
+  if (n < 2) dt0 = 1.0 / *options.rate_hz;
   rec.rate_hz = 1.0 / dt0;
   std::size_t count = 0;
   std::vector<TimeIrregularity> found;
@@ -119,10 +132,20 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
   // Regular steps: the rate from the whole span, not from one step, whose printed digits (a time
   // column written with %.12g or %.6f) leave it 1e-7..1e-4 off -- enough for a model's process
   // defined at the record's own rate to read as slower than it.
-  if (count == 0 && n >= 2 && !options.rate_hz) rec.rate_hz = double(n - 1) / (t[n - 1] - t[0]);
+  if (count == 0 && n >= 2) rec.rate_hz = double(n - 1) / (t[n - 1] - t[0]);
+  if (options.rate_hz && n >= 2) {
+    // Regular stamps: their span's rate, to 0.1 %. Irregular ones (allowed gaps, jitter): the
+    // median step's, to the step tolerance.
+    if (count == 0)
+      requireRateAgrees(rec, *options.rate_hz, rec.rate_hz, "their span gives");
+    else if (std::abs(1.0 / *options.rate_hz - dt0) > options.time_tolerance * dt0)
+      requireRateAgrees(rec, *options.rate_hz, 1.0 / dt0, "their median step gives");
+  }
+  if (options.rate_hz) rec.rate_hz = *options.rate_hz;
   rec.irregular_count = count;
   if (count > 0 && !options.allow_irregular_time) {
     std::ostringstream os;
+    os.precision(12);  // Unix time stamps: the fraction of a second shows
     os << count << " irregular time step(s) (nominal " << dt0 << " s, tolerance "
        << options.time_tolerance * 100 << " %); first at:";
     for (std::size_t i = 0; i < std::min<std::size_t>(found.size(), 5); ++i) {

@@ -153,6 +153,29 @@ TEST_CASE("record: irregular and gapped time stamps are reported, not resampled"
   CHECK_THAT(errorOf("t,gx\n0,0\n0.01,0\n0.02,0\n", wrong_rate), Catch::Contains("disagrees"));
 }
 
+TEST_CASE("record: a rate option must agree with regular stamps to 0.1 %, and never makes them irregular",
+          "[record]") {
+  // 1000 stamps exactly 10 ms apart. Before: --rate 100.5 replaced them silently (every tau and a
+  // fitted model's rate 0.5 % off); --rate 101 was refused as "999 irregular time step(s)".
+  std::string text = "t,gx\n";
+  for (int k = 0; k < 1000; ++k) text += std::to_string(k) + "e-2,0\n";
+  for (const double rate : {100.5, 101.0, 99.0, 99.85}) {
+    RecordOptions o;
+    o.rate_hz = rate;
+    const std::string msg = errorOf(text, o);
+    INFO(rate << ": " << msg);
+    CHECK_THAT(msg, Catch::Contains("disagrees with the time stamps (their span gives 100 Hz") &&
+                        Catch::Contains("must agree to 0.1 %"));
+    CHECK(msg.find("irregular") == std::string::npos);
+  }
+  for (const double rate : {100.0, 100.05, 99.95}) {  // a nominal rate beside a clock 0.05 % off
+    RecordOptions o;
+    o.rate_hz = rate;
+    CHECK(parseRecord(text, "rec.csv", o).rate_hz == rate);
+  }
+  CHECK(parseRecord(text, "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
+}
+
 TEST_CASE("record: gzip files are read directly, missing or truncated files are errors", "[record]") {
   const std::string text = "gx,gy,gz,ax,ay,az\n0.05,-0.1,0,0.003,0,-1.016\n0.1,0,0,0,0,-1\n";
   const fs::path gz = tempPath("rec.csv.gz");
