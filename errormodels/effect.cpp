@@ -74,9 +74,13 @@ std::vector<ParamSchema> matrixParams(DimRule entry, bool alsoAngle) {
 }
 
 void requireRateAtLeastImu(double processRate, const InstanceContext& ctx) {
-  // 1e-9 relative: rates read from text ("1 kHz" vs 1000 Hz) agree to rounding only.
-  if (processRate < ctx.imuRate * (1.0 - 1e-9)) {
+  // 1e-6 relative: a model fitted at a record's rate read from its time stamps (jittered, or
+  // Unix time in ns: 100.0000013 Hz) is at that rate, and was refused as "100 Hz, slower than
+  // the IMU rate 100 Hz"; a discrete process run 1e-6 off its rate is off by far less than its
+  // parameters' own uncertainty.
+  if (processRate < ctx.imuRate * (1.0 - 1e-6)) {
     std::ostringstream s;
+    s.precision(12);
     s << ctx.site->name << ": the process is defined at " << processRate
       << " Hz, slower than the IMU rate " << ctx.imuRate
       << " Hz; a discrete model cannot be generated between its own samples (refit it at the IMU "

@@ -63,6 +63,11 @@ TEST_CASE("a process defined at a rate slower than the IMU is refused at instant
   auto msg = messageOf([&] { m.instantiate(200.0, {}); });
   CHECK(msg.find("accel.all[0].gauss_markov(x)") != std::string::npos);
   CHECK(msg.find("slower than the IMU rate 200 Hz") != std::string::npos);
+  // A record's rate read from its stamps (jitter, Unix time in ns) is 1e-8 off the rate printed
+  // in a model fitted on it: the same rate. 1e-5 off is not, and the message shows the digits.
+  CHECK_NOTHROW(m.instantiate(100.0000013, {}));
+  msg = messageOf([&] { m.instantiate(100.001, {}); });
+  CHECK(msg.find("defined at 100 Hz, slower than the IMU rate 100.001 Hz") != std::string::npos);
 }
 
 TEST_CASE("triad and axis effects must sit in the right lists, the model file is all-or-nothing") {
