@@ -166,22 +166,40 @@ void checkRate(double rate, const std::string& source, const std::string& what, 
                         " Hz; docs/limits.md)" + hint);
 }
 
+namespace {
+
+/// The index of the first sample at or after `at` seconds into the record: on its time stamps
+/// (measured from the first) when it has allowed irregular steps, whose samples no longer sit at
+/// k / rate (after a 60-s gap, --skip 200 s counted 200 s of samples and landed at 260 s); k =
+/// round(at * rate) otherwise. Half a step early counts as at.
+std::size_t sampleAt(const Record& rec, double at) {
+  if (rec.irregular_count == 0 || rec.t.empty())
+    return static_cast<std::size_t>(std::llround(at * rec.rate_hz));
+  const double target = rec.t.front() + at - 0.5 / rec.rate_hz;
+  return static_cast<std::size_t>(std::lower_bound(rec.t.begin(), rec.t.end(), target) - rec.t.begin());
+}
+
+}  // namespace
+
 /// Keeps the samples [skip, skip + duration) of the record (RecordOptions::skip_s, duration_s).
 void applyWindow(Record& rec, const RecordOptions& o) {
   if (o.skip_s == 0.0 && !o.duration_s) return;
-  const double total = rec.duration();
+  // With gaps the record spans its stamps, not rows / rate.
+  const bool stamped = rec.irregular_count > 0 && !rec.t.empty();
+  const double total = stamped ? rec.t.back() - rec.t.front() + 1.0 / rec.rate_hz : rec.duration();
   // Compared in floating point first: a skip of 1e300 s must not reach an integer conversion.
   if (!(o.skip_s < total))
     recordError(rec.source, 0, "skip " + limits::fmt(o.skip_s) + " s leaves no samples (the record is " +
                             limits::fmt(total) + " s long)");
-  const std::size_t first = static_cast<std::size_t>(std::llround(o.skip_s * rec.rate_hz));
-  std::size_t count = rec.rows - std::min(first, rec.rows);
+  const std::size_t first = std::min(sampleAt(rec, o.skip_s), rec.rows);
+  std::size_t count = rec.rows - first;
   if (o.duration_s) {
     if (!(*o.duration_s <= total - o.skip_s + 0.5 / rec.rate_hz))
       recordError(rec.source, 0, "duration " + limits::fmt(*o.duration_s) + " s after a skip of " +
                               limits::fmt(o.skip_s) + " s is longer than the record (" +
                               limits::fmt(total) + " s)");
-    count = std::min(count, static_cast<std::size_t>(std::llround(*o.duration_s * rec.rate_hz)));
+    count = std::min(count, stamped ? std::min(sampleAt(rec, o.skip_s + *o.duration_s), rec.rows) - first
+                                    : static_cast<std::size_t>(std::llround(*o.duration_s * rec.rate_hz)));
   }
   if (count < 2) recordError(rec.source, 0, "skip and duration leave fewer than 2 samples");
   auto cut = [&](std::vector<double>& v) {
@@ -189,7 +207,7 @@ void applyWindow(Record& rec, const RecordOptions& o) {
     v.erase(v.begin() + static_cast<std::ptrdiff_t>(first + count), v.end());
     v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(first));
   };
-  rec.skipped_s = double(first) / rec.rate_hz;
+  rec.skipped_s = stamped && first < rec.rows ? rec.t[first] - rec.t.front() : double(first) / rec.rate_hz;
   cut(rec.t);
   for (auto& v : rec.gyro) cut(v);
   for (auto& v : rec.accel) cut(v);

@@ -176,6 +176,41 @@ TEST_CASE("record: a rate option must agree with regular stamps to 0.1 %, and ne
   CHECK(parseRecord(text, "rec.csv", {}).rate_hz == Approx(100.0).epsilon(1e-12));
 }
 
+TEST_CASE("record: after an allowed gap, --skip and --duration cut on the time stamps", "[record]") {
+  // 100 Hz, 0..99.99 s with the stamps 20..39.99 s missing (a 20-s gap); gx is the stamp itself.
+  // Before: --skip 50 counted 50 s of samples and started at t = 70 s.
+  std::string text = "t,gx\n";
+  for (int k = 0; k < 10000; ++k)
+    if (k < 2000 || k >= 4000) text += std::to_string(k) + "e-2," + std::to_string(k) + "e-2\n";
+  RecordOptions o;
+  o.allow_irregular_time = true;
+  o.skip_s = 50.0;
+  o.duration_s = 30.0;
+  const Record r = parseRecord(text, "rec.csv", o);
+  REQUIRE(r.size() == 3000);
+  CHECK(r.gyro[0].front() == Approx(50.0));
+  CHECK(r.gyro[0].back() == Approx(79.99));
+  CHECK(r.skipped_s == Approx(50.0));
+  // A window across the gap keeps the stamps in it; the record spans 100 s, not 80 s of rows.
+  o.skip_s = 10.0;
+  o.duration_s = 85.0;
+  const Record across = parseRecord(text, "rec.csv", o);
+  CHECK(across.size() == 6500);  // 10..19.99 s and 40..94.99 s
+  CHECK(across.gyro[0].back() == Approx(94.99));
+  o.skip_s = 0.0;
+  o.duration_s = 101.0;
+  CHECK_THAT(errorOf(text, o), Catch::Contains("is longer than the record (100 s)"));
+  // Regular stamps: the same windows as counting samples.
+  std::string regular = "t,gx\n";
+  for (int k = 0; k < 1000; ++k) regular += std::to_string(k) + "e-2," + std::to_string(k) + "\n";
+  RecordOptions w;
+  w.skip_s = 2.004;
+  w.duration_s = 3.0;
+  const Record rr = parseRecord(regular, "rec.csv", w);
+  CHECK(rr.gyro[0].front() == 200.0);
+  CHECK(rr.size() == 300);
+}
+
 TEST_CASE("record: gzip files are read directly, missing or truncated files are errors", "[record]") {
   const std::string text = "gx,gy,gz,ax,ay,az\n0.05,-0.1,0,0.003,0,-1.016\n0.1,0,0,0,0,-1\n";
   const fs::path gz = tempPath("rec.csv.gz");
