@@ -35,12 +35,7 @@ int runAnalyze(const AnalyzeArgs& a) {
     throw InputError("--denoise: expected db5 or none, got \"" + a.denoise + "\"");
   if (a.tau != "octave" && a.tau != "decade")
     throw InputError("--tau: expected octave or decade, got \"" + a.tau + "\"");
-  if (!(std::isfinite(a.max_lag_s) && a.max_lag_s >= 0 && a.max_lag_s <= limits::kMaxDuration))
-    throw InputError("--max-lag: expected a lag from 0 to " + limits::fmt(limits::kMaxDuration) +
-                     " s, got " + limits::fmt(a.max_lag_s));
   if (a.segment < 0) throw InputError("--segment: expected a positive number of samples");
-  if (!(a.confidence > 0 && a.confidence < 1))
-    throw InputError("--confidence: expected a level in (0, 1), got " + limits::fmt(a.confidence));
   sim::AnalysisOptions opt;
   opt.max_lag_s = a.max_lag_s;
   opt.segment = static_cast<std::size_t>(a.segment);
@@ -48,6 +43,7 @@ int runAnalyze(const AnalyzeArgs& a) {
   opt.confidence = a.confidence;
   opt.denoise = a.denoise == "db5";
   opt.fullJson = a.fullJson;
+  sim::checkAnalysisOptions(opt);  // before the record is read
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
   // Both outputs before the work: never the JSON written and the HTML refused.
   for (const std::string& out : {a.json_out, a.html_out})

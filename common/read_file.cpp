@@ -24,7 +24,8 @@ std::string& sandbox() {
 /// The inputs read so far, by device and inode (a link or another spelling is the same file).
 struct Inputs {
   std::mutex mutex;
-  bool tracking = false;
+  bool tracking = false;  // the whole process (a command line run)
+  int scopes = 0;         // open InputFilesScopes
   std::set<std::pair<dev_t, ino_t>> files;
 };
 Inputs& inputs() {
@@ -36,6 +37,16 @@ Inputs& inputs() {
 void trackInputFiles() {
   std::lock_guard<std::mutex> lock(inputs().mutex);
   inputs().tracking = true;
+}
+
+InputFilesScope::InputFilesScope() {
+  std::lock_guard<std::mutex> lock(inputs().mutex);
+  ++inputs().scopes;
+}
+
+InputFilesScope::~InputFilesScope() {
+  std::lock_guard<std::mutex> lock(inputs().mutex);
+  if (--inputs().scopes == 0 && !inputs().tracking) inputs().files.clear();
 }
 
 void requireNotAnInput(const std::string& path) {
@@ -66,7 +77,7 @@ void requireRegularFile(const std::string& path, const std::string& what) {
     throw InputError(path + ": is a device, pipe or socket, expected a " + what +
                      " (a regular file)");
   std::lock_guard<std::mutex> lock(inputs().mutex);
-  if (inputs().tracking) inputs().files.insert({st.st_dev, st.st_ino});
+  if (inputs().tracking || inputs().scopes > 0) inputs().files.insert({st.st_dev, st.st_ino});
 }
 
 std::string readRegularFile(const std::string& path, std::size_t maxBytes,

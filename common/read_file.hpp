@@ -24,6 +24,18 @@ void trackInputFiles();
 /// Throws InputError "cannot write PATH: ..." when PATH is (a link to) a remembered input.
 void requireNotAnInput(const std::string& path);
 
+/// Tracks the inputs of one library call (a Python function) for its lifetime: within it an
+/// output never replaces a file it read (`sinsim.analyze("rec.csv", json="rec.csv")` replaced the
+/// record), while the session may rewrite its files between calls. Scopes may overlap (threads):
+/// the inputs are forgotten when the last one ends.
+class InputFilesScope {
+ public:
+  InputFilesScope();
+  ~InputFilesScope();
+  InputFilesScope(const InputFilesScope&) = delete;
+  InputFilesScope& operator=(const InputFilesScope&) = delete;
+};
+
 /// Refuses, from now on, every input file outside `dir` (fuzzing harnesses: a fuzzed scenario
 /// must not read arbitrary paths such as `errors: /etc/shadow`). Empty: no restriction.
 void restrictInputFilesTo(const std::string& dir);

@@ -7,6 +7,7 @@
 #include "errormodels/identify.hpp"
 #include "errormodels/model_io.hpp"
 #include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "python/bindings.hpp"
 #include "sim/analysis.hpp"
 
@@ -55,6 +56,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
                  const std::string& tau, double confidence, bool denoise, const std::string& json,
                  const std::string& html, const std::optional<std::string>& gyroUnit,
                  const std::optional<std::string>& accelUnit, const py::object& rate) {
+  const InputFilesScope inputs;  // the outputs never replace the record (the CLI's rule)
   if (tau != "octave" && tau != "decade")
     throw InputError("tau: expected octave or decade, got \"" + tau + "\"");
   sim::AnalysisOptions opt;
@@ -83,6 +85,7 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
           std::optional<std::size_t> order, const std::string& criterion, std::size_t maxOrder,
           bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
           const std::optional<std::string>& accelUnit, const py::object& rate, const std::string& lines) {
+  const InputFilesScope inputs;
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
   opt.fitLines = em::fitLinesByName(lines);
@@ -124,6 +127,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
                   std::uint64_t seed, unsigned threads, double threshold, double nextThreshold,
                   const std::optional<std::string>& gyroUnit,
                   const std::optional<std::string>& accelUnit, const py::object& rate) {
+  const InputFilesScope inputs;
   namespace dg = em::diagnose;
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   const Model m = toModel(model);  // a path is read as `--model` reads it (loadErrorModel)

@@ -11,6 +11,7 @@
 #include "common/error.hpp"
 #include "errormodels/model_io.hpp"
 #include "common/limits.hpp"
+#include "common/read_file.hpp"
 #include "python/bindings.hpp"
 #include "sim/mc_batch.hpp"
 #include "sim/mc_headlines.hpp"
@@ -96,6 +97,7 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
 
 py::dict run(const py::object& scenario, const py::object& model, std::optional<std::uint64_t> seed,
              const py::object& biasWindow, const std::string& output, bool imu) {
+  const InputFilesScope inputs;  // the outputs never replace a file the call read (the CLI's rule)
   sim::Scenario sc = toScenario(scenario);
   sim::RunOptions opt;
   if (!model.is_none()) {
@@ -201,6 +203,7 @@ struct ScratchDir {
 py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t runs,
             std::optional<std::uint64_t> seed, unsigned threads, const py::object& times,
             const py::object& biasWindow, bool budget, const std::string& output) {
+  const InputFilesScope inputs;
   const sim::Scenario sc = toScenario(scenario);
   const std::string identity = py::isinstance<py::str>(scenario)
                                    ? slurp(scenario.cast<std::string>())
@@ -251,6 +254,7 @@ py::dict synth(const py::object& model, double rate, const py::object& duration,
                const std::string& path, std::uint64_t seed, std::uint64_t run,
                const std::string& temperature, const py::object& latitude, const py::object& height,
                const py::object& attitude) {
+  const InputFilesScope inputs;
   const errormodels::ImuErrorModel m = imuModel(toModel(model));
   sim::StaticRecordSpec spec;
   spec.rate = rate;

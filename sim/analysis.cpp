@@ -55,8 +55,6 @@ ChannelStats channelStats(const std::string& name, const std::vector<double>& y,
   }
   const std::size_t n = z->size();
   const double duration = static_cast<double>(n) / rate_hz;
-  if (!(a.max_lag_s >= 0.0))  // NaN or negative: read as the default before (the Python module)
-    throw InputError("the largest ACF lag (max lag) must be >= 0 s (0: the default), got " + limits::fmt(a.max_lag_s));
   const double max_lag_s = a.max_lag_s > 0 ? a.max_lag_s : std::min(duration / 10.0, 1000.0);
   const std::size_t max_lag =
       std::min<std::size_t>(n - 1, static_cast<std::size_t>(std::llround(max_lag_s * rate_hz)));
@@ -202,7 +200,17 @@ void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const Analy
 
 }  // namespace
 
+void checkAnalysisOptions(const AnalysisOptions& a) {
+  // NaN or negative was read as the default before (the Python module).
+  if (!(std::isfinite(a.max_lag_s) && a.max_lag_s >= 0 && a.max_lag_s <= limits::kMaxDuration))
+    throw InputError("--max-lag (the largest ACF lag, max lag): expected a lag from 0 to " +
+                     limits::fmt(limits::kMaxDuration) + " s (0: the default), got " + limits::fmt(a.max_lag_s));
+  if (!(a.confidence > 0 && a.confidence < 1))
+    throw InputError("--confidence: expected a level in (0, 1), got " + limits::fmt(a.confidence));
+}
+
 std::vector<ChannelStats> analyzeRecord(const errormodels::Record& rec, const AnalysisOptions& a) {
+  checkAnalysisOptions(a);
   std::vector<ChannelStats> stats;
   const char* gnames[3] = {"gx", "gy", "gz"};
   const char* anames[3] = {"ax", "ay", "az"};

@@ -26,6 +26,11 @@ struct AnalysisOptions {
   bool fullJson = false;      // JSON with every ACF lag and PSD bin (default: log-spaced subset)
 };
 
+/// Throws InputError naming the option (--max-lag, --confidence) when it is out of range: the CLI
+/// before reading the record, analyzeRecord for every caller (the Python module took a max lag of
+/// 1e300 s that the CLI refused).
+void checkAnalysisOptions(const AnalysisOptions& options);
+
 /// The statistics of one channel.
 struct ChannelStats {
   std::string name;     // gx, ..., az

@@ -203,3 +203,26 @@ def test_analyze_raises_the_warnings_the_cli_prints():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         sinsim.analyze({"rate": 100.0, "gx": x * 15}, gyro_unit="deg/s")
+
+
+def test_a_call_never_writes_over_a_file_it_read(tmp_path):
+    # The CLI refused `analyze rec.csv --json rec.csv`; the module replaced the record with the JSON
+    # (and synth a model file with the record). Between calls the session may rewrite its files.
+    model = tmp_path / "m.yaml"
+    sinsim.Model(TRUE_MODEL).write(str(model))
+    rec = tmp_path / "r.csv"
+    sinsim.synth(str(model), rate=RATE, duration="60 s", path=str(rec), seed=1)
+    before = (rec.read_bytes(), model.read_bytes())
+    with pytest.raises(sinsim.InputError, match="it is an input of this command"):
+        sinsim.analyze(str(rec), json=str(rec))
+    with pytest.raises(sinsim.InputError, match="it is an input of this command"):
+        sinsim.analyze(str(rec), html=str(rec))
+    with pytest.raises(sinsim.InputError, match="it is an input of this command"):
+        sinsim.synth(str(model), rate=RATE, duration="60 s", path=str(model))
+    assert (rec.read_bytes(), model.read_bytes()) == before
+    sinsim.analyze(str(rec), json=str(tmp_path / "a.json"))
+    sinsim.Model(str(model)).write(str(model))  # a later call rewrites what an earlier one read
+    sinsim.synth(str(model), rate=RATE, duration="60 s", path=str(rec), seed=2)
+    assert rec.read_bytes() != before[0]
+    with pytest.raises(sinsim.InputError, match="max lag"):
+        sinsim.analyze(str(rec), max_lag=1e300)
