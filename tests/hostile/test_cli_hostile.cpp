@@ -187,6 +187,36 @@ TEST_CASE("sinsim analyze: a record beyond the memory left is refused by name, n
   CHECK_THAT(err, !Contains("internal error") && !Contains("bad_alloc"));
   CHECK_FALSE(fs::exists(json));
 }
+
+TEST_CASE("sinsim analyze: too little memory to plan an FFT is an error, not FFTW's abort") {
+  // 1e7 samples of one channel. Under `ulimit -v` 300-355 MB FFTW's planner found no memory for
+  // its twiddles and aborted the process (SIGABRT, "fftw: alloc.c:29: assertion failed"); the
+  // limits straddle where the record is read and the transform is planned.
+  const fs::path d = tempDir("fft-memory");
+  const fs::path rec = d / "one.csv.gz";
+  gzFile f = gzopen(rec.string().c_str(), "wb1");
+  REQUIRE(f != nullptr);
+  gzputs(f, "gx\n");
+  std::string block;
+  for (int k = 0; k < 100000; ++k) block += (k % 3 ? "1\n" : "-2\n");
+  for (int k = 0; k < 100; ++k) gzwrite(f, block.data(), static_cast<unsigned>(block.size()));
+  gzclose(f);
+  int refused = 0;
+  for (int limit = 300000; limit <= 420000; limit += 15000) {
+    const std::string cmd = "ulimit -v " + std::to_string(limit) + "; " + std::string(SINSIM_BINARY_DIR) +
+                            "/sinsim analyze " + rec.string() + " --rate 1000 > /dev/null 2> " +
+                            (d / "err").string();
+    const int status = std::system(cmd.c_str());
+    INFO("ulimit -v " << limit << ": " << slurp(d / "err"));
+    REQUIRE(WIFEXITED(status));
+    CHECK((WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 1));
+    if (WEXITSTATUS(status) == 1) {
+      ++refused;
+      CHECK_THAT(slurp(d / "err"), Contains(rec.string() + ": channel gx: ") || Contains("memory left"));
+    }
+  }
+  CHECK(refused > 0);
+}
 #endif
 
 TEST_CASE("sinsim fit and diagnose: a dead channel among live ones is named with the option that leaves it out") {
