@@ -127,8 +127,15 @@ py::dict run(const py::object& scenario, const py::object& model, std::optional<
 std::vector<sim::McModel> mcModels(const sim::Scenario& sc, const std::string& identity,
                                    const py::object& models) {
   if (models.is_none()) return sim::loadMcModels({}, sc, identity);
+  // One model (a file name, a dict, a Model) is a batch of one: a string was iterated by its
+  // characters ("s: cannot open file").
+  const bool one = py::isinstance<py::str>(models) || py::isinstance<py::dict>(models) ||
+                   py::isinstance<Model>(models) || py::hasattr(models, "__fspath__");
+  py::list items;
+  if (one) items.append(models);
+  else items = py::list(models);
   std::vector<sim::McModel> out;
-  for (const auto& item : models) {
+  for (const auto& item : items) {
     if (py::isinstance<py::str>(item)) {
       out.push_back(sim::loadMcModels({item.cast<std::string>()}, sc, identity).at(0));
     } else {
@@ -214,8 +221,14 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
   opt.seed = seed ? *seed : sc.seed.value_or(0);
   limits::requireThreads(threads, "threads");
   opt.threads = threads;
-  if (!times.is_none())
+  if (py::isinstance<py::str>(times)) {  // iterated by its characters: "got \"3\" with no unit"
+    const std::string text = times.cast<std::string>();
+    if (text.find(',') != std::string::npos)
+      throw InputError("times: give a list of times ([\"5 min\", \"10 min\"]), not one string \"" + text + "\"");
+    opt.times.push_back(quantityArg(times, Dimension::time(), "times"));
+  } else if (!times.is_none()) {
     for (const auto& t : times) opt.times.push_back(quantityArg(t, Dimension::time(), "times"));
+  }
   opt.budget = budget;
   opt.navigate.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
   opt.scenarioIdentity = identity;

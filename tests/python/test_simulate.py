@@ -128,6 +128,18 @@ def test_mc_is_repeatable_and_typed_models_equal_files(tmp_path):
     assert np.all(a["final"]["none"]["horizontal_m"] < 1e-3)  # perfect IMU, 5 min at rest
 
 
+def test_mc_takes_one_model_or_one_time_as_itself(tmp_path):
+    # A string was iterated by its characters: models="m.yaml" opened "m", times="300 s" read "3".
+    sc, model = scenario_file(tmp_path)
+    a = sinsim.mc(sc, models=[model], runs=4, seed=3, threads=1, times=["60 s"])
+    for one in (model, sinsim.Model(model)):
+        b = sinsim.mc(sc, models=one, runs=4, seed=3, threads=1, times="60 s")
+        assert b["labels"] == a["labels"]
+        assert np.array_equal(a["errors"]["white"], b["errors"]["white"])
+    with pytest.raises(sinsim.InputError, match="give a list of times"):
+        sinsim.mc(sc, models=model, runs=4, times="1 min,2 min")
+
+
 def test_mc_refuses_duplicate_labels(tmp_path):
     sc, model = scenario_file(tmp_path)
     with pytest.raises(sinsim.InputError, match="labelled"):
