@@ -231,10 +231,11 @@ fit::ModelProvenance Identification::provenance() const {
   p.rate = rate_hz;
   p.duration = duration();
   p.method = method();
+  const std::size_t firstSkipped = skipped + static_cast<std::size_t>(std::llround(fileSkipped_s * rate_hz));
   p.notes.push_back("samples used: " + std::to_string(samples) +
-                    (skipped ? " (first " + std::to_string(skipped) + " samples = " +
-                                   significant(skipped / rate_hz) + " s skipped)"
-                             : ""));
+                    (firstSkipped ? " (first " + std::to_string(firstSkipped) + " samples = " +
+                                        significant(fileSkipped_s + double(skipped) / rate_hz) + " s skipped)"
+                                  : ""));
   p.notes.push_back(
       "bias: each channel's mean (turn-on bias + Earth rate / gravity, not separable in one static "
       "record) is removed before fitting and only reported below; add a `bias` effect by hand if "
@@ -413,6 +414,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
   out.rate_hz = record.rate_hz;
   out.samples = n;
   out.skipped = skip;
+  out.fileSkipped_s = record.skipped_s;
   out.options = opt;
 
   // Channels are independent: on worker threads, each result in its channel's

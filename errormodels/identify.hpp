@@ -149,6 +149,9 @@ struct Identification {
   double rate_hz = 0.0;       ///< [Hz]
   std::size_t samples = 0;    ///< samples used (after skipStart)
   std::size_t skipped = 0;    ///< samples dropped at the start
+  /// [s] of the file the reader's --skip dropped before (Record::skipped_s); the model's notes
+  /// state both (the CLI's `fit --skip` cuts in the reader, the Python module's skip= in the fit).
+  double fileSkipped_s = 0.0;
   double duration() const { return rate_hz > 0 ? samples / rate_hz : 0.0; }  ///< [s] used
   IdentifyOptions options;
   std::vector<AxisIdentification> axes;
