@@ -203,8 +203,8 @@ void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const Analy
 void checkAnalysisOptions(const AnalysisOptions& a) {
   // NaN or negative was read as the default before (the Python module).
   if (!(std::isfinite(a.max_lag_s) && a.max_lag_s >= 0 && a.max_lag_s <= limits::kMaxDuration))
-    throw InputError("--max-lag (the largest ACF lag, max lag): expected a lag from 0 to " +
-                     limits::fmt(limits::kMaxDuration) + " s (0: the default), got " + limits::fmt(a.max_lag_s));
+    throw InputError("--max-lag: expected a lag from 0 to " + limits::fmt(limits::kMaxDuration) +
+                     " s (the largest ACF lag, max lag; 0: the default), got " + limits::fmt(a.max_lag_s));
   if (!(a.confidence > 0 && a.confidence < 1))
     throw InputError("--confidence: expected a level in (0, 1), got " + limits::fmt(a.confidence));
 }

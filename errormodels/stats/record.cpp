@@ -34,6 +34,9 @@ struct Column {
   std::string unit;    // as written in the header's brackets
   double scale = 1.0;   // SI value = scale * file value + offset
   double offset = 0.0;
+  /// An auxiliary column with a field that is not a number (a status word, a date, a logger's
+  /// empty cell): left out of the record, with why (a Record::notes line); empty while it reads.
+  std::string leftOut;
 };
 
 
@@ -364,7 +367,13 @@ class RowReader {
     Record rec;
     rec.source = source_;
     rec.rows = rows_;
-    for (std::size_t c = 0; c < cols_.size(); ++c) store(rec, cols_[c], std::move(data_[c]));
+    for (std::size_t c = 0; c < cols_.size(); ++c) {
+      if (!cols_[c].leftOut.empty()) {
+        rec.notes.push_back(cols_[c].leftOut);
+        continue;
+      }
+      store(rec, cols_[c], std::move(data_[c]));
+    }
     if (!rec.t.empty()) {
       detail::checkTime(rec, headerLine_ + 1, options_);
       if (const char* unit = timeUnitRead(rec.rate_hz); unit && rec.rate_hz < limits::kMinRate)
@@ -416,6 +425,7 @@ class RowReader {
     if (noHeader)
       for (Column& c : cols_) c.header = "column " + c.header;
     data_.resize(cols_.size());
+    for (const Column& col : cols_) hasSensor_ = hasSensor_ || col.role == Role::Gyro || col.role == Role::Accel;
     if (noHeader) row(raw, number);
   }
 
@@ -445,16 +455,20 @@ class RowReader {
     const char* q = l.data();
     const char* const eol = q + l.size();
     for (std::size_t c = 0; c < ncol; ++c) {
-      if (q >= eol && c > 0)
+      if (q >= eol && c > 0 && !optional(cols_[c]))
         fail(source_, number, "short row: " + std::to_string(c) + " field(s), the header has " + std::to_string(ncol));
       double v;
-      q = parseField(q, eol, v, cols_[c], sep_, source_, number);
-      push(c, v, number);
+      if (optional(cols_[c])) {
+        q = auxField(q, eol, c, number);
+      } else {
+        q = parseField(q, eol, v, cols_[c], sep_, source_, number);
+        push(c, v, number);
+      }
       if (c + 1 < ncol) {
-        if (q >= eol)
+        if (q >= eol && !optional(cols_[c + 1]))
           fail(source_, number,
                "short row: " + std::to_string(c + 1) + " field(s), the header has " + std::to_string(ncol));
-        if (!sep_.blanks) ++q;  // the separator (blanks were skipped by parseField)
+        if (!sep_.blanks && q < eol) ++q;  // the separator (blanks were skipped by parseField)
       }
     }
     // One separator ending the row (a logger's "0.01,0.02,") holds no field.
@@ -462,6 +476,47 @@ class RowReader {
       q = eol;
     if (q < eol) fail(source_, number, "long row: more than the " + std::to_string(ncol) + " fields of the header");
     ++rows_;
+  }
+
+  /// A column the record can do without: an auxiliary one (nothing reads it) or the temperature,
+  /// in a file whose header names a sensor column. Without one (the wrong separator: "t,gx,gy" read
+  /// as one column) the first field that is no number is the error, with its hint.
+  bool optional(const Column& col) const {
+    return hasSensor_ && (col.role == Role::Aux || col.role == Role::Temperature);
+  }
+
+  /// A field of such a column c: read as a number, or, when it is not one (a status word, a date,
+  /// an empty or missing cell of a slower sensor, a NaN), the column is left out from then on. It
+  /// was fatal: `column "status": expected a finite number, got "OK"` for a column nothing reads.
+  const char* auxField(const char* q, const char* eol, std::size_t c, std::size_t number) {
+    Column& col = cols_[c];
+    if (col.leftOut.empty()) {
+      try {
+        double v;
+        const char* after = parseField(q, eol, v, col, sep_, source_, number);
+        push(c, v, number);
+        return after;
+      } catch (const InputError& e) {
+        // "column "X": expected a finite number, got "OK"", without a time column's hint
+        std::string why = e.what();
+        if (const std::size_t at = why.find(": column \""); at != std::string::npos) why = why.substr(at + 2);
+        if (const std::size_t got = why.find("got \""); got != std::string::npos)
+          if (const std::size_t end = why.find('"', got + 5); end != std::string::npos) why.resize(end + 1);
+        col.leftOut = "line " + std::to_string(number) + ": " + why +
+                      (col.role == Role::Temperature
+                           ? ": the temperature column is left out (the record has none)"
+                           : ": not a column sinsim reads, so it is left out of the record");
+        data_[c].clear();
+        data_[c].shrink_to_fit();
+      }
+    }
+    // Skip the field: to the separator (or past the blanks that end it), as parseField leaves it.
+    while (q < eol && (*q == ' ' || *q == '\t')) ++q;
+    while (q < eol && !sep_.at(*q) && *q != '\r') ++q;
+    while (q < eol && *q == '\r') ++q;
+    if (sep_.blanks)
+      while (q < eol && sep_.at(*q)) ++q;
+    return q;
   }
 
   /// Appends v to column c. A record within the value limit may still not fit in the memory the
@@ -506,6 +561,7 @@ class RowReader {
   std::string source_;
   const RecordOptions& options_;
   std::vector<Column> cols_;
+  bool hasSensor_ = false;  // a gyro or accelerometer column among cols_
   Separator sep_;
   std::vector<std::vector<double>> data_;
   std::size_t rows_ = 0, headerLine_ = 0, blankAt_ = 0;
@@ -626,6 +682,7 @@ std::vector<std::string> recordWarnings(const Record& record) {
                     limits::fmt(record.rate_hz * unitFactor(unit)) + " Hz), write the unit " +
                     timeUnitAdvice(unit));
   if (const std::string w = timeWarning(record); !w.empty()) out.push_back(w);
+  for (const std::string& n : record.notes) out.push_back(record.source + ": " + n);
   double g2 = 0.0, f2 = 0.0;
   std::vector<double> gyroSd;
   int accelAxes = 0;

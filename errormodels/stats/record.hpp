@@ -8,7 +8,8 @@
 //   temp | temperature  sensor temperature    default unit degC
 // A unit may be written in the header after the name in brackets or parentheses, e.g.
 // "gx [deg/s]", "ax (g)", "t[ms]"; it is parsed with sinsim::parseUnit and its dimension checked.
-// Every other column is kept, unconverted, as an auxiliary channel. Other names are read through
+// Every other column is kept, unconverted, as an auxiliary channel (left out, with a Record::notes
+// line, when a field of it, or of temp, is no number). Other names are read through
 // a column mapping (RecordOptions::columns: "gx=GyroX[deg/s]", or by column number for a file
 // without a header). Values are converted to SI once, here; everything downstream is SI.
 #pragma once
@@ -80,6 +81,8 @@ struct Record {
   /// [K] sensor temperature; empty when absent
   std::vector<double> temperature;
   std::vector<AuxChannel> aux;
+  /// What the reader left out and why (an auxiliary column holding text), as recordWarnings says it.
+  std::vector<std::string> notes;
   /// Irregular steps (filled only with RecordOptions::allow_irregular_time; at most 1000 kept)
   std::vector<TimeIrregularity> irregularities;
   std::size_t irregular_count = 0;  ///< total number of irregular steps found

@@ -3,6 +3,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -209,6 +210,34 @@ TEST_CASE("record: after an allowed gap, --skip and --duration cut on the time s
   const Record rr = parseRecord(regular, "rec.csv", w);
   CHECK(rr.gyro[0].front() == 200.0);
   CHECK(rr.size() == 300);
+}
+
+TEST_CASE("record: a column nothing reads that holds text, a blank or a NaN is left out and said", "[record]") {
+  // Before: `column "status": expected a finite number, got "OK"`, the whole record refused for a
+  // column no statistic reads; the same for a slower magnetometer's empty cells and a NaN in temp.
+  const std::string text =
+      "t,gx,status,date,mx,temp\n"
+      "0,0.5,OK,2026-12-07T06:00:00,1.5,25\n"
+      "0.01,0.25,OK,2026-12-07T06:00:00.01,,25.1\n"
+      "0.02,0.75,LOW,2026-12-07T06:00:00.02,1.6,nan\n"
+      "0.03,0.5,OK,2026-12-07T06:00:00.03\n";
+  const Record r = parseRecord(text, "rec.csv", {});
+  REQUIRE(r.size() == 4);
+  CHECK(r.gyro[0] == std::vector<double>{0.5, 0.25, 0.75, 0.5});
+  CHECK(r.aux.empty());
+  CHECK(r.temperature.empty());
+  REQUIRE(r.notes.size() == 4);
+  CHECK(r.notes[0] == "line 2: column \"status\": expected a finite number, got \"OK\": not a column sinsim reads, "
+                      "so it is left out of the record");
+  CHECK_THAT(r.notes[1], Catch::Contains("line 2: column \"date\": expected a finite number, got \"2026-12-07T06:00:00\""));
+  CHECK_THAT(r.notes[2], Catch::Contains("line 3: column \"mx\": empty field"));
+  CHECK_THAT(r.notes[3], Catch::Contains("line 4: column \"temp\"") && Catch::Contains("the temperature column is left out"));
+  const auto warnings = recordWarnings(r);
+  CHECK(std::count_if(warnings.begin(), warnings.end(),
+                      [](const std::string& w) { return w.rfind("rec.csv: line ", 0) == 0; }) == 4);
+  // A sensor column is never left out, and a numeric extra column is kept.
+  CHECK_THAT(errorOf("t,gx,status\n0,OK,1\n0.01,0.5,1\n"), Catch::Contains("rec.csv:2: column \"gx\""));
+  CHECK(parseRecord("t,gx,counter\n0,1,7\n0.01,1,8\n", "rec.csv", {}).aux.at(0).values == std::vector<double>{7, 8});
 }
 
 TEST_CASE("record: gzip files are read directly, missing or truncated files are errors", "[record]") {
