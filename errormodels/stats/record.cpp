@@ -539,8 +539,10 @@ class RowReader {
     v.shrink_to_fit();
     if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0))
       for (double& x : v) x = col.scale * x + col.offset;
-    // Beyond kMaxQuantity (SI) sums of squares in the statistics overflow to inf and NaN.
-    if (col.role != Role::Aux)
+    // Beyond kMaxQuantity (SI) sums of squares in the statistics overflow to inf and NaN. Time
+    // stamps only give steps and a rate, checked by checkTime, whose message names the unit Unix
+    // time in ms or ns under a plain `t` needs (1.7e12 "s" was "beyond any sensor").
+    if (col.role != Role::Aux && col.role != Role::Time)
       for (std::size_t r = 0; r < v.size(); ++r)
         if (!(std::abs(v[r]) <= limits::kMaxQuantity))
           fail(source_, headerLine_ + 1 + r,

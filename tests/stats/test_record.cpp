@@ -531,6 +531,17 @@ TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with th
   CHECK(recordWarnings(parseRecord(stamps(1e3, "t[ms]"), "rec.csv", {})).empty());
   // A 1 Hz log is an IMU's rate: nothing (a slower one is warned: it may be ms read as s).
   CHECK(recordWarnings(parseRecord(stamps(100.0, "t"), "rec.csv", {})).empty());
+  // Unix time in ms or ns under a plain "t" gets the same advice (1.7e12 "s" was refused as
+  // "beyond any sensor", with no word of the unit).
+  auto epoch = [](double perSecond, const std::string& t) {
+    std::string text = t + ",gx\n";
+    for (int k = 0; k < 50; ++k)
+      text += std::to_string(1700000000LL * std::llround(perSecond) + std::llround(k * perSecond / 100.0)) + ",0.01\n";
+    return text;
+  };
+  CHECK_THAT(recordWarnings(parseRecord(epoch(1e3, "t"), "rec.csv", {})).at(0),
+             Catch::Contains("if they are in ms (100 Hz), write the unit in the header (t[ms])"));
+  CHECK_THAT(errorOf(epoch(1e9, "t")), Catch::Contains("read in ns it would be 100 Hz"));
 }
 
 TEST_CASE("record: no time column: a column named like one is offered, with the sensors' mapping",
