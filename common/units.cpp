@@ -35,6 +35,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"nmi", {1852.0, D::length()}},
       // time
       {"s", {1.0, D::time()}},
+      {"sec", {1.0, D::time()}},  // "deg/sec" in vendors' headers
       {"ms", {1e-3, D::time()}},
       {"us", {1e-6, D::time()}},
       {"\xC2\xB5s", {1e-6, D::time()}},  // µs
@@ -57,6 +58,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"arcsec", {kRadPerDeg / kSecondsPerHour, D::angle()}},
       {"rev", {2.0 * kPi, D::angle()}},
       {"dph", {kRadPerDeg / kSecondsPerHour, D::angularRate()}},  // deg/h, common in INS specs
+      {"dps", {kRadPerDeg, D::angularRate()}},                    // deg/s, common in MEMS logs
       // acceleration in units of standard gravity
       {"g", {kStandardGravity, D::acceleration()}},
       {"mg", {1e-3 * kStandardGravity, D::acceleration()}},

@@ -339,6 +339,26 @@ class RowReader {
  public:
   RowReader(std::string source, const RecordOptions& options) : source_(std::move(source)), options_(options) {
     if (options.rate_hz) detail::checkRate(*options.rate_hz, source_, "the rate option (--rate)");
+    // A unit option is the user's, not the file's: named as the option, before a line is read
+    // (`--gyro-unit dps` was "rec.csv:1: column "gx": unknown unit").
+    const struct {
+      const std::optional<std::string>& unit;
+      const char* option;
+      Dimension dim;
+    } unitOptions[] = {{options.gyro_unit, "the gyro unit option (--gyro-unit)", Dimension::angularRate()},
+                       {options.accel_unit, "the accelerometer unit option (--accel-unit)", Dimension::acceleration()}};
+    for (const auto& u : unitOptions) {
+      if (!u.unit) continue;
+      Dimension dim;
+      try {
+        dim = parseUnit(*u.unit).dim;
+      } catch (const InputError& e) {
+        fail(source_, 0, std::string(u.option) + ": " + e.what());
+      }
+      if (dim != u.dim)
+        fail(source_, 0, std::string(u.option) + " \"" + *u.unit + "\": unit has dimension " + dim.siUnit() +
+                             ", expected " + u.dim.siUnit() + " (e.g. " + exampleUnit(u.dim) + ")");
+    }
     if (!(std::isfinite(options.time_tolerance) && options.time_tolerance > 0))
       fail(source_, 0, "time tolerance must be positive");
     if (!(std::isfinite(options.skip_s) && options.skip_s >= 0))

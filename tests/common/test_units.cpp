@@ -41,6 +41,9 @@ TEST_CASE("inertial-sensor units as datasheets write them") {
         Approx(10 * deg / 3600).epsilon(kRel));
   CHECK(parseQuantityAs("10 dph", Dimension::angularRate()) ==
         Approx(10 * deg / 3600).epsilon(kRel));
+  // A MEMS log's header forms (the record reader refused "gx [dps]" and "gx [deg/sec]").
+  CHECK(parseQuantityAs("10 dps", Dimension::angularRate()) == Approx(10 * deg).epsilon(kRel));
+  CHECK(parseQuantityAs("10 deg/sec", Dimension::angularRate()) == Approx(10 * deg).epsilon(kRel));
   // ARW: 0.2 deg/sqrt(h) = 0.2 deg / 60 sqrt(s) [rad/sqrt(s)]
   const Dimension arw = Dimension::angularRate() * Dimension::time().sqrt();
   CHECK(parseQuantityAs("0.2 deg/sqrt(h)", arw) == Approx(0.2 * deg / 60).epsilon(kRel));

@@ -654,3 +654,18 @@ TEST_CASE("record: a column in a sensor's unit under a name not read is warned w
   CHECK(warnings("gx,gy,gz,temp,t2[degC]\n").empty());
   CHECK(warnings("gx,gy,gz,g2[deg/s],g3[rad/s]\n").empty());
 }
+
+TEST_CASE("record: a bad unit option is named as the option, not as the file's column", "[record][units]") {
+  RecordOptions o;
+  o.gyro_unit = "dpz";
+  CHECK_THAT(errorOf("t,gx\n0,1\n0.01,1\n", o),
+             Catch::StartsWith("rec.csv: the gyro unit option (--gyro-unit): unknown unit \"dpz\""));
+  o.gyro_unit = "g";
+  CHECK_THAT(errorOf("t,gx\n0,1\n0.01,1\n", o),
+             Catch::Contains("the gyro unit option (--gyro-unit) \"g\": unit has dimension m/s^2, expected rad/s"));
+  RecordOptions a;
+  a.accel_unit = "deg/s";
+  CHECK_THAT(errorOf("t,az\n0,1\n0.01,1\n", a), Catch::Contains("the accelerometer unit option (--accel-unit)"));
+  o.gyro_unit = "dps";
+  CHECK(parseRecord("t,gx\n0,1\n0.01,1\n", "rec.csv", o).gyro[0][0] == Approx(M_PI / 180.0));
+}
