@@ -245,11 +245,16 @@ ErrorModelSpec scaleParameter(ErrorModelSpec spec, const EffectRef& ref, const s
   for (double& v : p->values) v *= factor;
   for (double& s : p->sigma) s *= std::abs(factor);
   p->where.text.clear();  // the text as written no longer states this value (messages quote it)
+  p->where.line = 0;      // nor is it on that line of the file
   return spec;
 }
 
 ErrorModelSpec withParameter(ErrorModelSpec spec, const EffectRef& ref, ParamSpec p) {
   EffectSpec& e = effectAtMutable(spec, ref);
+  // A new value: neither the file's text nor its line state it (a refusal quoted the old value,
+  // "must be positive, got \"0.05 deg/sqrt(h)\"", at the old line).
+  p.where.text.clear();
+  p.where.line = 0;
   if (ParamSpec* old = e.find(p.key))
     *old = std::move(p);
   else

@@ -92,6 +92,16 @@ Model checked(Model m) {
   return m;
 }
 
+// A Model made by editing another: its source says so. An edited file's model was reported as the
+// file itself (run's summary line and summary.json: "model scenarios/grade-tactical.yaml").
+Model edited(const Model& from, em::ErrorModelSpec spec) {
+  const std::string mark = " (edited)";
+  if (!spec.source.empty() &&
+      (spec.source.size() < mark.size() || spec.source.compare(spec.source.size() - mark.size(), mark.size(), mark) != 0))
+    spec.source += mark;
+  return {std::move(spec), from.label};
+}
+
 // `value`: a number (SI) or a string with a unit for a quantity, a list for a list or matrix,
 // str for text, bool for a flag. The new value keeps the old one's dimensions.
 Model withParam(const Model& m, const std::string& sensor, const std::string& list, int index,
@@ -118,7 +128,7 @@ Model withParam(const Model& m, const std::string& sensor, const std::string& li
     case em::ParamKind::text: p.text = value.cast<std::string>(); break;
     case em::ParamKind::flag: p.flag = value.cast<bool>(); break;
   }
-  return checked({em::withParameter(m.spec, r, p), m.label});
+  return checked(edited(m, em::withParameter(m.spec, r, p)));
 }
 
 // The effect is read by the one model reader, as the line `sensor: {list: [effect]}` of a file.
@@ -131,7 +141,7 @@ Model withEffect(const Model& m, const std::string& sensor, const std::string& l
   ConfigFile file = ConfigFile::fromNode(root, "<effect dict>");
   const em::ErrorModelSpec one = em::readErrorModel(file.root());
   file.throwIfErrors();
-  return checked({em::withEffect(m.spec, s, l, one.sensor(s).list(l).at(0)), m.label});
+  return checked(edited(m, em::withEffect(m.spec, s, l, one.sensor(s).list(l).at(0))));
 }
 
 std::string repr(const Model& m) {
@@ -175,8 +185,7 @@ void bindModel(py::module_& mod) {
       .def("scaled",
            [](const Model& m, const std::string& sensor, const std::string& list, int index,
               const std::string& key, double factor) {
-             return checked({em::scaleParameter(m.spec, ref(m, sensor, list, index), key, factor),
-                             m.label});
+             return checked(edited(m, em::scaleParameter(m.spec, ref(m, sensor, list, index), key, factor)));
            },
            py::arg("sensor"), py::arg("list"), py::arg("index"), py::arg("key"), py::arg("factor"),
            "a copy with one parameter multiplied by factor")
@@ -185,8 +194,7 @@ void bindModel(py::module_& mod) {
       .def("without",
            [](const Model& m, const std::string& sensor, const std::string& list,
               const std::string& type) {
-             return Model{em::withoutEffects(m.spec, sensorByName(sensor), listByName(list), type),
-                          m.label};
+             return edited(m, em::withoutEffects(m.spec, sensorByName(sensor), listByName(list), type));
            },
            py::arg("sensor"), py::arg("list"), py::arg("type"),
            "a copy without the effects of that type in one list")

@@ -177,6 +177,20 @@ def test_model_edits_hold_to_the_model_files_limits():
     assert m.with_param("gyro", "all", 0, "density", 1e-4) is not None  # an ordinary edit as ever
 
 
+def test_an_edited_model_file_says_it_is_edited_and_quotes_the_new_value(tmp_path, source_dir):
+    # A refusal quoted the file's old value ('must be positive, got "0.05 deg/sqrt(h)"'), and a
+    # run of an edited file's model reported the file itself.
+    m = sinsim.Model(os.path.join(source_dir, "scenarios", "grade-tactical.yaml"))
+    with pytest.raises(sinsim.ConfigError, match=r'density: must be positive, got "-1 rad/s\^\(1/2\)"'):
+        m.with_param("gyro", "all", 2, "density", -1.0)
+    with pytest.raises(sinsim.ConfigError, match=r'must be positive, got "-1\.45'):
+        m.scaled("gyro", "all", 2, "density", -1)
+    edited = m.scaled("gyro", "all", 2, "density", 100).scaled("gyro", "all", 2, "density", 0.5)
+    r = sinsim.run(static_scenario(minutes=1), edited, output=str(tmp_path / "run"))
+    assert r["summary"]["model"].endswith("grade-tactical.yaml (edited)")
+    assert "model " + r["summary"]["model"] in r["summary"]["line"]
+
+
 def test_a_bias_window_that_is_nan_or_negative_is_refused():
     # Read as 0 (no removal) before, silently.
     for bad in (float("nan"), -5.0):
