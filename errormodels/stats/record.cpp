@@ -652,11 +652,15 @@ std::string timeWarning(const Record& record) {
   std::size_t gaps = 0;
   for (const TimeIrregularity& i : record.irregularities) gaps += i.gap;
   const TimeIrregularity& first = record.irregularities.front();
-  return std::to_string(record.irregular_count) + " irregular time step(s) (" + std::to_string(gaps) +
-         (record.irregularities.size() < record.irregular_count ? "+" : "") + " gap(s)), the first at line " +
-         std::to_string(first.line) + " (t = " + significant(first.t, 10) + " s, dt = " + significant(first.dt, 4) +
-         " s): read as uniform at " + limits::fmt(record.rate_hz) +
-         " Hz (--allow-irregular-time), the samples either side of a gap joined";
+  // Gaps counted among the first 1000 listed; jitter alone joins nothing ("(0+ gap(s)) ... the
+  // samples either side of a gap joined" on a record without one).
+  const bool more = record.irregularities.size() < record.irregular_count;
+  const std::string gapText = gaps == 0 && !more ? "no gap"
+                                                 : std::to_string(gaps) + (more ? "+" : "") + " gap(s)";
+  return std::to_string(record.irregular_count) + " irregular time step(s) (" + gapText + "), the first at line " +
+         std::to_string(first.line) + " (t = " + significant(first.t, 13) + " s, dt = " + significant(first.dt, 4) +
+         " s): read as uniform at " + limits::fmt(record.rate_hz) + " Hz (--allow-irregular-time)" +
+         (gaps > 0 ? ", the samples either side of a gap joined" : "");
 }
 
 /// Auxiliary columns whose header unit says they hold a quantity the record lacks (see

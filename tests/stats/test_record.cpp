@@ -502,6 +502,12 @@ TEST_CASE("record: time stamps rounded coarser than the step are a uniform grid,
   std::string jitter = "t,gx\n";
   for (int k = 0; k < 400; ++k) jitter += std::to_string(0.01 * k + (k % 3 == 0 ? 0.0004 : 0.0)) + ",0.01\n";
   CHECK_THROWS_WITH(parseRecord(jitter, "jitter.csv", {}), Catch::Contains("irregular time step(s)"));
+  CHECK(gw[0].find("the samples either side of a gap joined") != std::string::npos);
+  // Jitter alone, allowed: no gap is said, and none joined ("(0 gap(s)) ... a gap joined" before).
+  const auto jw = recordWarnings(parseRecord(jitter, "jitter.csv", allow));
+  REQUIRE(jw.size() == 1);
+  CHECK_THAT(jw[0], Catch::Contains("irregular time step(s) (no gap), the first at line ") &&
+                        Catch::EndsWith("(--allow-irregular-time)"));
 }
 
 TEST_CASE("record: time stamps in ms, us or ns read as seconds are named with the unit to write",
