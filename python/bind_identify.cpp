@@ -9,6 +9,7 @@
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
 #include "python/bindings.hpp"
+#include "python/interrupt.hpp"
 #include "sim/analysis.hpp"
 
 namespace sinsim::python {
@@ -57,6 +58,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
                  const std::string& html, const std::optional<std::string>& gyroUnit,
                  const std::optional<std::string>& accelUnit, const py::object& rate) {
   const InputFilesScope inputs;  // the outputs never replace the record (the CLI's rule)
+  const InterruptScope interrupt;  // Ctrl-C stops the work (python/interrupt.hpp)
   if (tau != "octave" && tau != "decade")
     throw InputError("tau: expected octave or decade, got \"" + tau + "\"");
   sim::AnalysisOptions opt;
@@ -86,6 +88,7 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
           bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
           const std::optional<std::string>& accelUnit, const py::object& rate, const std::string& lines) {
   const InputFilesScope inputs;
+  const InterruptScope interrupt;
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
   opt.fitLines = em::fitLinesByName(lines);
@@ -128,6 +131,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
                   const std::optional<std::string>& gyroUnit,
                   const std::optional<std::string>& accelUnit, const py::object& rate) {
   const InputFilesScope inputs;
+  const InterruptScope interrupt;
   namespace dg = em::diagnose;
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   const Model m = toModel(model);  // a path is read as `--model` reads it (loadErrorModel)

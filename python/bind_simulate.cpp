@@ -13,6 +13,7 @@
 #include "common/limits.hpp"
 #include "common/read_file.hpp"
 #include "python/bindings.hpp"
+#include "python/interrupt.hpp"
 #include "sim/mc_batch.hpp"
 #include "sim/mc_headlines.hpp"
 #include "sim/mc_models.hpp"
@@ -98,6 +99,7 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
 py::dict run(const py::object& scenario, const py::object& model, std::optional<std::uint64_t> seed,
              const py::object& biasWindow, const std::string& output, bool imu) {
   const InputFilesScope inputs;  // the outputs never replace a file the call read (the CLI's rule)
+  const InterruptScope interrupt;  // Ctrl-C stops the work (python/interrupt.hpp)
   sim::Scenario sc = toScenario(scenario);
   sim::RunOptions opt;
   if (!model.is_none()) {
@@ -268,6 +270,7 @@ py::dict synth(const py::object& model, double rate, const py::object& duration,
                const std::string& temperature, const py::object& latitude, const py::object& height,
                const py::object& attitude) {
   const InputFilesScope inputs;
+  const InterruptScope interrupt;
   const errormodels::ImuErrorModel m = imuModel(toModel(model));
   sim::StaticRecordSpec spec;
   spec.rate = rate;

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/progress.hpp"
 #include "python/bindings.hpp"
 
 namespace sinsim::python {
@@ -53,6 +54,8 @@ void bindExceptions(py::module_& m) {
       PyErr_SetString(numerical.ptr(), text(e.what()).c_str());
     } catch (const Error& e) {
       PyErr_SetString(error.ptr(), text(e.what()).c_str());
+    } catch (const Interrupted&) {  // Ctrl-C in a call (python/interrupt.hpp)
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
 }

@@ -226,3 +226,27 @@ def test_a_call_never_writes_over_a_file_it_read(tmp_path):
     assert rec.read_bytes() != before[0]
     with pytest.raises(sinsim.InputError, match="max lag"):
         sinsim.analyze(str(rec), max_lag=1e300)
+
+
+def test_ctrl_c_stops_a_long_call_and_leaves_no_file(tmp_path):
+    # SIGINT reached Python only when the call had finished: a 1-h synth ran to its end (5 s),
+    # wrote its file, then raised. Now the library's checkpoints stop it; nothing is written.
+    import os
+    import signal
+    import threading
+    import time
+
+    out = tmp_path / "long.csv"
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t0 = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        sinsim.synth(TRUE_MODEL, rate=2000, duration="2 h", path=str(out), seed=1)
+    elapsed = time.monotonic() - t0
+    timer.join()
+    assert elapsed < 5.0  # uninterrupted: ~20 s
+    assert not out.exists()
+    assert not [p for p in tmp_path.iterdir() if ".tmp" in p.name]
+    # the next call runs, and Python's own Ctrl-C handling is back
+    assert sinsim.synth(TRUE_MODEL, rate=RATE, duration="10 s", path=str(out), seed=1)["gx"].shape == (1000,)
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
