@@ -147,6 +147,8 @@ std::vector<sim::McModel> mcModels(const sim::Scenario& sc, const std::string& i
       mc.identity = "python:" + errormodels::errorModelYaml(m.spec);  // resume fingerprint only
       out.push_back(std::move(mc));
     }
+    if (out.back().label.empty())  // an empty label named the batch's files and columns ""
+      throw InputError("models: a model's label is empty: give it a name (Model.label)");
     for (std::size_t i = 0; i + 1 < out.size(); ++i)
       if (out[i].label == out.back().label)
         throw InputError("two models of the batch are labelled \"" + out.back().label +

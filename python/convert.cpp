@@ -103,6 +103,15 @@ namespace {
 
 std::vector<double> column(const py::dict& d, const char* key) {
   if (!d.contains(key)) return {};
+  // A masked array's mask and a complex array's imaginary part were dropped by the cast (NumPy
+  // only warned): refused, as a file's empty field or text is.
+  const py::object value = d[key];
+  if (py::hasattr(value, "mask") && py::module_::import("numpy").attr("ma").attr("is_masked")(value).cast<bool>())
+    throw InputError(std::string("record dict: \"") + key +
+                     "\": a masked array with masked values (fill or drop them first)");
+  if (py::isinstance<py::array>(value) &&
+      py::reinterpret_borrow<py::array>(value).dtype().kind() == 'c')
+    throw InputError(std::string("record dict: \"") + key + "\": complex values (a record holds real numbers)");
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(d[key]);
   if (!a || a.ndim() != 1) throw InputError(std::string("record dict: \"") + key +
                                             "\": expected a 1-D array of numbers");
@@ -226,6 +235,8 @@ double quantityArg(const py::handle& v, Dimension dim, const std::string& what) 
       throw InputError(what + ": " + e.what());
     }
   }
+  if (py::isinstance<py::bool_>(v))  // True read as 1 (a rate of 1 Hz)
+    throw InputError(what + ": expected a number (SI) or a string with a unit, got a bool");
   try {
     return v.cast<double>();
   } catch (const py::cast_error&) {

@@ -250,3 +250,17 @@ def test_ctrl_c_stops_a_long_call_and_leaves_no_file(tmp_path):
     # the next call runs, and Python's own Ctrl-C handling is back
     assert sinsim.synth(TRUE_MODEL, rate=RATE, duration="10 s", path=str(out), seed=1)["gx"].shape == (1000,)
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_a_record_dict_s_values_are_taken_as_given_or_refused():
+    # rate=True read as 1 Hz; a complex array lost its imaginary part and a masked array its mask,
+    # with only NumPy's warning.
+    x = np.random.default_rng(2).standard_normal(2000) * 1e-3
+    with pytest.raises(sinsim.InputError, match="got a bool"):
+        sinsim.analyze({"rate": True, "gx": x})
+    with pytest.raises(sinsim.InputError, match="complex values"):
+        sinsim.analyze({"rate": 100.0, "gx": x + 0j})
+    with pytest.raises(sinsim.InputError, match="masked values"):
+        sinsim.analyze({"rate": 100.0, "gx": np.ma.masked_array(x, mask=x > 2e-3)})
+    plain = sinsim.analyze({"rate": 100.0, "gx": x})["gx"]["sd"]
+    assert sinsim.analyze({"rate": 100.0, "gx": np.ma.masked_array(x)})["gx"]["sd"] == plain

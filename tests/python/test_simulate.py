@@ -228,3 +228,11 @@ def test_an_aided_run_gives_its_outages_and_warnings(source_dir, tmp_path):
     with pytest.warns(UserWarning, match="mc: gnss: no fix is used"):
         b = sinsim.mc(str(slow), runs=2, threads=1)
     assert any("no fix is used" in w for w in b["warnings"])
+
+
+def test_mc_refuses_an_empty_label(tmp_path):
+    sc, model = scenario_file(tmp_path)
+    m = sinsim.Model(model)
+    m.label = ""
+    with pytest.raises(sinsim.InputError, match="label is empty"):
+        sinsim.mc(sc, models=[m], runs=2)
