@@ -54,7 +54,7 @@ double parseAngle(const std::string& text, const std::string& what) {
   try {
     return parseQuantityAs(text, Dimension::angle());
   } catch (const InputError& e) {
-    throw InputError(what + ": " + e.what());
+    throw InputError(what + ": " + e.text());
   }
 }
 
@@ -244,7 +244,7 @@ int runMc(const Args& a) {
       try {
         return sim::runMcBatch(req);
       } catch (const MotionError& e) {
-        throw InputError(req.scenarioPath + ": " + e.what());
+        throw InputError(req.scenarioPath + ": " + e.text());
       }
     }();
     endProgressLine();

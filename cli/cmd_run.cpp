@@ -85,9 +85,9 @@ void addRunCommand(CLI::App& app, Action& action) {
           return sim::run(sc, opt);
         } catch (const NumericalError& e) {  // "the navigation state became non-finite": say where
           throw NumericalError(file + (opt.model ? " with model " + *opt.model : "") + ": " +
-                               e.what());
+                               e.text());
         } catch (const MotionError& e) {
-          throw InputError(file + ": " + e.what());
+          throw InputError(file + ": " + e.text());
         }
       }();
       endProgressLine();

@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
     std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.what()) << "\n";
     return 2;
   } catch (const sinsim::Error& e) {
-    std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.what()) << "\n";
+    std::cerr << "sinsim: error: " << sinsim::limits::messageText(e.text()) << "\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "sinsim: internal error: " << sinsim::limits::messageText(e.what()) << "\n";

@@ -55,7 +55,7 @@ ConfigFile ConfigFile::load(const std::string& path, const std::string& emptyHin
   try {
     text = readRegularFile(path, limits::kMaxYamlBytes, "YAML file");
   } catch (const InputError& e) {
-    std::string msg = e.what();
+    std::string msg = e.text();
     if (msg.rfind(path + ": ", 0) == 0) msg.erase(0, path.size() + 2);
     throw ConfigError({{path, 0, "", msg}});
   }
@@ -369,7 +369,7 @@ std::optional<double> ConfigNode::asQuantity(Dimension expected) const {
   try {
     v = parseQuantityAs(*s, expected);
   } catch (const InputError& e) {
-    error(e.what());
+    error(e.text());
     return std::nullopt;
   }
   if (!checkPhysical(v, expected)) return std::nullopt;

@@ -34,7 +34,7 @@ ConfigError::ConfigError(std::vector<Diagnostic> diagnostics)
     : InputError(joinDiagnostics(diagnostics)), diagnostics_(std::move(diagnostics)) {}
 
 void rethrowWithContext(const std::string& where, const Error& e) {
-  const std::string what = e.what();
+  const std::string& what = e.text();
   // A bad option's value is the command line's, not the file's: kept as it is (exit 2).
   if (dynamic_cast<const OptionError*>(&e)) throw OptionError(what);
   if (what.rfind(where, 0) == 0) throw InputError(what);

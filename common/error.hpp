@@ -11,7 +11,14 @@ namespace sinsim {
 /// Base of every error sinsim throws on purpose.
 class Error : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit Error(const std::string& message) : std::runtime_error(message), text_(message) {}
+  explicit Error(const char* message) : std::runtime_error(message), text_(message) {}
+  /// The whole message. what() is a C string that ends at a NUL byte a message may hold (a Python
+  /// str's file name 'a\x00b.csv' reached Python as 'a'); text() does not.
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
 };
 
 /// Bad user input: a scenario, model file or data record that cannot be used as given.

@@ -324,7 +324,7 @@ double parseOptionQuantity(std::string_view text, Dimension expected, const std:
     if (q.dim != expected) return parseQuantityAs(text, expected);  // its message
     return q.si;
   } catch (const InputError& e) {
-    throw OptionError(option + ": " + e.what());
+    throw OptionError(option + ": " + e.text());
   }
 }
 
@@ -338,7 +338,7 @@ double parseDuration(std::string_view text, const std::string& option) {
     if (!(q.si >= 0.0)) throw InputError("expected a non-negative time, got \"" + limits::echo(trimmed(text)) + "\"");
     return q.si;
   } catch (const InputError& e) {
-    throw OptionError(option + ": " + e.what());
+    throw OptionError(option + ": " + e.text());
   }
 }
 

@@ -513,7 +513,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
           ax.ar = fit::selectArOrder(x, os);
         } catch (const InputError& e) {
           if (opt.kind == IdentifyKind::Ar) throw;
-          ax.written.notes.push_back(std::string("auto: no AR (") + e.what() + ")");
+          ax.written.notes.push_back(std::string("auto: no AR (") + e.text() + ")");
         }
         // The denoised AR is the paper's variant beside the written one: --kind ar only (auto
         // writes the AR with slow terms, not a bare AR to compare it with).
@@ -579,7 +579,7 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
                 significant(ax.gaussMarkov->tau, 4) + " s");
           } catch (const InputError &e) {
             ax.written.notes.push_back(
-                std::string("for comparison, no GM from the ACF: ") + e.what());
+                std::string("for comparison, no GM from the ACF: ") + e.text());
           }
         }
         fit::LatentFitOptions lo;

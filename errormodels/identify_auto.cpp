@@ -152,7 +152,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     out.decision.push_back("Allan terms on " + describeRange(whole) + ": " + describeAllan(*out.allanFit));
     rw = out.allanFit->term(fit::AllanTermKind::RandomWalk).detected;
   } catch (const InputError& e) {
-    out.decision.push_back(std::string("no Allan-term description (") + e.what() + "): no random walk screened");
+    out.decision.push_back(std::string("no Allan-term description (") + e.text() + "): no random walk screened");
   }
 
   fit::OrderSelection screen;
@@ -171,7 +171,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     try {
       out.composite = fit::fitArPlusRandomWalk(x, pts.tau, pts.dev, pts.edf, co);
     } catch (const Error& e) {
-      out.decision.push_back(std::string("composite AR + random walk failed (") + e.what() +
+      out.decision.push_back(std::string("composite AR + random walk failed (") + e.text() +
                              "): AR screened on the record itself");
     }
   }
@@ -210,7 +210,7 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     out.written.ar = screen.fit;
     out.written.arOrders = screen;
     out.written.arRate = 1.0 / dt;
-    out.decision.push_back(std::string("short correlation, no slow terms beside the AR (") + e.what() +
+    out.decision.push_back(std::string("short correlation, no slow terms beside the AR (") + e.text() +
                            "): the AR alone");
     return;
   }

@@ -43,7 +43,7 @@ std::optional<std::pair<double, Dimension>> readValue(const ConfigNode& n, const
     }
     n.error("expected " + expectedWords(s, sensor, item) + ", got \"" + *text + "\"");
   } catch (const InputError& e) {
-    n.error(e.what());
+    n.error(e.text());
   }
   return std::nullopt;
 }

@@ -154,7 +154,7 @@ errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptio
     try {
       q = parseUnit(*unit);
     } catch (const InputError& e) {
-      throw InputError(std::string(what) + ": " + e.what());
+      throw InputError(std::string(what) + ": " + e.text());
     }
     if (q.dim != dim)
       throw InputError(std::string(what) + ": \"" + *unit + "\" has dimension " + q.dim.siUnit() +
@@ -232,7 +232,7 @@ double quantityArg(const py::handle& v, Dimension dim, const std::string& what) 
     try {
       return parseQuantityAs(v.cast<std::string>(), dim);
     } catch (const InputError& e) {
-      throw InputError(what + ": " + e.what());
+      throw InputError(what + ": " + e.text());
     }
   }
   if (py::isinstance<py::bool_>(v))  // True read as 1 (a rate of 1 Hz)

@@ -45,15 +45,15 @@ void bindExceptions(py::module_& m) {
       py::list diags;
       for (const Diagnostic& d : e.diagnostics())
         diags.append(py::make_tuple(text(d.file), d.line, text(d.key), text(d.message)));
-      py::object ex = py::reinterpret_borrow<py::object>(config)(text(e.what()));
+      py::object ex = py::reinterpret_borrow<py::object>(config)(text(e.text()));
       ex.attr("diagnostics") = diags;
       PyErr_SetObject(config.ptr(), ex.ptr());
     } catch (const InputError& e) {
-      PyErr_SetString(input.ptr(), text(e.what()).c_str());
+      PyErr_SetString(input.ptr(), text(e.text()).c_str());
     } catch (const NumericalError& e) {
-      PyErr_SetString(numerical.ptr(), text(e.what()).c_str());
+      PyErr_SetString(numerical.ptr(), text(e.text()).c_str());
     } catch (const Error& e) {
-      PyErr_SetString(error.ptr(), text(e.what()).c_str());
+      PyErr_SetString(error.ptr(), text(e.text()).c_str());
     } catch (const Interrupted&) {  // Ctrl-C in a call (python/interrupt.hpp)
       PyErr_SetNone(PyExc_KeyboardInterrupt);
     }

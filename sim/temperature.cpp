@@ -111,7 +111,7 @@ TemperatureProfile temperatureFromText(const std::string& spec, double duration)
       t1 = parseQuantityAs(spec.substr(dots + 2), D::temperature());
     } catch (const InputError& e) {
       throw InputError("--temperature \"" + spec + "\": a ramp is \"20 degC..45 degC\": " +
-                       e.what());
+                       e.text());
     }
     p.start = t0;
     // The ramp over [0, duration] as a two-row table: t0 + (t/duration) (t1 - t0).
@@ -126,7 +126,7 @@ TemperatureProfile temperatureFromText(const std::string& spec, double duration)
   } catch (const InputError& e) {
     std::error_code ec;  // not opened to probe it: opening a FIFO waits for a writer
     if (!std::filesystem::exists(spec, ec))
-      throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.what() +
+      throw InputError("--temperature \"" + spec + "\": neither a temperature (" + e.text() +
                        "), nor a ramp \"20 degC..45 degC\", nor a readable CSV file");
     return readCsv(spec);
   }

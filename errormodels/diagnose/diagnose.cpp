@@ -220,7 +220,7 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
     try {
       run.work[ci] = diagnoseChannel(record, model, channels[ci], mc.perChannel[ci], setup, o, steps[ci]);
     } catch (const Error& e) {  // a failure deep in the statistics: say which record and channel
-      throw InputError(record.source + ": channel " + name + ": " + e.what());
+      throw InputError(record.source + ": channel " + name + ": " + e.text());
     }
     ++done;
   });

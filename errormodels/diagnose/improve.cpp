@@ -225,7 +225,7 @@ Improvement improve(const Record& record, const ErrorModelSpec& model, const std
     (void)ImuErrorModel::fromSpec(imp.model, imp.model.source);
   } catch (const ConfigError& e) {
     throw InputError("the model improved from " + model.source + " is not valid (nothing written): " +
-                     e.what());
+                     e.text());
   }
   // After: the record as before (the given ramps out) against the improved model without the
   // given ramps; what was added, an added ramp included, is in the model's realisations, as every

@@ -93,7 +93,7 @@ ArSlowFit fitArPlusSlow(const std::vector<double>& x, const ArSlowFitOptions& op
     try {
       out.arCorrelationTime = arCorrelationTime(out.ar.fit.a, dt);
     } catch (const InputError& e) {
-      throw InputError(std::string("AR + slow terms fit: the Burg AR has a pole at ~1 (") + e.what() +
+      throw InputError(std::string("AR + slow terms fit: the Burg AR has a pole at ~1 (") + e.text() +
                        "): a slow process rides inside the AR; try --kind latent");
     }
   };

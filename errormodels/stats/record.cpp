@@ -116,7 +116,7 @@ UnitSpec parseUnitSpec(std::string_view unit, const std::string& source, std::si
     }
     return spec;
   } catch (const InputError& e) {
-    fail(source, line, "column \"" + column + "\": " + e.what());
+    fail(source, line, "column \"" + column + "\": " + e.text());
   }
 }
 
@@ -353,7 +353,7 @@ class RowReader {
       try {
         dim = parseUnit(*u.unit).dim;
       } catch (const InputError& e) {
-        fail(source_, 0, std::string(u.option) + ": " + e.what());
+        fail(source_, 0, std::string(u.option) + ": " + e.text());
       }
       if (dim != u.dim)
         fail(source_, 0, std::string(u.option) + " \"" + *u.unit + "\": unit has dimension " + dim.siUnit() +
@@ -518,7 +518,7 @@ class RowReader {
         return after;
       } catch (const InputError& e) {
         // "column "X": expected a finite number, got "OK"", without a time column's hint
-        std::string why = e.what();
+        std::string why = e.text();
         if (const std::size_t at = why.find(": column \""); at != std::string::npos) why = why.substr(at + 2);
         if (const std::size_t got = why.find("got \""); got != std::string::npos)
           if (const std::size_t end = why.find('"', got + 5); end != std::string::npos) why.resize(end + 1);

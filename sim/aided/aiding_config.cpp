@@ -171,7 +171,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
       for (const Diagnostic& d : e.diagnostics()) m.error(d.str());
       return;
     } catch (const InputError& e) {
-      m.error(e.what());
+      m.error(e.text());
       return;
     }
   }
@@ -184,7 +184,7 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
   } catch (const ConfigError& e) {
     problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
   } catch (const InputError& e) {
-    m.error(e.what());
+    m.error(e.text());
   }
   f.knownLabels = knownLabels(spec);
   f.imuRate = imuRate;

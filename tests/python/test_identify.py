@@ -264,3 +264,13 @@ def test_a_record_dict_s_values_are_taken_as_given_or_refused():
         sinsim.analyze({"rate": 100.0, "gx": np.ma.masked_array(x, mask=x > 2e-3)})
     plain = sinsim.analyze({"rate": 100.0, "gx": x})["gx"]["sd"]
     assert sinsim.analyze({"rate": 100.0, "gx": np.ma.masked_array(x)})["gx"]["sd"] == plain
+
+
+def test_a_message_holding_a_nul_byte_is_whole():
+    # The message reached Python cut at the NUL: ConfigError('scen'), InputError('a').
+    with pytest.raises(sinsim.ConfigError, match=r"scen\\x00arios/x.yaml: cannot open file"):
+        sinsim.Model("scen\x00arios/x.yaml")
+    with pytest.raises(sinsim.InputError, match=r"a\\x00b.csv: cannot open file"):
+        sinsim.load_record("a\x00b.csv")
+    with pytest.raises(sinsim.ConfigError, match=r'unknown effect type "white\\x00x" \(known: '):
+        sinsim.Model({"gyro": {"all": [{"type": "white\x00x"}]}})
