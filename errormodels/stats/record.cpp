@@ -44,6 +44,12 @@ struct Column {
   detail::recordError(source, line, what);
 }
 
+[[noreturn]] void failCrLineEnds(const std::string& source, std::size_t line) {
+  fail(source, line,
+       "the lines end in a carriage return alone (CR, old Mac line ends), so the file reads as one "
+       "line: convert them to LF (tr '\\r' '\\n' < in.csv > out.csv)");
+}
+
 /// Calls `line(text, number)` for every line of `path` (gunzipped when it is a gzip stream; zlib
 /// reads plain files as they are), without its '\n', while the file is read in chunks: a record
 /// of any length needs memory for its values only, not for its text. A line longer than
@@ -84,6 +90,10 @@ void forEachLineOfFile(const std::string& path, OnLine&& line) {
       p = eol < end ? eol + 1 : end;
     }
     held = static_cast<std::size_t>(end - p);
+    // CR line ends make the whole file one line: said as such at any size (a file over 1 MiB was
+    // "a line longer than 1048576 characters").
+    if (held > limits::kMaxRecordLineChars && std::memchr(p, '\r', held) != nullptr)
+      failCrLineEnds(path, number + 1);
     if (held > limits::kMaxRecordLineChars)
       fail(path, number + 1, "a line longer than " + std::to_string(limits::kMaxRecordLineChars) +
                                  " characters (docs/limits.md)");
@@ -264,15 +274,20 @@ inline const char* parseField(const char* p, const char* end, double& value, con
                               const Separator& sep, const std::string& source, std::size_t line) {
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
   const char* q = p;
+  // A quote-everything export writes "0.25": the quotes around a number are not part of it.
+  const bool quoted = q < end && *q == '"';
+  if (quoted) ++q;
   if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
   auto res = std::from_chars(q, end, value);
-  const char* after = res.ptr;
+  const char* fieldEnd = res.ptr;
+  const bool closed = !quoted || (res.ec == std::errc() && fieldEnd < end && *fieldEnd++ == '"');
+  const char* after = fieldEnd;
   if (after - p > static_cast<std::ptrdiff_t>(limits::kMaxFieldChars))
     fail(source, line, "column \"" + col.header + "\": a field longer than " +
                            std::to_string(limits::kMaxFieldChars) + " characters");
   while (after < end && (*after == ' ' || *after == '\t' || *after == '\r')) ++after;
-  const bool separated = after == end || (sep.blanks ? after > res.ptr : *after == sep.c);
-  if (res.ec != std::errc() || !separated || !std::isfinite(value)) {
+  const bool separated = after == end || (sep.blanks ? after > fieldEnd : *after == sep.c);
+  if (res.ec != std::errc() || !closed || !separated || !std::isfinite(value)) {
     const char* stop = p;
     while (stop < end && !sep.at(*stop) && *stop != '\r') ++stop;
     const std::string text = limits::echo(std::string_view(p, static_cast<std::size_t>(stop - p)));
@@ -422,10 +437,7 @@ class RowReader {
       fail(source_, number,
            "the file is UTF-16 text (NUL bytes; a spreadsheet's \"Unicode text\" export): save it as "
            "UTF-8 or ASCII CSV (iconv -f UTF-16 -t UTF-8 in.csv > out.csv)");
-    if (l.find('\r') != std::string_view::npos)
-      fail(source_, number,
-           "the lines end in a carriage return alone (CR, old Mac line ends), so the file reads as one "
-           "line: convert them to LF (tr '\\r' '\\n' < in.csv > out.csv)");
+    if (l.find('\r') != std::string_view::npos) failCrLineEnds(source_, number);
     if (l.empty() || l.front() == '#') return;
     const bool noHeader = headerless(options_.columns);
     headerLine_ = noHeader ? number - 1 : number;

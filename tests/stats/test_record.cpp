@@ -637,6 +637,30 @@ TEST_CASE("record: UTF-16 text and lines ended by CR alone are named, not read a
                                      Catch::Contains("tr '\\r' '\\n'"));
   // CRLF is read as it always was.
   CHECK(parseRecord("gx,gy\r\n1,2\r\n3,4\r\n", "rec.csv", opt).gyro[1] == std::vector<double>{2.0, 4.0});
+  // A quote-everything export ("0.25"), commas and blanks; an unclosed or stray quote stays an error.
+  CHECK(parseRecord("\"gx\",\"gy\"\n\"1\",\"2\"\n\"3\", \"-4e-1\"\n", "rec.csv", opt).gyro[1] ==
+        std::vector<double>{2.0, -0.4});
+  CHECK(parseRecord("gx gy\n\"1\" \"2\"\n3 4\n", "rec.csv", opt).gyro[0] == std::vector<double>{1.0, 3.0});
+  CHECK_THAT(errorOf("gx,gy\n1,2\n\"3,4\n", opt), Catch::Contains("rec.csv:3: column \"gx\""));
+  CHECK_THAT(errorOf("gx,gy\n1,2\n3\",4\n", opt), Catch::Contains("rec.csv:3: column \"gx\""));
+  CHECK_THAT(errorOf("gx gy\n1 2\n\"3\"4 5\n", opt), Catch::Contains("rec.csv:3: column \"gx\""));
+  // A CR-only file over the 1 MiB line limit: the same words (was "a line longer than 1048576
+  // characters").
+  const fs::path big = tempPath("cr_only.csv");
+  {
+    std::ofstream f(big, std::ios::binary);
+    f << "t,gx,gy,gz,ax,ay,az";
+    for (int k = 0; k < 60000; ++k) f << "\r" << 0.01 * k << ",0,0,0,0,0,-9.8";
+    f << "\r";
+  }
+  REQUIRE(fs::file_size(big) > 1048576);
+  try {
+    loadRecord(big.string(), {});
+    FAIL("a CR-only file was read");
+  } catch (const sinsim::InputError& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains("the lines end in a carriage return alone"));
+  }
+  fs::remove(big);
 }
 
 TEST_CASE("record: a column in a sensor's unit under a name not read is warned with its mapping", "[record][units]") {
