@@ -244,6 +244,7 @@ void writeAnalysis(const errormodels::Record& rec, const std::vector<ChannelStat
     out["samples"] = rec.size();
     out["duration_s"] = rec.duration();
     out["irregular_time_steps"] = rec.irregular_count;
+    out["record_warnings"] = errormodels::recordWarnings(rec);
     out["units"] = {{"gyro", "rad/s"}, {"accel", "m/s^2"}, {"time", "s"}, {"frequency", "Hz"}};
     json channels = json::object();
     for (const ChannelStats& c : stats) channels[c.name] = channelJson(c, a.fullJson);
@@ -262,6 +263,9 @@ void writeAnalysis(const errormodels::Record& rec, const std::vector<ChannelStat
                    " confidence bounds from Greenhall's equivalent degrees of freedom; PSD and "
                    "autocorrelation of the " + (a.denoise ? "db5-denoised" : "raw") +
                    " record, mean removed.");
+    // The reader's warnings (irregular steps, gaps, columns left out) stand on the page too: the
+    // JSON had irregular_time_steps, the page nothing.
+    for (const std::string& w : errormodels::recordWarnings(rec)) page.paragraph("Record warning: " + w);
     for (const ChannelStats& c : stats) addChannelToPage(page, c, a);
     page.write(htmlPath);
   }

@@ -184,6 +184,7 @@ std::string diagnoseReportHtml(const dg::Diagnosis& d, const dg::Improvement* im
                  std::to_string(d.realisations) + " Monte Carlo realisations of the model at the record's length and rate (" +
                  fmt(100 * d.bandLevel, 3) + " % central intervals). Misfit = RMS over τ of log10(ADEV_meas / ADEV_model) beyond the RMS a perfect model shows (its estimation-noise floor). "
                  "Score = Gaussian-equivalent significance of a candidate effect (see the README, \"Diagnose\").");
+  for (const std::string& w : d.recordWarnings) page.paragraph("Record warning: " + w);
   Table overview;
   overview.header = {"channel", "misfit", "τ outside band", "χ² / points", "Ljung-Box p", "verdict"};
   for (const auto& a : d.axes) {

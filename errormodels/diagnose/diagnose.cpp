@@ -232,9 +232,9 @@ Run diagnoseRun(const Record& record, const ErrorModelSpec& model, const Diagnos
 
 Diagnosis diagnose(const Record& record, const ErrorModelSpec& model, const DiagnoseOptions& options) {
   const auto net = detail::withoutModelDrift(record, model);
-  if (!net) return diagnoseRun(record, model, options).d;
-  Diagnosis d = diagnoseRun(net->record, net->model, options).d;
-  detail::stateModelDrift(d, net->drift);
+  Diagnosis d = diagnoseRun(net ? net->record : record, net ? net->model : model, options).d;
+  if (net) detail::stateModelDrift(d, net->drift);
+  d.recordWarnings = recordWarnings(record);
   return d;
 }
 

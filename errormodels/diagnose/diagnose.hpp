@@ -175,6 +175,9 @@ struct Diagnosis {
   double threshold = 8.0;
   double nextThreshold = 8.0;  ///< of the second and later findings on a channel
   double bandLevel = 0.95;
+  /// What the record reader warned (errormodels::recordWarnings: irregular time steps and gaps,
+  /// columns left out, units that look forgotten), kept with the diagnosis for its JSON and page.
+  std::vector<std::string> recordWarnings;
   std::vector<AxisDiagnosis> axes;
   const AxisDiagnosis& axis(const std::string& channel) const;  ///< InputError if absent
 };

@@ -84,6 +84,7 @@ nlohmann::json diagnosisJson(const Diagnosis& d) {
   j["threshold"] = d.threshold;
   j["next_threshold"] = d.nextThreshold;
   j["band_level"] = d.bandLevel;
+  j["record_warnings"] = d.recordWarnings;
   j["axes"] = nlohmann::json::array();
   for (const auto& a : d.axes) j["axes"].push_back(axisJson(a));
   return j;

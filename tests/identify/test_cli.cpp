@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -77,4 +78,30 @@ TEST_CASE("sinsim fit --skip: the model file says what was skipped", "[identify]
   REQUIRE(sinsim::test::runSinsim("fit " + (dir / "s.csv").string() + " --axes gx --kind ar --skip \"2 min\" -o " +
                                       (dir / "m.yaml").string(), err) == 0);
   CHECK_THAT(slurp(dir / "m.yaml"), Catch::Contains("samples used: 48000 (first 12000 samples = 120 s skipped)"));
+}
+
+TEST_CASE("analyze and diagnose: the record's warnings stand in their JSON and pages", "[identify][cli]") {
+  // A gap read with --allow-irregular-time was warned on stderr only: analyze's page and
+  // diagnose's JSON and page did not say that the samples either side of it were joined.
+  const fs::path dir = sinsim::test::freshTempDir("sinsim_test_record_warnings");
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0.0, 1e-3);
+  std::ofstream rec(dir / "gap.csv");
+  rec << "t,gx\n";
+  for (int k = 0; k < 6000; ++k)
+    if (k < 3000 || k >= 3050) rec << k * 0.01 << "," << n(rng) << "\n";
+  rec.close();
+  std::ofstream(dir / "m.yaml") << "gyro:\n  x: [{type: white, density: 1e-4 rad/s/sqrt(Hz)}]\n";
+  const std::string r = (dir / "gap.csv").string(), err = (dir / "err").string();
+  REQUIRE(sinsim::test::runSinsim("analyze " + r + " --allow-irregular-time --json " + (dir / "a.json").string() +
+                                      " --html " + (dir / "a.html").string(), err) == 0);
+  REQUIRE(sinsim::test::runSinsim("diagnose " + r + " --allow-irregular-time --model " + (dir / "m.yaml").string() +
+                                      " --realisations 8 --json " + (dir / "d.json").string() + " --html " +
+                                      (dir / "d.html").string(), err) == 0);
+  const std::string said = "1 irregular time step(s) (1 gap(s)), the first at line 3002";
+  for (const char* f : {"a.json", "a.html", "d.json", "d.html"}) {
+    INFO(f);
+    CHECK_THAT(slurp(dir / f), Catch::Contains(said));
+  }
+  CHECK_THAT(slurp(dir / "d.html"), Catch::Contains("Record warning: " + said));
 }
