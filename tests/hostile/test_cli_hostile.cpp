@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,17 @@ namespace {
 
 fs::path tempDir(const std::string& name) { return sinsim::test::freshTempDir("sinsim-hostile-cli-" + name); }
 using sinsim::test::writeText;
+
+/// A gzip record (fast level): `header`, then blocks of 100000 rows row(k), `blocks` times.
+[[maybe_unused]] void writeGzRows(const fs::path& path, const char* header, const std::function<const char*(int)>& row, int blocks) {
+  gzFile f = gzopen(path.string().c_str(), "wb1");
+  REQUIRE(f != nullptr);
+  gzputs(f, header);
+  std::string block;
+  for (int k = 0; k < 100000; ++k) block += row(k);
+  for (int k = 0; k < blocks; ++k) gzwrite(f, block.data(), static_cast<unsigned>(block.size()));
+  gzclose(f);
+}
 
 }  // namespace
 
@@ -168,13 +180,7 @@ TEST_CASE("sinsim diagnose: a channel the statistics cannot use is named with it
 TEST_CASE("sinsim analyze: a record beyond the memory left is refused by name, not bad_alloc") {
   const fs::path d = tempDir("memory");
   const fs::path rec = d / "rows.csv.gz";
-  gzFile f = gzopen(rec.string().c_str(), "wb1");
-  REQUIRE(f != nullptr);
-  gzputs(f, "t,gx,gy,gz,ax,ay,az\n");
-  std::string block;
-  for (int k = 0; k < 100000; ++k) block += "0,0,0,0,0,0,0\n";
-  for (int k = 0; k < 250; ++k) gzwrite(f, block.data(), static_cast<unsigned>(block.size()));
-  gzclose(f);
+  writeGzRows(rec, "t,gx,gy,gz,ax,ay,az\n", [](int) { return "0,0,0,0,0,0,0\n"; }, 250);
   const fs::path json = d / "out.json";
   const std::string cmd = "ulimit -v 1500000; " + std::string(SINSIM_BINARY_DIR) + "/sinsim analyze " +
                           rec.string() + " --rate 100 --json " + json.string() + " > /dev/null 2> " +
@@ -194,13 +200,7 @@ TEST_CASE("sinsim analyze: too little memory to plan an FFT is an error, not FFT
   // limits straddle where the record is read and the transform is planned.
   const fs::path d = tempDir("fft-memory");
   const fs::path rec = d / "one.csv.gz";
-  gzFile f = gzopen(rec.string().c_str(), "wb1");
-  REQUIRE(f != nullptr);
-  gzputs(f, "gx\n");
-  std::string block;
-  for (int k = 0; k < 100000; ++k) block += (k % 3 ? "1\n" : "-2\n");
-  for (int k = 0; k < 100; ++k) gzwrite(f, block.data(), static_cast<unsigned>(block.size()));
-  gzclose(f);
+  writeGzRows(rec, "gx\n", [](int k) { return k % 3 ? "1\n" : "-2\n"; }, 100);
   int refused = 0;
   for (int limit = 300000; limit <= 420000; limit += 15000) {
     const std::string cmd = "ulimit -v " + std::to_string(limit) + "; " + std::string(SINSIM_BINARY_DIR) +
