@@ -667,8 +667,9 @@ std::string timeWarning(const Record& record) {
   // Gaps counted among the first 1000 listed; jitter alone joins nothing ("(0+ gap(s)) ... the
   // samples either side of a gap joined" on a record without one).
   const bool more = record.irregularities.size() < record.irregular_count;
-  const std::string gapText = gaps == 0 && !more ? "no gap"
-                                                 : std::to_string(gaps) + (more ? "+" : "") + " gap(s)";
+  const std::string gapText = gaps > 0 ? std::to_string(gaps) + (more ? "+" : "") + " gap(s)"
+                              : more  ? "no gap among the first " + std::to_string(record.irregularities.size())
+                                      : "no gap";
   return std::to_string(record.irregular_count) + " irregular time step(s) (" + gapText + "), the first at line " +
          std::to_string(first.line) + " (t = " + significant(first.t, 13) + " s, dt = " + significant(first.dt, 4) +
          " s): read as uniform at " + limits::fmt(record.rate_hz) + " Hz (--allow-irregular-time)" +
