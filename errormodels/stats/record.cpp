@@ -267,37 +267,68 @@ std::string fieldHint(const std::string& text, const Separator& sep) {
   return "";
 }
 
-/// Parses one number occupying [p, end) up to the next separator or end of line; returns the
-/// position after the field (at a character separator, at the next field after blanks, or at the
-/// end). Throws with line/column context on anything that is not a finite number.
-inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
-                              const Separator& sep, const std::string& source, std::size_t line) {
+/// One field read as a number: where the next field starts (at a character separator, at the next
+/// field after blanks, or at the end), and, when it is no finite number, why, with its text.
+struct Field {
+  enum class Problem { None, TooLong, OutOfRange, Empty, NotNumber };
+  const char* after = nullptr;
+  double value = 0.0;
+  Problem problem = Problem::None;
+  std::string text;  // the field as written (echoed safely) when there is a problem
+
+  bool ok() const { return problem == Problem::None; }
+  /// "column "gx": expected a finite number, got "OK"" (the hint is the caller's).
+  std::string why(const Column& col) const {
+    const std::string name = "column \"" + col.header + "\": ";
+    switch (problem) {
+      case Problem::TooLong: return name + "a field longer than " + std::to_string(limits::kMaxFieldChars) + " characters";
+      case Problem::OutOfRange: return name + "number out of range: \"" + text + "\"";
+      case Problem::Empty: return name + "empty field";
+      case Problem::NotNumber: return name + "expected a finite number, got \"" + text + "\"";
+      case Problem::None: break;
+    }
+    return name;
+  }
+};
+
+/// Reads one number occupying [p, end) up to the next separator or end of line.
+inline Field readField(const char* p, const char* end, const Separator& sep) {
+  Field f;
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
   const char* q = p;
   // A quote-everything export writes "0.25": the quotes around a number are not part of it.
   const bool quoted = q < end && *q == '"';
   if (quoted) ++q;
   if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
-  auto res = std::from_chars(q, end, value);
+  auto res = std::from_chars(q, end, f.value);
   const char* fieldEnd = res.ptr;
   const bool closed = !quoted || (res.ec == std::errc() && fieldEnd < end && *fieldEnd++ == '"');
-  const char* after = fieldEnd;
-  if (after - p > static_cast<std::ptrdiff_t>(limits::kMaxFieldChars))
-    fail(source, line, "column \"" + col.header + "\": a field longer than " +
-                           std::to_string(limits::kMaxFieldChars) + " characters");
-  while (after < end && (*after == ' ' || *after == '\t' || *after == '\r')) ++after;
-  const bool separated = after == end || (sep.blanks ? after > fieldEnd : *after == sep.c);
-  if (res.ec != std::errc() || !closed || !separated || !std::isfinite(value)) {
-    const char* stop = p;
-    while (stop < end && !sep.at(*stop) && *stop != '\r') ++stop;
-    const std::string text = limits::echo(std::string_view(p, static_cast<std::size_t>(stop - p)));
-    if (res.ec == std::errc::result_out_of_range)
-      fail(source, line, "column \"" + col.header + "\": number out of range: \"" + text + "\"");
-    if (text.empty()) fail(source, line, "column \"" + col.header + "\": empty field");
-    fail(source, line, "column \"" + col.header + "\": expected a finite number, got \"" + text + "\"" +
-                           fieldHint(text, sep));
+  f.after = fieldEnd;
+  if (f.after - p > static_cast<std::ptrdiff_t>(limits::kMaxFieldChars)) {
+    f.problem = Field::Problem::TooLong;
+    return f;
   }
-  return after;
+  while (f.after < end && (*f.after == ' ' || *f.after == '\t' || *f.after == '\r')) ++f.after;
+  const bool separated = f.after == end || (sep.blanks ? f.after > fieldEnd : *f.after == sep.c);
+  if (res.ec == std::errc() && closed && separated && std::isfinite(f.value)) return f;
+  const char* stop = p;
+  while (stop < end && !sep.at(*stop) && *stop != '\r') ++stop;
+  f.text = limits::echo(std::string_view(p, static_cast<std::size_t>(stop - p)));
+  f.problem = res.ec == std::errc::result_out_of_range ? Field::Problem::OutOfRange
+              : f.text.empty()                          ? Field::Problem::Empty
+                                                        : Field::Problem::NotNumber;
+  return f;
+}
+
+/// readField for a column that must hold a number: throws with line/column context (and a hint
+/// for a field of another separator, a decimal comma or a clock time) when it does not.
+inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
+                              const Separator& sep, const std::string& source, std::size_t line) {
+  const Field f = readField(p, end, sep);
+  if (!f.ok())
+    fail(source, line, f.why(col) + (f.problem == Field::Problem::NotNumber ? fieldHint(f.text, sep) : ""));
+  value = f.value;
+  return f.after;
 }
 
 /// 1 / (the unit in seconds) of ms, us, ns.
@@ -523,24 +554,17 @@ class RowReader {
   const char* auxField(const char* q, const char* eol, std::size_t c, std::size_t number) {
     Column& col = cols_[c];
     if (col.leftOut.empty()) {
-      try {
-        double v;
-        const char* after = parseField(q, eol, v, col, sep_, source_, number);
-        push(c, v, number);
-        return after;
-      } catch (const InputError& e) {
-        // "column "X": expected a finite number, got "OK"", without a time column's hint
-        std::string why = e.text();
-        if (const std::size_t at = why.find(": column \""); at != std::string::npos) why = why.substr(at + 2);
-        if (const std::size_t got = why.find("got \""); got != std::string::npos)
-          if (const std::size_t end = why.find('"', got + 5); end != std::string::npos) why.resize(end + 1);
-        col.leftOut = "line " + std::to_string(number) + ": " + why +
-                      (col.role == Role::Temperature
-                           ? ": the temperature column is left out (the record has none)"
-                           : ": not a column sinsim reads, so it is left out of the record");
-        data_[c].clear();
-        data_[c].shrink_to_fit();
+      const Field f = readField(q, eol, sep_);
+      if (f.ok()) {
+        push(c, f.value, number);
+        return f.after;
       }
+      col.leftOut = "line " + std::to_string(number) + ": " + f.why(col) +
+                    (col.role == Role::Temperature
+                         ? ": the temperature column is left out (the record has none)"
+                         : ": not a column sinsim reads, so it is left out of the record");
+      data_[c].clear();
+      data_[c].shrink_to_fit();
     }
     // Skip the field: to the separator (or past the blanks that end it), as parseField leaves it.
     while (q < eol && (*q == ' ' || *q == '\t')) ++q;
