@@ -46,8 +46,7 @@ int runAnalyze(const AnalyzeArgs& a) {
   sim::checkAnalysisOptions(opt);  // before the record is read
   const errormodels::Record rec = errormodels::loadRecord(a.data, ro);
   // Both outputs before the work: never the JSON written and the HTML refused.
-  for (const std::string& out : {a.json_out, a.html_out})
-    if (!out.empty()) requireWritableTarget(out);
+  requireWritableTargets({a.json_out, a.html_out});
   if (a.segment > 0 && static_cast<std::size_t>(a.segment) > rec.size())
     throw InputError("--segment: " + std::to_string(a.segment) + " samples, longer than the " +
                      std::to_string(rec.size()) + "-sample record " + a.data);

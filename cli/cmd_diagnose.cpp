@@ -87,8 +87,7 @@ int diagnoseAndWrite(const DiagnoseArgs& a) {
   if (!adds.empty() && !a.edited.empty()) throw InputError("give either --add or --edited, not both");
   // Every output before the work: never some written and the next refused.
   const std::string improvedOut = a.output.empty() ? defaultOutput(a.model) : a.output;
-  for (const std::string& out : {adds.empty() ? std::string() : improvedOut, a.json, a.html})
-    if (!out.empty()) requireWritableTarget(out);
+  requireWritableTargets({adds.empty() ? std::string() : improvedOut, a.json, a.html});
 
   DiagnoseCommand command;  // for the page's "what next"
   command.base = "sinsim diagnose " + a.data + recordOptionsText(a.record);

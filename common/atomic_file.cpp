@@ -70,6 +70,19 @@ void requireWritableTarget(const std::string& path) {
   requireNotAnInput(path);
 }
 
+void requireWritableTargets(const std::vector<std::string>& paths) {
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (paths[i].empty()) continue;
+    requireWritableTarget(paths[i]);
+    std::error_code ec;
+    const fs::path here = fs::weakly_canonical(paths[i], ec);
+    for (std::size_t j = 0; j < i; ++j)
+      if (!paths[j].empty() && fs::weakly_canonical(paths[j], ec) == here)
+        throw InputError("cannot write " + paths[i] + ": it is also the output " + paths[j] +
+                         "; give each output its own file");
+  }
+}
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   fp_ = openTemporary(path_, temp_);
 }

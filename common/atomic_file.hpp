@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sinsim {
 
@@ -15,6 +16,10 @@ namespace sinsim {
 /// output before their work, so that a bad output name never costs the work or leaves some
 /// outputs written and others not.
 void requireWritableTarget(const std::string& path);
+
+/// requireWritableTarget for each of a command's outputs (an empty name is an output not asked
+/// for), and no two of them the same file: `--json r --html r` would keep only the last written.
+void requireWritableTargets(const std::vector<std::string>& paths);
 
 /// Writes `text` to `path` atomically. Throws InputError when the folder does not exist or the
 /// temporary cannot be created, Error on a write or rename failure.

@@ -2,6 +2,7 @@
 // functions the CLI commands call (cli/cmd_analyze.cpp, cmd_fit.cpp, cmd_diagnose.cpp).
 #include <pybind11/stl.h>
 
+#include "common/atomic_file.hpp"
 #include "common/error.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/identify.hpp"
@@ -67,6 +68,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
   opt.tauPerDecade = tau == "decade";
   opt.confidence = confidence;
   opt.denoise = denoise;
+  requireWritableTargets({json, html});  // before the work, as `sinsim analyze`
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   std::vector<sim::ChannelStats> stats;
   {

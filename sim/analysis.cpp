@@ -235,8 +235,7 @@ void writeAnalysis(const errormodels::Record& rec, const std::vector<ChannelStat
                    const AnalysisOptions& a, const std::string& jsonPath,
                    const std::string& htmlPath) {
   // Both before either is written (an output file's folder is not created, docs/limits.md).
-  for (const std::string& out : {jsonPath, htmlPath})
-    if (!out.empty()) requireWritableTarget(out);
+  requireWritableTargets({jsonPath, htmlPath});
   if (!jsonPath.empty()) {
     json out;
     out["source"] = rec.source;

@@ -345,3 +345,32 @@ TEST_CASE("sinsim analyze, synth and diagnose: an output in a missing folder is 
   }
   CHECK_FALSE(fs::exists(d / "no"));
 }
+
+TEST_CASE("sinsim analyze and diagnose: two outputs given the same file are refused before the work") {
+  // Before: `--json r --html r` wrote the JSON, then the HTML over it (exit 0, the JSON lost).
+  const fs::path d = tempDir("sameout");
+  const std::string model = std::string(SINSIM_SOURCE_DIR) + "/scenarios/adis16355-ar5.yaml";
+  const std::string rec = (d / "r.csv").string();
+  REQUIRE(runSinsim("synth " + model + " --rate 100 --duration 60 --seed 1 -o " + rec, d / "err") == 0);
+  const std::string out = (d / "out").string();
+  const std::string alias = (d / "." / "out").string();
+  const std::string cases[] = {
+      "analyze " + rec + " --json " + out + " --html " + alias,
+      "diagnose " + rec + " --model " + model + " --json " + out + " --html " + out,
+      "diagnose " + rec + " --model " + model + " --add white:gx -o " + out + " --json " + alias,
+  };
+  for (const std::string& c : cases) {
+    INFO(c);
+    CHECK(runSinsim(c, d / "err") == 1);
+    const std::string err = slurp(d / "err");
+    CHECK_THAT(err, Contains(": it is also the output "));
+    CHECK_THAT(err, Contains("give each output its own file"));
+    CHECK(err.find("wall") == std::string::npos);  // refused before the diagnosis ran
+    CHECK_FALSE(fs::exists(d / "out"));
+  }
+  // Different files: as ever.
+  CHECK(runSinsim("analyze " + rec + " --json " + (d / "a.json").string() + " --html " + (d / "a.html").string(),
+                  d / "err") == 0);
+  CHECK(fs::exists(d / "a.json"));
+  CHECK(fs::exists(d / "a.html"));
+}

@@ -274,3 +274,17 @@ def test_a_message_holding_a_nul_byte_is_whole():
         sinsim.load_record("a\x00b.csv")
     with pytest.raises(sinsim.ConfigError, match=r'unknown effect type "white\\x00x" \(known: '):
         sinsim.Model({"gyro": {"all": [{"type": "white\x00x"}]}})
+
+
+def test_analyze_refuses_bad_outputs_before_the_work(record, tmp_path):
+    # As `sinsim analyze`: both outputs are checked before the statistics, so a refused HTML never
+    # leaves the JSON written, and one file given as both would keep only the last written.
+    rec, _ = record
+    js = tmp_path / "a.json"
+    with pytest.raises(sinsim.InputError, match="does not exist"):
+        sinsim.analyze(rec, json=str(js), html=str(tmp_path / "no" / "a.html"))
+    with pytest.raises(sinsim.InputError, match="it is also the output"):
+        sinsim.analyze(rec, json=str(js), html=str(tmp_path / "." / "a.json"))
+    assert not js.exists()
+    sinsim.analyze(rec, json=str(js), html=str(tmp_path / "a.html"))
+    assert js.exists() and (tmp_path / "a.html").exists()
