@@ -212,7 +212,11 @@ py::dict recordDict(const errormodels::Record& r) {
   py::dict d;
   d["source"] = r.source;
   d["rate"] = r.rate_hz;
-  if (!r.t.empty()) d["t"] = array(r.t);
+  if (!r.t.empty()) {  // the stamps as written (t_origin_s + t: Unix time back to its digits in a double)
+    std::vector<double> t(r.t);
+    for (double& x : t) x += r.t_origin_s;
+    d["t"] = array(t);
+  }
   const char* g[] = {"gx", "gy", "gz"};
   const char* a[] = {"ax", "ay", "az"};
   for (int i = 0; i < 3; ++i) {

@@ -272,6 +272,7 @@ std::string fieldHint(const std::string& text, const Separator& sep) {
 struct Field {
   enum class Problem { None, TooLong, OutOfRange, Empty, NotNumber };
   const char* after = nullptr;
+  const char* number = nullptr;  // where the number's digits start (past blanks, a quote, a '+')
   double value = 0.0;
   Problem problem = Problem::None;
   std::string text;  // the field as written (echoed safely) when there is a problem
@@ -300,6 +301,7 @@ inline Field readField(const char* p, const char* end, const Separator& sep) {
   const bool quoted = q < end && *q == '"';
   if (quoted) ++q;
   if (q < end && *q == '+') ++q;  // from_chars does not take a leading '+'
+  f.number = q;
   auto res = std::from_chars(q, end, f.value);
   const char* fieldEnd = res.ptr;
   const bool closed = !quoted || (res.ec == std::errc() && fieldEnd < end && *fieldEnd++ == '"');
@@ -523,6 +525,8 @@ class RowReader {
       double v;
       if (optional(cols_[c])) {
         q = auxField(q, eol, c, number);
+      } else if (cols_[c].role == Role::Time) {
+        q = timeField(q, eol, c, number);
       } else {
         q = parseField(q, eol, v, cols_[c], sep_, source_, number);
         push(c, v, number);
@@ -575,6 +579,18 @@ class RowReader {
     return q;
   }
 
+  /// A time stamp, kept less the first one in the column's unit, read with a 64-bit mantissa: Unix
+  /// time in ns (1.7e18) is exact, and its steps keep every digit as doubles.
+  const char* timeField(const char* q, const char* eol, std::size_t c, std::size_t number) {
+    double v;
+    const char* after = parseField(q, eol, v, cols_[c], sep_, source_, number);
+    long double exact = v;
+    std::from_chars(readField(q, eol, sep_).number, eol, exact);
+    if (!tOrigin_) tOrigin_ = exact;
+    push(c, static_cast<double>(exact - *tOrigin_), number);
+    return after;
+  }
+
   /// Appends v to column c. A record within the value limit may still not fit in the memory the
   /// process has (an address-space limit, a small machine): that is said with the file, the line
   /// and what was read, not as std::bad_alloc.
@@ -593,8 +609,13 @@ class RowReader {
   /// One column in SI units into its place in the record.
   void store(Record& rec, const Column& col, std::vector<double> v) const {
     v.shrink_to_fit();
-    if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0))
+    if (col.role == Role::Time) {  // stamps less the first (timeField): the unit's offset is the origin's
+      rec.t_origin_s = col.scale * static_cast<double>(tOrigin_.value_or(0.0L)) + col.offset;
+      if (col.scale != 1.0)
+        for (double& x : v) x = col.scale * x;
+    } else if (col.role != Role::Aux && (col.scale != 1.0 || col.offset != 0.0)) {
       for (double& x : v) x = col.scale * x + col.offset;
+    }
     // Beyond kMaxQuantity (SI) sums of squares in the statistics overflow to inf and NaN. Time
     // stamps only give steps and a rate, checked by checkTime, whose message names the unit Unix
     // time in ms or ns under a plain `t` needs (1.7e12 "s" was "beyond any sensor").
@@ -623,6 +644,7 @@ class RowReader {
   Separator sep_;
   std::vector<std::vector<double>> data_;
   std::size_t rows_ = 0, headerLine_ = 0, blankAt_ = 0;
+  std::optional<long double> tOrigin_;  // the first time stamp, in the column's unit
 };
 
 }  // namespace
@@ -695,7 +717,7 @@ std::string timeWarning(const Record& record) {
                               : more  ? "no gap among the first " + std::to_string(record.irregularities.size())
                                       : "no gap";
   return std::to_string(record.irregular_count) + " irregular time step(s) (" + gapText + "), the first at line " +
-         std::to_string(first.line) + " (t = " + significant(first.t, 13) + " s, dt = " + significant(first.dt, 4) +
+         std::to_string(first.line) + " (t = " + significant(record.t_origin_s + first.t, 13) + " s, dt = " + significant(first.dt, 4) +
          " s): read as uniform at " + limits::fmt(record.rate_hz) + " Hz (--allow-irregular-time)" +
          (gaps > 0 ? ", the samples either side of a gap joined" : "");
 }

@@ -55,7 +55,7 @@ struct RecordOptions {
 struct TimeIrregularity {
   std::size_t line = 0;   ///< 1-based file line of the later sample
   std::size_t row = 0;    ///< 0-based sample index of the later sample
-  double t = 0.0;         ///< [s] its time stamp
+  double t = 0.0;         ///< [s] its time stamp less Record::t_origin_s
   double dt = 0.0;        ///< [s] step from the previous sample
   bool gap = false;       ///< dt > 1.5 nominal steps (missing samples) rather than jitter
 };
@@ -69,8 +69,12 @@ struct AuxChannel {
 struct Record {
   std::string source;   ///< file path as given
   double rate_hz = 0;   ///< [Hz] nominal sample rate (option; else from the span of regular time stamps, or 1 / their median step)
-  /// [s] time stamps as read (empty when the file has no time column: sample k is at k / rate_hz)
+  /// [s] time stamps as read, less t_origin_s (empty when the file has no time column: sample k
+  /// is at k / rate_hz). Relative, so that Unix time in ns at 100 kHz keeps its steps' digits: as
+  /// doubles of ~1.7e9 s the steps of 10 us came out 9.8 or 10.3 us, "irregular".
   std::vector<double> t;
+  /// [s] the first time stamp as written (Unix time, say): stamp k is t_origin_s + t[k]
+  double t_origin_s = 0.0;
   /// omega_ib_b per axis x, y, z [rad/s]; an axis absent from the file is an empty vector
   std::array<std::vector<double>, 3> gyro;
   /// f_b per axis x, y, z [m/s^2]; an axis absent from the file is an empty vector

@@ -88,8 +88,8 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
   for (std::size_t k = 1; k < n; ++k) {
     if (!(t[k] > t[k - 1])) {
       recordError(rec.source, lineOf(k),
-           "time stamp " + limits::fmt(t[k] + 0.0, 12) + " s does not increase (previous " +
-               limits::fmt(t[k - 1] + 0.0, 12) + " s)");
+           "time stamp " + limits::fmt(rec.t_origin_s + t[k], 12) + " s does not increase (previous " +
+               limits::fmt(rec.t_origin_s + t[k - 1], 12) + " s)");
     }
   }
   if (n < 2 && !options.rate_hz) recordError(rec.source, 0, "one sample only and no rate given: the sample rate is unknown");
@@ -149,7 +149,7 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
     os << count << " irregular time step(s) (nominal " << dt0 << " s, tolerance "
        << options.time_tolerance * 100 << " %); first at:";
     for (std::size_t i = 0; i < std::min<std::size_t>(found.size(), 5); ++i) {
-      os << (i ? "," : "") << " line " << found[i].line << " (t = " << found[i].t << " s, dt = "
+      os << (i ? "," : "") << " line " << found[i].line << " (t = " << rec.t_origin_s + found[i].t << " s, dt = "
          << found[i].dt << " s" << (found[i].gap ? ", gap" : "") << ")";
     }
     os << ". Records are not resampled; fix the file or allow irregular time.";
@@ -160,7 +160,9 @@ void checkTime(Record& rec, std::size_t first_line, const RecordOptions& options
 
 /// A record's sample rate must be one an IMU record can have (limits::kMinRate..kMaxRate).
 void checkRate(double rate, const std::string& source, const std::string& what, const std::string& hint) {
-  if (!(rate >= limits::kMinRate && rate <= limits::kMaxRate))
+  // A rate read from time stamps at a limit (10 us steps of 100 kHz) is a rounding off it.
+  constexpr double slack = 1e-9;
+  if (!(rate >= limits::kMinRate * (1 - slack) && rate <= limits::kMaxRate * (1 + slack)))
     recordError(source, 0, what + " " + limits::fmt(rate) + " Hz is outside what an IMU record can be (" +
                         limits::fmt(limits::kMinRate) + " to " + limits::fmt(limits::kMaxRate) +
                         " Hz; docs/limits.md)" + hint);

@@ -699,3 +699,50 @@ TEST_CASE("record: a bad unit option is named as the option, not as the file's c
   o.gyro_unit = "dps";
   CHECK(parseRecord("t,gx\n0,1\n0.01,1\n", "rec.csv", o).gyro[0][0] == Approx(M_PI / 180.0));
 }
+
+TEST_CASE("record: Unix time stamps in ns up to 100 kHz are regular and messages show them as written",
+          "[record]") {
+  // As doubles, 1.7e18 ns are 256 ns apart and 1.7e9 s 0.24 us apart: the 10 us steps of 100 kHz
+  // came out 9.8 or 10.3 us, thousands of "irregular time steps". The stamps are kept less the
+  // first, read with a 64-bit mantissa (exact for integers below 1.8e19).
+  auto unixNs = [](long long rate, std::size_t n, std::size_t dropped) {
+    std::string text = "t[ns],gx\n";
+    const long long t0 = 1733560000123456789LL;
+    for (std::size_t k = 0; k < n; ++k)
+      if (k != dropped) text += std::to_string(t0 + static_cast<long long>(k) * (1000000000LL / rate)) + ",0.01\n";
+    return text;
+  };
+  for (const long long rate : {1000LL, 20000LL, 50000LL, 100000LL}) {
+    INFO(rate);
+    const Record r = parseRecord(unixNs(rate, 5001, SIZE_MAX), "ns.csv", {});
+    CHECK(r.irregular_count == 0);
+    CHECK(r.rate_hz == Approx(double(rate)).epsilon(1e-12));
+    CHECK(r.t.front() == 0.0);
+    CHECK(r.t_origin_s == Approx(1733560000.123456789).epsilon(1e-15));
+    CHECK(r.t.back() == Approx(5000.0 / double(rate)).epsilon(1e-12));
+  }
+  // Seconds with nine decimals, and ms with six: the same.
+  std::string s = "t,gx\n", ms = "t[ms],gx\n";
+  char buf[64];
+  for (long long k = 0; k <= 5000; ++k) {
+    std::snprintf(buf, sizeof buf, "1733560000.%09lld", 123456789LL + 10000LL * k);
+    s += std::string(buf) + ",0.01\n";
+    std::snprintf(buf, sizeof buf, "1733560000%03lld.%06lld", (123456789LL + 10000LL * k) / 1000000LL,
+                  (123456789LL + 10000LL * k) % 1000000LL);
+    ms += std::string(buf) + ",0.01\n";
+  }
+  for (const std::string& text : {s, ms}) {
+    const Record r = parseRecord(text, "unix.csv", {});
+    CHECK(r.irregular_count == 0);
+    CHECK(r.rate_hz == Approx(100000.0).epsilon(1e-8));  // ms to six decimals: 1e-10 s each
+  }
+  // A dropped sample: the gap is named at its stamp as written.
+  RecordOptions allow;
+  allow.allow_irregular_time = true;
+  const Record g = parseRecord(unixNs(100000, 5001, 2000), "ns.csv", allow);
+  CHECK(g.irregular_count == 1);
+  const auto w = recordWarnings(g);
+  REQUIRE_FALSE(w.empty());
+  CHECK_THAT(w[0], Catch::Contains("(t = 1733560000.143 s, dt = 2e-05 s)"));
+  CHECK_THAT(errorOf(unixNs(100000, 5001, 2000)), Catch::Contains("(t = 1733560000.14"));
+}
