@@ -54,7 +54,7 @@ py::dict channelDict(const sim::ChannelStats& c) {
   return d;
 }
 
-py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
+py::dict analyze(const py::object& record, double maxLag, const py::int_& segment,
                  const std::string& tau, double confidence, bool denoise, const std::string& json,
                  const std::string& html, const std::optional<std::string>& gyroUnit,
                  const std::optional<std::string>& accelUnit, const py::object& rate) {
@@ -64,7 +64,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
     throw InputError("tau: expected octave or decade, got \"" + tau + "\"");
   sim::AnalysisOptions opt;
   opt.max_lag_s = maxLag;
-  opt.segment = segment;
+  opt.segment = countArg(segment, "segment");
   opt.tauPerDecade = tau == "decade";
   opt.confidence = confidence;
   opt.denoise = denoise;
@@ -86,7 +86,7 @@ py::dict analyze(const py::object& record, double maxLag, std::size_t segment,
 }
 
 Model fit(const py::object& record, const std::string& kind, const std::vector<std::string>& axes,
-          std::optional<std::size_t> order, const std::string& criterion, std::size_t maxOrder,
+          const std::optional<py::int_>& orderArg, const std::string& criterion, const py::int_& maxOrderArg,
           bool denoise, const py::object& skip, const std::optional<std::string>& gyroUnit,
           const std::optional<std::string>& accelUnit, const py::object& rate, const std::string& lines) {
   const InputFilesScope inputs;
@@ -94,7 +94,10 @@ Model fit(const py::object& record, const std::string& kind, const std::vector<s
   em::IdentifyOptions opt;
   opt.kind = em::identifyKindByName(kind);
   opt.fitLines = em::fitLinesByName(lines);
+  const std::optional<std::size_t> order =
+      orderArg ? std::optional<std::size_t>(countArg(*orderArg, "order")) : std::nullopt;
   if (order && *order < 1) throw InputError("order: expected a positive integer or None (auto)");
+  const std::size_t maxOrder = countArg(maxOrderArg, "max_order");
   opt.order = order;
   opt.maxOrder = std::max(maxOrder, order.value_or(0));
   opt.criterion = em::orderCriterionByName(criterion);
@@ -128,8 +131,8 @@ py::dict findingDict(const em::diagnose::Finding& f, const std::string& channel)
 }
 
 py::dict diagnose(const py::object& record, const py::object& model,
-                  const std::vector<std::string>& channels, std::size_t realisations,
-                  std::uint64_t seed, unsigned threads, double threshold, double nextThreshold,
+                  const std::vector<std::string>& channels, const py::int_& realisations,
+                  const py::int_& seed, const py::int_& threads, double threshold, double nextThreshold,
                   const std::optional<std::string>& gyroUnit,
                   const std::optional<std::string>& accelUnit, const py::object& rate) {
   const InputFilesScope inputs;
@@ -140,10 +143,10 @@ py::dict diagnose(const py::object& record, const py::object& model,
   warnAll("diagnose", em::recordWarnings(rec));
   dg::DiagnoseOptions o;
   o.channels = channels;
-  o.realisations = realisations;
-  o.seed = seed;
-  limits::requireThreads(threads, "threads");
-  o.threads = threads;
+  o.realisations = countArg(realisations, "realisations");
+  o.seed = countArg(seed, "seed");
+  o.threads = static_cast<unsigned>(countArg(threads, "threads", std::numeric_limits<unsigned>::max()));
+  limits::requireThreads(o.threads, "threads");
   o.threshold = threshold;
   o.nextThreshold = nextThreshold;
   std::optional<dg::Diagnosis> d;

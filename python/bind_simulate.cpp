@@ -96,7 +96,7 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
   return d;
 }
 
-py::dict run(const py::object& scenario, const py::object& model, std::optional<std::uint64_t> seed,
+py::dict run(const py::object& scenario, const py::object& model, const std::optional<py::int_>& seed,
              const py::object& biasWindow, const std::string& output, bool imu) {
   const InputFilesScope inputs;  // the outputs never replace a file the call read (the CLI's rule)
   const InterruptScope interrupt;  // Ctrl-C stops the work (python/interrupt.hpp)
@@ -106,7 +106,7 @@ py::dict run(const py::object& scenario, const py::object& model, std::optional<
     if (py::isinstance<py::str>(model)) opt.model = model.cast<std::string>();  // as --model
     else sc = withModel(sc, toModel(model));
   }
-  opt.seed = seed;
+  if (seed) opt.seed = countArg(*seed, "seed");
   opt.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
   opt.outDir = output;
   opt.writeImu = imu;
@@ -211,8 +211,8 @@ struct ScratchDir {
   }
 };
 
-py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t runs,
-            std::optional<std::uint64_t> seed, unsigned threads, const py::object& times,
+py::dict mc(const py::object& scenario, const py::object& models, const py::int_& runs,
+            const std::optional<py::int_>& seed, const py::int_& threads, const py::object& times,
             const py::object& biasWindow, bool budget, const std::string& output) {
   const InputFilesScope inputs;
   const sim::Scenario sc = toScenario(scenario);
@@ -221,10 +221,10 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
                                    : "python:" + sc.name;
   const std::vector<sim::McModel> list = mcModels(sc, identity, models);
   sim::McOptions opt;
-  opt.runs = runs;
-  opt.seed = seed ? *seed : sc.seed.value_or(0);
-  limits::requireThreads(threads, "threads");
-  opt.threads = threads;
+  opt.runs = countArg(runs, "runs");
+  opt.seed = seed ? countArg(*seed, "seed") : sc.seed.value_or(0);
+  opt.threads = static_cast<unsigned>(countArg(threads, "threads", std::numeric_limits<unsigned>::max()));
+  limits::requireThreads(opt.threads, "threads");
   if (py::isinstance<py::str>(times)) {  // iterated by its characters: "got \"3\" with no unit"
     const std::string text = times.cast<std::string>();
     if (text.find(',') != std::string::npos)
@@ -257,7 +257,7 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
   }
   if (interrupted.load()) throw py::error_already_set();  // the KeyboardInterrupt
   if (!r.complete) throw Error("mc: the batch did not complete");
-  py::dict d = mcToDict(ref, r, list.size(), runs);
+  py::dict d = mcToDict(ref, r, list.size(), opt.runs);
   d["output"] = output;
   // About every run (the duration's rounding, an aided filter's start), as `sinsim mc` prints them: a key and Python warnings.
   const std::vector<std::string> warnings = sim::batchWarnings(sc, ref);
@@ -268,7 +268,7 @@ py::dict mc(const py::object& scenario, const py::object& models, std::uint64_t 
 }
 
 py::dict synth(const py::object& model, double rate, const py::object& duration,
-               const std::string& path, std::uint64_t seed, std::uint64_t run,
+               const std::string& path, const py::int_& seed, const py::int_& run,
                const std::string& temperature, const py::object& latitude, const py::object& height,
                const py::object& attitude) {
   const InputFilesScope inputs;
@@ -277,7 +277,7 @@ py::dict synth(const py::object& model, double rate, const py::object& duration,
   sim::StaticRecordSpec spec;
   spec.rate = rate;
   spec.duration = quantityArg(duration, Dimension::time(), "duration");
-  spec.key = {seed, run};
+  spec.key = {countArg(seed, "seed"), countArg(run, "run")};
   spec.lat = quantityArg(latitude, Dimension::angle(), "latitude");
   spec.h = quantityArg(height, Dimension::length(), "height");
   int i = 0;

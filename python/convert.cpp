@@ -249,4 +249,16 @@ double quantityArg(const py::handle& v, Dimension dim, const std::string& what) 
   }
 }
 
+std::uint64_t countArg(const py::int_& v, const std::string& what, std::uint64_t max) {
+  if (py::isinstance<py::bool_>(v)) throw InputError(what + ": expected an integer, got a bool");
+  const unsigned long long n = PyLong_AsUnsignedLongLong(v.ptr());
+  if (PyErr_Occurred() || n > max) {
+    PyErr_Clear();  // OverflowError: negative, or beyond 64 bits
+    throw InputError(what + ": expected an integer from 0 to " +
+                     (max == std::numeric_limits<std::uint64_t>::max() ? std::string("2^64 - 1") : std::to_string(max)) + ", got " +
+                     py::repr(v).cast<std::string>());
+  }
+  return n;
+}
+
 }  // namespace sinsim::python

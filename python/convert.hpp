@@ -3,6 +3,9 @@
 // Record) from "a path or a dict or an object".
 #pragma once
 
+#include <cstdint>
+#include <limits>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -52,5 +55,11 @@ namespace sinsim::python {
 /// A quantity argument: a number is SI already, a string carries its unit ("10 min", "45 deg").
 /// InputError naming `what` when the string's dimension is not `dim`.
 double quantityArg(const py::handle& value, Dimension dim, const std::string& what);
+
+/// A count or seed argument: a Python int from 0 to `max`. InputError naming `what` for a negative
+/// one, one beyond `max` or a bool (pybind11 refused -1 for an unsigned parameter as "incompatible
+/// function arguments", naming neither the argument nor the value).
+std::uint64_t countArg(const py::int_& value, const std::string& what,
+                       std::uint64_t max = std::numeric_limits<std::uint64_t>::max());
 
 }  // namespace sinsim::python

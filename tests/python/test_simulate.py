@@ -236,3 +236,22 @@ def test_mc_refuses_an_empty_label(tmp_path):
     m.label = ""
     with pytest.raises(sinsim.InputError, match="label is empty"):
         sinsim.mc(sc, models=[m], runs=2)
+
+
+def test_a_negative_or_bool_count_or_seed_is_refused_by_name(tmp_path):
+    # pybind11 refused seed=-1 as "incompatible function arguments", naming neither the argument
+    # nor the value; True was read as 1.
+    sc = static_scenario(1)
+    calls = {
+        "seed": lambda: sinsim.run(sc, model="none", seed=-1),
+        "runs": lambda: sinsim.mc(sc, WHITE_GYRO, runs=-2, output=str(tmp_path / "mc")),
+        "threads": lambda: sinsim.mc(sc, WHITE_GYRO, runs=2, threads=2**40, output=str(tmp_path / "mc")),
+        "run": lambda: sinsim.synth(WHITE_GYRO, rate=100, duration="1 s", path=str(tmp_path / "r.csv"), run=True),
+    }
+    for name, call in calls.items():
+        with pytest.raises(sinsim.InputError, match=f"^{name}: expected an integer"):
+            call()
+    assert not (tmp_path / "mc").exists() and not (tmp_path / "r.csv").exists()
+    # The largest seed is a seed.
+    rec = sinsim.synth(WHITE_GYRO, rate=100, duration="1 s", path=str(tmp_path / "r.csv"), seed=2**64 - 1)
+    assert rec["gx"].shape == (100,)
