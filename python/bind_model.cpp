@@ -137,7 +137,7 @@ Model withEffect(const Model& m, const std::string& sensor, const std::string& l
   const em::Sensor s = sensorByName(sensor);
   const em::EffectList l = listByName(list);
   YAML::Node root(YAML::NodeType::Map);
-  root[sensor][list].push_back(yamlTree(effect, sensor + "." + list + "[0]"));
+  root[sensor][list].push_back(yamlTree(effect, "<effect dict>", sensor + "." + list + "[0]"));
   ConfigFile file = ConfigFile::fromNode(root, "<effect dict>");
   const em::ErrorModelSpec one = em::readErrorModel(file.root());
   file.throwIfErrors();

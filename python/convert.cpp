@@ -26,9 +26,35 @@ YAML::Node tree(const py::handle& v, const std::string& path, int depth);
 
 }  // namespace
 
-YAML::Node yamlTree(const py::handle& v, const std::string& path) { return tree(v, path, 0); }
+YAML::Node yamlTree(const py::handle& v, const std::string& source, const std::string& path) {
+  try {
+    return tree(v, path, 0);
+  } catch (const InputError& e) {
+    throw InputError(source + ": " + e.text());
+  }
+}
 
 namespace {
+
+/// A Python str as UTF-8; one holding a lone surrogate (bytes decoded with surrogateescape) has
+/// none: an InputError naming where it stood (the cast's RuntimeError "Unable to cast Python
+/// instance to C++ type" named nothing).
+std::string utf8(const py::handle& v, const std::string& where) {
+  try {
+    return v.cast<std::string>();
+  } catch (const py::cast_error&) {
+    PyErr_Clear();
+    throw InputError((where.empty() ? std::string("value") : where) + ": " +
+                     py::repr(v).cast<std::string>().substr(0, 200) +
+                     " is not UTF-8 text (it holds a lone surrogate)");
+  }
+}
+
+/// A path (str or os.PathLike) as the bytes the file system names it by: os.fsencode gives a
+/// name that is no UTF-8 (decoded with surrogateescape, as os.listdir returns it) its bytes back.
+std::string pathBytes(const py::handle& v) {
+  return py::module_::import("os").attr("fsencode")(v).cast<std::string>();
+}
 
 YAML::Node tree(const py::handle& v, const std::string& path, int depth) {
   if (depth > kMaxDepth)
@@ -36,7 +62,7 @@ YAML::Node tree(const py::handle& v, const std::string& path, int depth) {
                      std::to_string(kMaxDepth) + " levels (a dict or list that holds itself?)");
   if (v.is_none()) return YAML::Node(YAML::NodeType::Null);
   if (py::isinstance<py::bool_>(v)) return YAML::Node(v.cast<bool>() ? "true" : "false");
-  if (py::isinstance<py::str>(v)) return YAML::Node(v.cast<std::string>());
+  if (py::isinstance<py::str>(v)) return YAML::Node(utf8(v, path));
   if (py::isinstance<py::int_>(v)) return YAML::Node(py::str(v).cast<std::string>());
   if (py::isinstance<py::float_>(v)) {
     char buf[40];
@@ -53,7 +79,7 @@ YAML::Node tree(const py::handle& v, const std::string& path, int depth) {
       if (!py::isinstance<py::str>(kv.first))
         throw InputError(joinKey(path, py::repr(kv.first).cast<std::string>()) +
                          ": a key must be a string");
-      const std::string key = kv.first.cast<std::string>();
+      const std::string key = utf8(kv.first, joinKey(path, "<key>"));
       n[key] = tree(kv.second, joinKey(path, key), depth + 1);
     }
     return n;
@@ -74,25 +100,25 @@ YAML::Node tree(const py::handle& v, const std::string& path, int depth) {
 sim::Scenario toScenario(const py::handle& v) {
   if (py::isinstance<sim::Scenario>(v)) return v.cast<sim::Scenario>();
   if (py::isinstance<py::dict>(v)) {
-    ConfigFile file = ConfigFile::fromNode(yamlTree(v), "<scenario dict>");
+    ConfigFile file = ConfigFile::fromNode(yamlTree(v, "<scenario dict>"), "<scenario dict>");
     return sim::parseScenario(file, ".");
   }
   if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"))
-    return sim::loadScenario(py::str(v).cast<std::string>());
+    return sim::loadScenario(pathBytes(v));
   throw InputError("a scenario is a file path, a dict or a sinsim.Scenario");
 }
 
 Model toModel(const py::handle& v) {
   if (py::isinstance<Model>(v)) return v.cast<Model>();
   if (py::isinstance<py::dict>(v)) {
-    ConfigFile file = ConfigFile::fromNode(yamlTree(v), "<model dict>");
+    ConfigFile file = ConfigFile::fromNode(yamlTree(v, "<model dict>"), "<model dict>");
     errormodels::ErrorModelSpec spec = errormodels::readErrorModel(file.root());
     file.throwIfErrors();
     spec.source = "<model dict>";
     return {spec, "dict"};
   }
   if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__")) {
-    const std::string path = py::str(v).cast<std::string>();
+    const std::string path = pathBytes(v);
     if (path == "none") return {errormodels::ErrorModelSpec{}, "none"};
     return {errormodels::loadErrorModel(path), fs::path(path).stem().string()};
   }
@@ -122,7 +148,7 @@ std::vector<double> column(const py::dict& d, const char* key) {
 
 errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptions& options) {
   if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__"))
-    return errormodels::loadRecord(py::str(v).cast<std::string>(), options);
+    return errormodels::loadRecord(pathBytes(v), options);
   if (!py::isinstance<py::dict>(v))
     throw InputError("a record is a file path or a dict of arrays (gx..az, rate or t)");
   const py::dict d = py::reinterpret_borrow<py::dict>(v);

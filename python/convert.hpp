@@ -29,8 +29,9 @@ struct Model {
 
 /// A dict / list / scalar as a YAML tree for the one reader of a format (ConfigFile::fromNode):
 /// str as written ("0.2 deg/sqrt(h)"), bool as true/false, numbers with 17 significant digits,
-/// None as null, lists, tuples and 1-D arrays as sequences. `path` names the key in messages.
-YAML::Node yamlTree(const py::handle& value, const std::string& path = "");
+/// None as null, lists, tuples and 1-D arrays as sequences. Messages name `source` ("<model
+/// dict>") and the key's path below it (`path` at the top).
+YAML::Node yamlTree(const py::handle& value, const std::string& source, const std::string& path = "");
 
 /// A scenario from a file path, a dict (the file's layout) or a Scenario object.
 sim::Scenario toScenario(const py::handle& value);

@@ -255,3 +255,20 @@ def test_a_negative_or_bool_count_or_seed_is_refused_by_name(tmp_path):
     # The largest seed is a seed.
     rec = sinsim.synth(WHITE_GYRO, rate=100, duration="1 s", path=str(tmp_path / "r.csv"), seed=2**64 - 1)
     assert rec["gx"].shape == (100,)
+
+
+def test_text_that_is_not_utf8_is_named_and_a_file_name_that_is_not_is_read(tmp_path, source_dir):
+    # A str holding a lone surrogate (bytes decoded with surrogateescape) was a RuntimeError
+    # "Unable to cast Python instance to C++ type" naming nothing, in a dict and as a path.
+    with pytest.raises(sinsim.InputError, match=r"^<model dict>: gyro\.x\[0\]\.type: .* is not UTF-8 text"):
+        sinsim.Model({"gyro": {"x": [{"type": "whi\udcffte", "density": "1 deg/sqrt(h)"}]}})
+    with pytest.raises(sinsim.InputError, match=r"^<scenario dict>: name: .* is not UTF-8 text"):
+        sinsim.run(dict(static_scenario(1), name="s\udcff"), model="none")
+    # A file whose name is the byte 0xff (os.listdir gives '\udcff'), read by its name as listed.
+    raw = os.path.join(os.fsencode(tmp_path), b"s\xff.yaml")
+    with open(os.path.join(source_dir, "scenarios", "static.yaml"), "rb") as src, open(raw, "wb") as dst:
+        dst.write(src.read())
+    (listed,) = [f for f in os.listdir(tmp_path) if f.endswith(".yaml")]
+    assert listed == "s\udcff.yaml"
+    r = sinsim.run(os.path.join(str(tmp_path), listed), model="none")
+    assert r["summary"]["final_horizontal"] < 1e-3  # at rest with a perfect IMU (closed form: 0)
