@@ -53,9 +53,12 @@ void buildList(const ErrorModelSpec& spec, const std::string& source, Sensor sen
     if (found.empty()) effect = buildEffect(e, site, found);
     for (const auto& [key, message] : found.items) {
       const ParamSpec* p = e.find(key.substr(0, key.find('[')));
+      // A value set in code after its effect was read (Model.with_param) is in no line of the file:
+      // the file's line of the effect quoted a value it does not hold.
+      const bool setInCode = p && p->where.line == 0 && e.where.line > 0;
       const SourceLocation& at = p && p->where.line > 0 ? p->where : e.where;
-      problems.push_back({e.where.file.empty() ? source : e.where.file, at.line,
-                          key.empty() ? path : path + "." + key, message});
+      problems.push_back({setInCode ? e.where.file + " (edited)" : e.where.file.empty() ? source : e.where.file,
+                          setInCode ? 0 : at.line, key.empty() ? path : path + "." + key, message});
     }
     if (!effect || !e.enabled) continue;
     if (list == EffectList::all) {

@@ -352,10 +352,16 @@ TEST_CASE("spec: problems name file, line and key, from the reader and from from
       "gyro:\n  x:\n    - {type: ar, a: [-0.5], sigma: 1 deg/s, rate: 1 kHz}\n", "m.yaml");
   CHECK(s.gyro.x[0].find("a")->where.line == 3);
   CHECK(s.gyro.x[0].find("a")->where.key == "gyro.x[0].a");
-  // An edit that makes the AR unstable is refused by fromSpec at the file's line and key.
+  // An edit that makes the AR unstable is refused by fromSpec at the key, in the file named as
+  // edited: line 3 holds the old value, not the one refused.
   auto bad = withParameter(s, {Sensor::gyro, EffectList::x, 0}, ParamSpec::numbers("a", {-1.0}));
   const std::string msg = messageOf([&] { ImuErrorModel::fromSpec(bad, "m.yaml"); });
-  CHECK(msg.find("m.yaml:3: gyro.x[0].a: unstable AR polynomial") != std::string::npos);
+  CHECK(msg.find("m.yaml (edited): gyro.x[0].a: unstable AR polynomial") != std::string::npos);
+  CHECK(msg.find("m.yaml:3") == std::string::npos);
+  // A value the file holds is still refused at its line (the effect built in code from it).
+  auto sameFile = errorModelFromString("gyro:\n  x:\n    - {type: ar, a: [-0.5], sigma: 1 deg/s, rate: 1 kHz}\n", "m.yaml");
+  sameFile.gyro.x[0].find("sigma")->values = {-1.0};  // a value changed without withParameter keeps its line
+  CHECK(messageOf([&] { ImuErrorModel::fromSpec(sameFile, "m.yaml"); }).find("m.yaml:3: gyro.x[0].sigma") != std::string::npos);
   // The reader reports every problem at once: the value refused by its bound, with its text.
   const std::string msg2 = messageOf([&] { errorModelFromString(text, "two.yaml"); });
   CHECK(msg2.find("two.yaml:4: gyro.x[1].sigma: must be positive, got \"-1 deg/s\"") !=

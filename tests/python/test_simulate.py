@@ -181,7 +181,9 @@ def test_an_edited_model_file_says_it_is_edited_and_quotes_the_new_value(tmp_pat
     # A refusal quoted the file's old value ('must be positive, got "0.05 deg/sqrt(h)"'), and a
     # run of an edited file's model reported the file itself.
     m = sinsim.Model(os.path.join(source_dir, "scenarios", "grade-tactical.yaml"))
-    with pytest.raises(sinsim.ConfigError, match=r'density: must be positive, got "-1 rad/s\^\(1/2\)"'):
+    # ... at the effect's line of the file, which does not hold the new value: named as edited.
+    with pytest.raises(sinsim.ConfigError,
+                       match=r'grade-tactical\.yaml \(edited\): gyro\.all\[2\]\.density: must be positive, got "-1 rad/s\^\(1/2\)"'):
         m.with_param("gyro", "all", 2, "density", -1.0)
     with pytest.raises(sinsim.ConfigError, match=r'must be positive, got "-1\.45'):
         m.scaled("gyro", "all", 2, "density", -1)
