@@ -93,7 +93,7 @@ std::string verdict(const dg::AxisDiagnosis& a) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "missing: " : ", ") + f.effect;
-  if (a.unexplained || !a.unexplainedSteps.empty()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
+  if (a.leftUnexplained()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
   return s.empty() ? "misfit, no catalogue effect explains it" : s;
 }
 

@@ -194,6 +194,7 @@ def diagnose(sinsim, row, opts, add=None):
                              "second_score": second_score(a["findings"]),
                              "fits": a["fits"],
                              "unexplained": a.get("unexplained") or a.get("unexplained_steps"),
+                             "noise_level": bool(a.get("noise_level_change")),
                              "best_score": max([f["score"] for f in a["findings"]] + [0.0]),
                              "best_effect": max(a["findings"], key=lambda f: f["score"])["effect"]
                              if a["findings"] else None}
@@ -214,7 +215,7 @@ def second_score(findings):
 def score(rows):
     """Counts [hits, total] of every score of the issue (docs/diagnose.md, "Challenge benchmark")."""
     sc = {"top1": defaultdict(lambda: [0, 0]), "by_effect": defaultdict(lambda: [0, 0]),
-          "both": [0, 0], "extra": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "ooc": [0, 0], "ooc_halved": [0, 0], "both_ooc": [0, 0],
+          "both": [0, 0], "extra": [0, 0], "clean": [0, 0], "clean_unexplained": [0, 0], "clean_noise_level": [0, 0], "hidden_noise_level": Counter(), "ooc": [0, 0], "ooc_halved": [0, 0], "both_ooc": [0, 0],
           "both_visible": [0, 0], "halved": [0, 0], "ratios": [], "confusion": defaultdict(Counter), "null_scores": [],
           "second_scores": []}
     for r in rows:
@@ -228,11 +229,15 @@ def score(rows):
                 sc["clean"][0] += bool(c["findings"])
                 sc["clean_unexplained"][1] += 1
                 sc["clean_unexplained"][0] += bool(c.get("unexplained")) and not c["findings"]
+                sc["clean_noise_level"][1] += 1
+                sc["clean_noise_level"][0] += bool(c.get("noise_level"))
                 sc["null_scores"].append(c.get("best_score", 0.0))
                 sc["confusion"]["(clean)"][named] += 1
                 continue
             hid = [h["effect"] for h in r["hidden"]]
             gm = gen_module(r)
+            if c.get("noise_level"):
+                sc["hidden_noise_level"]["+".join(sorted(hid))] += 1
             if len(hid) == 1:
                 h = r["hidden"][0]
                 sc["confusion"][h["effect"]][named] += 1
@@ -309,6 +314,10 @@ def report(rows):
         print("  second-round score there, at or above 3.5 / 4.0 / 4.5 / 5.5: "
               + " / ".join(f"{sum(x >= t for x in ss)}" for t in (3.5, 4.0, 4.5, 5.5)) + f" of {len(ss)}")
     print(f"clean channels 'unexplained' (no finding):      {pct(*sc['clean_unexplained'])}")
+    print(f"clean channels with a noise level change:       {pct(*sc['clean_noise_level'])}")
+    if sc["hidden_noise_level"]:
+        print("  hidden effects under a noise level change: " +
+              ", ".join(f"{k} {v}" for k, v in sc["hidden_noise_level"].most_common()))
     print(f"out-of-catalogue named as equivalent/unexplained: {pct(*sc['ooc'])}")
     if sc["ooc_halved"][1]:
         print(f"  ... misfit at least halved by adding the equivalent named: {pct(*sc['ooc_halved'])}")

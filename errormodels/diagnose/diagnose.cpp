@@ -15,6 +15,7 @@
 #include "errormodels/diagnose/detector.hpp"
 #include "errormodels/diagnose/model_edit.hpp"
 #include "errormodels/diagnose/montecarlo.hpp"
+#include "errormodels/diagnose/noise_level.hpp"
 #include "common/parallel.hpp"
 #include "errormodels/diagnose/run.hpp"
 #include "errormodels/diagnose/selection.hpp"
@@ -55,7 +56,7 @@ AddRequest AddRequest::parse(const std::string& text) {
 }
 
 bool AxisDiagnosis::fits() const {
-  if (!unexplainedSteps.empty()) return false;
+  if (!unexplainedSteps.empty() || noiseLevelChange) return false;
   for (const auto& f : findings)
     if (f.reported) return false;
   // and the Allan chi-square below its 0.999 quantile
@@ -114,6 +115,9 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
+  std::vector<double> spreads;
+  for (const auto& r : real) spreads.push_back(r.levelSpread);
+  d.noiseLevelChange = noiseLevelChange(y, setup.rate, spreads);
   for (const auto& r : real) w.trendVar += r.trend * r.trend / double(real.size());
   w.trendDof = double(real.size());
   w.lowFreq = setup.lowFreq;

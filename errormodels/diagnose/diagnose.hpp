@@ -106,6 +106,16 @@ struct LevelStep {
   double size = 0;  ///< [SI] new level minus the old
 };
 
+/// The shortest scale's noise level changing over the record (noise_level.hpp): the record's
+/// blocks' level (mean |first difference|) over their median, lowest and highest, the block that
+/// departs most and its level, and the largest departure any realisation of the model shows.
+struct NoiseLevelChange {
+  double lo = 1, hi = 1;     ///< block level / median block level
+  double from = 0, to = 0;   ///< [s] the block that departs most
+  double worst = 1;          ///< its level / the median
+  double modelMost = 1;      ///< the realisations' largest departure, as a factor (>= 1)
+};
+
 struct Finding {
   std::string effect;    ///< catalogue type, e.g. "random_walk"
   std::string evidence;  ///< why, in words with numbers
@@ -165,7 +175,12 @@ struct AxisDiagnosis {
   /// Level steps that go back and forth, explained instead by a reported switching process (a
   /// Gauss-Markov: a telegraph's autocorrelation is its) as that process' realisation.
   std::vector<LevelStep> switchingSteps;
+  /// The noise at the shortest scale changes its level over the record beyond what the model's
+  /// realisations show: unexplained too (no effect of the catalogue does that).
+  std::optional<NoiseLevelChange> noiseLevelChange;
   bool fits() const;  ///< no reported finding and chi2 below its 0.999 quantile
+  /// A tau range, level steps or a changing noise level that no finding explains.
+  bool leftUnexplained() const { return unexplained || !unexplainedSteps.empty() || noiseLevelChange; }
 };
 
 struct Diagnosis {

@@ -59,6 +59,9 @@ nlohmann::json axisJson(const AxisDiagnosis& a) {
   if (a.unexplained) j["unexplained"] = failJson(*a.unexplained);  // absent: nothing unexplained
   for (const auto& st : a.unexplainedSteps)  // absent: no level step left
     j["unexplained_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
+  if (const auto& c = a.noiseLevelChange)  // absent: the noise keeps its level
+    j["noise_level_change"] = {{"lo", c->lo}, {"hi", c->hi}, {"worst", c->worst}, {"from_s", c->from},
+                               {"to_s", c->to}, {"model_most", c->modelMost}};
   for (const auto& st : a.switchingSteps)  // absent: none a switching process explains
     j["switching_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
   if (a.ljungBox)

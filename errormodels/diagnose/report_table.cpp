@@ -5,6 +5,7 @@
 
 #include "errormodels/diagnose/channels.hpp"
 #include "errormodels/diagnose/diagnose.hpp"
+#include "errormodels/diagnose/noise_level.hpp"
 
 namespace sinsim::errormodels::diagnose {
 
@@ -34,7 +35,7 @@ std::string findingsText(const AxisDiagnosis& a) {
   std::string s;
   for (const auto& f : a.findings)
     if (f.reported) s += (s.empty() ? "" : ", ") + f.effect + " (" + num(f.score, 3) + ")";
-  if (a.unexplained || !a.unexplainedSteps.empty()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
+  if (a.leftUnexplained()) s += std::string(s.empty() ? "" : ", ") + "unexplained";
   if (s.empty()) s = a.fits() ? "fits" : "no effect above threshold";
   return s;
 }
@@ -94,6 +95,17 @@ std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a) {
   if (!a.unexplainedSteps.empty())
     out.push_back(stepsText(a, a.unexplainedSteps) +
                   "; no reported finding takes it out (bias_jumps: below the threshold)");
+  if (const auto& c = a.noiseLevelChange) {
+    std::ostringstream o;
+    o << "the noise level changes over the record: the shortest scale's level (mean |first difference|) "
+         "in "
+      << detail::kNoiseLevelBlocks << " blocks spans x" << num(c->lo, 3) << "..x" << num(c->hi, 3)
+      << " of their median, x" << num(c->worst, 3) << " at " << num(c->from, 4) << ".." << num(c->to, 4)
+      << " s, where the model's realisations depart at most x" << num(c->modelMost, 3)
+      << "; no effect of the catalogue changes with time (a vibration that comes and goes, a noise "
+         "that follows temperature): the findings are sized as if it did not";
+    out.push_back(o.str());
+  }
   return out;
 }
 

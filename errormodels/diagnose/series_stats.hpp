@@ -31,6 +31,8 @@ struct SeriesStats {
   /// AVAR per factor of the same series rounded onto the record's value lattice (Lattice), empty
   /// off a lattice: what rounding makes of this model's noise, for the quantization candidate.
   std::vector<double> roundedAvar;
+  /// The largest departure of the shortest scale's noise level over the series (noise_level.hpp).
+  double levelSpread = 0;
 };
 /// Half-octave grid m = round(2^(j/2)) up to maxM: twice the points of the octave grid, so that
 /// "the fraction of tau outside a 95 % band" is not decided by one or two points.

@@ -1,0 +1,64 @@
+// The noise level over the record (noise_level.hpp).
+#include "errormodels/diagnose/noise_level.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinsim::errormodels::diagnose::detail {
+
+namespace {
+
+double median(std::vector<double> v) {
+  auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+}  // namespace
+
+NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y) {
+  NoiseLevelBlocks out;
+  if (y.size() < 64 * kNoiseLevelBlocks + 1) return out;
+  std::vector<double> d(y.size() - 1);
+  for (std::size_t k = 1; k < y.size(); ++k) d[k - 1] = std::abs(y[k] - y[k - 1]);
+  const double cap = 8.0 * median(d);
+  // On a lattice coarser than the noise most differences are 0: the mean |difference| still
+  // counts the flips; a series whose median difference is 0 keeps its largest ones uncapped.
+  const double limit = cap > 0 ? cap : INFINITY;
+  const std::size_t per = d.size() / kNoiseLevelBlocks;
+  for (std::size_t b = 0; b < kNoiseLevelBlocks; ++b) {
+    double s = 0;
+    for (std::size_t k = b * per; k < (b + 1) * per; ++k) s += std::min(d[k], limit);
+    out.level.push_back(s / double(per));
+  }
+  const double m = median(out.level);
+  if (!(m > 0)) return {};
+  for (double& l : out.level) {
+    l /= m;
+    out.spread = std::max(out.spread, l > 0 ? std::abs(std::log(l)) : INFINITY);
+  }
+  return out;
+}
+
+std::optional<NoiseLevelChange> noiseLevelChange(const std::vector<double>& y, double rate,
+                                                 const std::vector<double>& modelSpreads) {
+  const NoiseLevelBlocks rec = noiseLevelBlocks(y);
+  if (rec.level.empty() || modelSpreads.empty()) return std::nullopt;
+  const double most = *std::max_element(modelSpreads.begin(), modelSpreads.end());
+  if (!(rec.spread > most && rec.spread > 2.0 * median(modelSpreads) && rec.spread > std::log(1.25)))
+    return std::nullopt;
+  NoiseLevelChange c;
+  c.lo = *std::min_element(rec.level.begin(), rec.level.end());
+  c.hi = *std::max_element(rec.level.begin(), rec.level.end());
+  std::size_t worst = 0;
+  for (std::size_t b = 0; b < rec.level.size(); ++b)
+    if (std::abs(std::log(rec.level[b])) > std::abs(std::log(rec.level[worst]))) worst = b;
+  const double per = double((y.size() - 1) / kNoiseLevelBlocks) / rate;
+  c.from = double(worst) * per;
+  c.to = double(worst + 1) * per;
+  c.worst = rec.level[worst];
+  c.modelMost = std::exp(most);
+  return c;
+}
+
+}  // namespace sinsim::errormodels::diagnose::detail
