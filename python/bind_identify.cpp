@@ -169,6 +169,7 @@ py::dict diagnose(const py::object& record, const py::object& model,
     ax["fraction_outside"] = a.fractionOutside;
     ax["findings"] = findings;
     ax["fails"] = fails;
+    ax["unexplained"] = dg::unexplainedSentences(a);  // as the CLI's "gx unexplained: ..." lines
     ax["adev"] = py::dict(py::arg("tau") = array(a.adev.x), py::arg("meas") = array(a.adev.meas),
                           py::arg("model") = array(a.adev.model), py::arg("lo") = array(a.adev.lo),
                           py::arg("hi") = array(a.adev.hi));

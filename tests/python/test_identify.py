@@ -112,6 +112,18 @@ def test_diagnose_finds_nothing_missing_in_the_true_model(record):
     # The record was drawn from this very model: no effect can be missing at the calibrated
     # reporting threshold (5.5, docs/diagnose.md).
     assert [f["effect"] for f in d["gx"]["findings"] if f["reported"]] == []
+    assert d["gx"]["unexplained"] == []
+
+
+def test_diagnose_says_what_stays_unexplained(record):
+    # The same record with its noise tripled for the middle fifth: no stationary effect is that,
+    # and the channel's unexplained sentences say the level changes (the CLI's line).
+    rec, _ = record
+    burst = dict(rate=rec["rate"], gx=np.array(rec["gx"]))
+    burst["gx"][80000:120000] *= 3.0
+    d = sinsim.diagnose(burst, sinsim.Model(TRUE_MODEL), channels=["gx"], realisations=8, seed=3)
+    assert d["gx"]["fits"] is False
+    assert any("the noise level changes over the record" in u for u in d["gx"]["unexplained"])
 
 
 def test_diagnose_refuses_a_nan_next_threshold(record):
