@@ -115,9 +115,6 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
   compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
-  std::vector<double> spreads;
-  for (const auto& r : real) spreads.push_back(r.levelSpread);
-  d.noiseLevelChange = noiseLevelChange(y, setup.rate, spreads);
   for (const auto& r : real) w.trendVar += r.trend * r.trend / double(real.size());
   w.trendDof = double(real.size());
   w.lowFreq = setup.lowFreq;
@@ -147,6 +144,14 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   for (std::size_t k = 1; k < y.size(); ++k) dd += (y[k] - y[k - 1]) * (y[k] - y[k - 1]);
   const double noiseSd = std::sqrt(dd / double(std::max<std::size_t>(y.size() - 1, 1)) / 2.0);
   w.lattice = lattice > 2.0 * noiseSd ? lattice : 0.0;
+  // The noise level over the record, where rounding does not set it: on a lattice coarser than
+  // the noise how often the value flips follows where the level sits in its cell (a drift of a
+  // fraction of an LSB took the flips x0.64..x2.1 on the alt generator's quantized channels).
+  if (w.lattice == 0.0) {
+    std::vector<double> spreads;
+    for (const auto& r : real) spreads.push_back(r.levelSpread);
+    d.noiseLevelChange = noiseLevelChange(y, setup.rate, spreads);
+  }
   // What rounding onto the record's lattice adds to this model's AVAR: the realisations rounded
   // less the same realisations as they are (paired, so the difference has little scatter).
   std::vector<double> rounding;
