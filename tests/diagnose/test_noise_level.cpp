@@ -116,3 +116,24 @@ TEST_CASE("noise level: diagnose reports a noise that changes with time as unexp
     }));
   }
 }
+
+// White noise of sd 0.3 LSB rounded onto its lattice while its level drifts by one LSB: the
+// values flip between neighbours often where the level sits near a cell's edge and seldom at its
+// middle, so the blocks' mean |difference| swings (the statistic alone sees a "change"); the
+// diagnosis does not judge the noise level on a lattice coarser than the noise.
+TEST_CASE("noise level: a coarse lattice's flip rate is not judged", "[diagnose][noise_level]") {
+  const auto model = sinsim::errormodels::errorModelFromString(
+      "gyro:\n  x: [{type: white, density: 0.5 deg/sqrt(h)}]\n", "white.yaml");
+  auto r = dg::simulateRecord(model, 100.0, 60000, 51, 0, {0, 0, 0, 0, 0, 0});
+  const double sd = 0.5 * M_PI / 180.0 / 60.0 * std::sqrt(100.0);  // the density at 100 Hz [rad/s]
+  const double q = sd / 0.3;
+  for (std::size_t k = 0; k < r.gyro[0].size(); ++k) {
+    const double level = q * double(k) / double(r.gyro[0].size());
+    r.gyro[0][k] = q * std::nearbyint((r.gyro[0][k] + level) / q);
+  }
+  REQUIRE(noiseLevelBlocks(r.gyro[0]).spread > std::log(1.25));
+  dg::DiagnoseOptions o;
+  o.channels = {"gx"};
+  o.realisations = 16;
+  CHECK_FALSE(dg::diagnose(r, model, o).axis("gx").noiseLevelChange.has_value());
+}
