@@ -1,20 +1,11 @@
 // The noise level over the record (noise_level.hpp).
 #include "errormodels/diagnose/noise_level.hpp"
+#include "errormodels/diagnose/series_tools.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace sinsim::errormodels::diagnose::detail {
-
-namespace {
-
-double median(std::vector<double> v) {
-  auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
-
-}  // namespace
 
 NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y) {
   NoiseLevelBlocks out;
