@@ -114,7 +114,8 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   d.channel = kChannels[c];
   d.unit = unitsFor(c).level;
   d.unitFactor = parseUnit(d.unit).si;
-  compareChannel(seriesStats(y, setup), real, setup, o.bandLevel, d, w.prob);
+  const SeriesStats measured = seriesStats(y, setup);
+  compareChannel(measured, real, setup, o.bandLevel, d, w.prob);
   for (const auto& r : real) w.trendVar += r.trend * r.trend / double(real.size());
   w.trendDof = double(real.size());
   w.lowFreq = setup.lowFreq;
@@ -149,8 +150,8 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   // fraction of an LSB took the flips x0.64..x2.1 on the alt generator's quantized channels).
   if (w.lattice == 0.0) {
     std::vector<double> spreads;
-    for (const auto& r : real) spreads.push_back(r.levelSpread);
-    d.noiseLevelChange = noiseLevelChange(y, setup.rate, spreads);
+    for (const auto& r : real) spreads.push_back(r.levelBlocks.spread);
+    d.noiseLevelChange = noiseLevelChange(measured.levelBlocks, y.size(), setup.rate, spreads);
   }
   // What rounding onto the record's lattice adds to this model's AVAR: the realisations rounded
   // less the same realisations as they are (paired, so the difference has little scatter).

@@ -31,9 +31,8 @@ NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y) {
   return out;
 }
 
-std::optional<NoiseLevelChange> noiseLevelChange(const std::vector<double>& y, double rate,
+std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, std::size_t n, double rate,
                                                  const std::vector<double>& modelSpreads) {
-  const NoiseLevelBlocks rec = noiseLevelBlocks(y);
   if (rec.level.empty() || modelSpreads.empty()) return std::nullopt;
   const double most = *std::max_element(modelSpreads.begin(), modelSpreads.end());
   if (!(rec.spread > most && rec.spread > 2.0 * median(modelSpreads) && rec.spread > std::log(1.25)))
@@ -44,7 +43,7 @@ std::optional<NoiseLevelChange> noiseLevelChange(const std::vector<double>& y, d
   std::size_t worst = 0;
   for (std::size_t b = 0; b < rec.level.size(); ++b)
     if (std::abs(std::log(rec.level[b])) > std::abs(std::log(rec.level[worst]))) worst = b;
-  const double per = double((y.size() - 1) / kNoiseLevelBlocks) / rate;
+  const double per = double((n - 1) / kNoiseLevelBlocks) / rate;
   c.from = double(worst) * per;
   c.to = double(worst + 1) * per;
   c.worst = rec.level[worst];

@@ -23,10 +23,10 @@ struct NoiseLevelBlocks {
 inline constexpr std::size_t kNoiseLevelBlocks = 16;
 NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y);
 
-/// The record's blocks against the realisations' spreads: a change when the record's spread
-/// exceeds every realisation's, twice their median, and a 25 % level change (ln 1.25); y at rate
-/// [Hz] gives the times of the block that departs most.
-std::optional<NoiseLevelChange> noiseLevelChange(const std::vector<double>& y, double rate,
+/// The record's blocks (noiseLevelBlocks of its n samples) against the realisations' spreads: a
+/// change when the record's spread exceeds every realisation's, twice their median, and a 25 %
+/// level change (ln 1.25); n at rate [Hz] gives the times of the block that departs most.
+std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& record, std::size_t n, double rate,
                                                  const std::vector<double>& modelSpreads);
 
 }  // namespace sinsim::errormodels::diagnose::detail

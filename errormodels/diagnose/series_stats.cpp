@@ -1,6 +1,5 @@
 // AVAR, banded PSD and ACF of one series on the grids of the comparison (series_stats.hpp).
 #include "errormodels/diagnose/series_stats.hpp"
-#include "errormodels/diagnose/noise_level.hpp"
 #include "errormodels/stats/spectral_lines.hpp"
 
 #include <algorithm>
@@ -115,7 +114,7 @@ SeriesStats seriesStats(const std::vector<double>& y, const Setup& s) {
   out.acf = acfFromWelch(p.psd, s);
   out.trend = trendSlope(y, 1.0 / s.rate);
   out.lowFreq = lowFrequencyCoefficients(y, s.lowFreq);
-  out.levelSpread = noiseLevelBlocks(y).spread;
+  out.levelBlocks = noiseLevelBlocks(y);
   return out;
 }
 

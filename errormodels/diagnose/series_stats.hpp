@@ -8,6 +8,7 @@
 
 #include "errormodels/diagnose/diagnose.hpp"
 #include "errormodels/diagnose/low_frequency.hpp"
+#include "errormodels/diagnose/noise_level.hpp"
 
 namespace sinsim::errormodels::diagnose::detail {
 
@@ -31,8 +32,9 @@ struct SeriesStats {
   /// AVAR per factor of the same series rounded onto the record's value lattice (Lattice), empty
   /// off a lattice: what rounding makes of this model's noise, for the quantization candidate.
   std::vector<double> roundedAvar;
-  /// The largest departure of the shortest scale's noise level over the series (noise_level.hpp).
-  double levelSpread = 0;
+  /// The shortest scale's noise level in blocks of the series and its largest departure
+  /// (noise_level.hpp).
+  NoiseLevelBlocks levelBlocks;
 };
 /// Half-octave grid m = round(2^(j/2)) up to maxM: twice the points of the octave grid, so that
 /// "the fraction of tau outside a 95 % band" is not decided by one or two points.

@@ -324,11 +324,17 @@ inline Field readField(const char* p, const char* end, const Separator& sep) {
 
 /// readField for a column that must hold a number: throws with line/column context (and a hint
 /// for a field of another separator, a decimal comma or a clock time) when it does not.
-inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
-                              const Separator& sep, const std::string& source, std::size_t line) {
-  const Field f = readField(p, end, sep);
+inline Field numberField(const char* p, const char* end, const Column& col, const Separator& sep,
+                         const std::string& source, std::size_t line) {
+  Field f = readField(p, end, sep);
   if (!f.ok())
     fail(source, line, f.why(col) + (f.problem == Field::Problem::NotNumber ? fieldHint(f.text, sep) : ""));
+  return f;
+}
+
+inline const char* parseField(const char* p, const char* end, double& value, const Column& col,
+                              const Separator& sep, const std::string& source, std::size_t line) {
+  const Field f = numberField(p, end, col, sep, source, line);
   value = f.value;
   return f.after;
 }
@@ -582,13 +588,12 @@ class RowReader {
   /// A time stamp, kept less the first one in the column's unit, read with a 64-bit mantissa: Unix
   /// time in ns (1.7e18) is exact, and its steps keep every digit as doubles.
   const char* timeField(const char* q, const char* eol, std::size_t c, std::size_t number) {
-    double v;
-    const char* after = parseField(q, eol, v, cols_[c], sep_, source_, number);
-    long double exact = v;
-    std::from_chars(readField(q, eol, sep_).number, eol, exact);
+    const Field f = numberField(q, eol, cols_[c], sep_, source_, number);
+    long double exact = f.value;
+    std::from_chars(f.number, eol, exact);
     if (!tOrigin_) tOrigin_ = exact;
     push(c, static_cast<double>(exact - *tOrigin_), number);
-    return after;
+    return f.after;
   }
 
   /// Appends v to column c. A record within the value limit may still not fit in the memory the

@@ -57,14 +57,14 @@ TEST_CASE("noise level: a burst of doubled noise is found at its level and place
   }
   CHECK(b.spread == Approx(std::log(2.0)).epsilon(0.1));
   // Through noiseLevelChange: the block that departs most is 6 or 7, at 100 Hz 120..140 or 140..160 s.
-  const auto c = dg::detail::noiseLevelChange(y, 100.0, std::vector<double>(16, 0.04));
+  const auto c = dg::detail::noiseLevelChange(b, y.size(), 100.0, std::vector<double>(16, 0.04));
   REQUIRE(c.has_value());
   CHECK(c->hi == Approx(2.0).epsilon(0.08));
   CHECK(c->lo == Approx(1.0).epsilon(0.08));
   CHECK((c->from == Approx(120.0) || c->from == Approx(140.0)));
   CHECK(c->to - c->from == Approx(20.0));
   // Realisations that depart as much as the record: no change reported.
-  CHECK_FALSE(dg::detail::noiseLevelChange(y, 100.0, std::vector<double>(16, 0.8)).has_value());
+  CHECK_FALSE(dg::detail::noiseLevelChange(b, y.size(), 100.0, std::vector<double>(16, 0.8)).has_value());
 }
 
 // Spikes of 100 sd on 20 samples, and a level step of 50 sd: capped at 8x the median |difference|
