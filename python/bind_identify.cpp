@@ -38,7 +38,7 @@ em::RecordOptions recordOptions(const std::optional<std::string>& gyroUnit,
 void warnAll(const std::string& command, const std::vector<std::string>& warnings) {
   if (warnings.empty()) return;
   const py::object warn = py::module_::import("warnings").attr("warn");
-  for (const std::string& w : warnings) warn(command + ": " + w);
+  for (const std::string& w : warnings) warn(strOf(command + ": " + w));
 }
 
 py::dict channelDict(const sim::ChannelStats& c) {
@@ -55,8 +55,8 @@ py::dict channelDict(const sim::ChannelStats& c) {
 }
 
 py::dict analyze(const py::object& record, double maxLag, const py::int_& segment,
-                 const std::string& tau, double confidence, bool denoise, const std::string& json,
-                 const std::string& html, const std::optional<std::string>& gyroUnit,
+                 const std::string& tau, double confidence, bool denoise, const py::object& jsonArg,
+                 const py::object& htmlArg, const std::optional<std::string>& gyroUnit,
                  const std::optional<std::string>& accelUnit, const py::object& rate) {
   const InputFilesScope inputs;  // the outputs never replace the record (the CLI's rule)
   const InterruptScope interrupt;  // Ctrl-C stops the work (python/interrupt.hpp)
@@ -68,6 +68,7 @@ py::dict analyze(const py::object& record, double maxLag, const py::int_& segmen
   opt.tauPerDecade = tau == "decade";
   opt.confidence = confidence;
   opt.denoise = denoise;
+  const std::string json = pathArg(jsonArg), html = pathArg(htmlArg);
   requireWritableTargets({json, html});  // before the work, as `sinsim analyze`
   const em::Record rec = toRecord(record, recordOptions(gyroUnit, accelUnit, rate, false));
   std::vector<sim::ChannelStats> stats;
@@ -183,17 +184,17 @@ py::dict diagnose(const py::object& record, const py::object& model,
 void bindIdentify(py::module_& mod) {
   mod.def(
       "load_record",
-      [](const std::string& path, const std::optional<std::string>& gyroUnit,
+      [](const py::object& path, const std::optional<std::string>& gyroUnit,
          const std::optional<std::string>& accelUnit, const py::object& rate,
          bool allowIrregular) {
-        return recordDict(em::loadRecord(path, recordOptions(gyroUnit, accelUnit, rate, allowIrregular)));
+        return recordDict(em::loadRecord(pathArg(path), recordOptions(gyroUnit, accelUnit, rate, allowIrregular)));
       },
       py::arg("path"), py::arg("gyro_unit") = py::none(), py::arg("accel_unit") = py::none(),
       py::arg("rate") = py::none(), py::arg("allow_irregular_time") = false,
       "reads a record (CSV, .gz) into a dict of SI arrays: rate, t, gx..az, temp");
   mod.def("analyze", &analyze, py::arg("record"), py::arg("max_lag") = 0.0, py::arg("segment") = 0,
           py::arg("tau") = "octave", py::arg("confidence") = 0.683, py::arg("denoise") = false,
-          py::arg("json") = "", py::arg("html") = "", py::arg("gyro_unit") = py::none(),
+          py::arg("json") = py::none(), py::arg("html") = py::none(), py::arg("gyro_unit") = py::none(),
           py::arg("accel_unit") = py::none(), py::arg("rate") = py::none(),
           "sinsim analyze: per channel mean, sd, ACF, Welch PSD, Allan deviation with bounds (SI)");
   mod.def("fit", &fit, py::arg("record"), py::arg("kind") = "auto",

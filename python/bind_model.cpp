@@ -198,9 +198,9 @@ void bindModel(py::module_& mod) {
            },
            py::arg("sensor"), py::arg("list"), py::arg("type"),
            "a copy without the effects of that type in one list")
-      .def("yaml", [](const Model& m) { return em::errorModelYaml(m.spec); },
+      .def("yaml", [](const Model& m) { return strOf(em::errorModelYaml(m.spec)); },
            "the model-file text (the one model writer)")
-      .def("write", [](const Model& m, const std::string& path) { em::writeErrorModel(path, m.spec); },
+      .def("write", [](const Model& m, const py::object& path) { em::writeErrorModel(pathArg(path), m.spec); },
            py::arg("path"), "writes the model file (temporary + rename)")
       .def("__eq__", [](const Model& a, const Model& b) { return a.spec == b.spec; })
       .def("__repr__", &repr);

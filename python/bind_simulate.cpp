@@ -65,8 +65,8 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
   d["horizontal"] = array(hor);
   d["vertical"] = array(ver);
   py::dict sum;
-  sum["scenario"] = s.scenario;
-  sum["model"] = s.model;
+  sum["scenario"] = strOf(s.scenario);
+  sum["model"] = strOf(s.model);
   sum["seed"] = s.seed;
   sum["duration"] = s.duration;
   sum["imu_samples"] = s.imuSamples;
@@ -78,7 +78,7 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
   sum["rms_horizontal"] = s.rmsHorizontal;
   sum["rms_vertical"] = s.rmsVertical;
   sum["wall_time"] = s.wallTime;
-  sum["line"] = sim::summaryLine(s);
+  sum["line"] = strOf(sim::summaryLine(s));
   py::list outages;  // as summary.json's: NaN for a window the filter never ran in
   for (const auto& o : s.outages) {
     py::dict w;
@@ -90,25 +90,25 @@ py::dict runToDict(const sim::RunSummary& s, const std::vector<sim::NavError>& r
     outages.append(w);
   }
   sum["outages"] = outages;
-  sum["warnings"] = py::cast(s.warnings);
+  sum["warnings"] = strs(s.warnings);
   d["summary"] = sum;
-  d["output"] = s.outDir;
+  d["output"] = strOf(s.outDir);
   return d;
 }
 
 py::dict run(const py::object& scenario, const py::object& model, const std::optional<py::int_>& seed,
-             const py::object& biasWindow, const std::string& output, bool imu) {
+             const py::object& biasWindow, const py::object& output, bool imu) {
   const InputFilesScope inputs;  // the outputs never replace a file the call read (the CLI's rule)
   const InterruptScope interrupt;  // Ctrl-C stops the work (python/interrupt.hpp)
   sim::Scenario sc = toScenario(scenario);
   sim::RunOptions opt;
   if (!model.is_none()) {
-    if (py::isinstance<py::str>(model)) opt.model = model.cast<std::string>();  // as --model
+    if (py::isinstance<py::str>(model)) opt.model = pathArg(model);  // as --model
     else sc = withModel(sc, toModel(model));
   }
   if (seed) opt.seed = countArg(*seed, "seed");
   opt.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
-  opt.outDir = output;
+  opt.outDir = pathArg(output);
   opt.writeImu = imu;
   std::vector<sim::NavError> rows;
   opt.onRow = [&rows](const sim::NavError& e) { rows.push_back(e); };
@@ -120,7 +120,7 @@ py::dict run(const py::object& scenario, const py::object& model, const std::opt
   // The run's warnings (a filter's start, no fix used, innovations beyond its model) as Python
   // warnings, as `sinsim run` prints them and `fit`'s are.
   const py::object warn = py::module_::import("warnings").attr("warn");
-  for (const std::string& w : s.warnings) warn("run: " + w);
+  for (const std::string& w : s.warnings) warn(strOf("run: " + w));
   return runToDict(s, rows);
 }
 
@@ -139,7 +139,7 @@ std::vector<sim::McModel> mcModels(const sim::Scenario& sc, const std::string& i
   std::vector<sim::McModel> out;
   for (const auto& item : items) {
     if (py::isinstance<py::str>(item)) {
-      out.push_back(sim::loadMcModels({item.cast<std::string>()}, sc, identity).at(0));
+      out.push_back(sim::loadMcModels({pathArg(item)}, sc, identity).at(0));
     } else {
       const Model m = toModel(item);
       sim::McModel mc = sim::loadMcModels({}, withModel(sc, m), identity).at(0);
@@ -170,7 +170,7 @@ py::dict mcToDict(const sim::Reference& ref, const sim::McResult& r, std::size_t
     const std::size_t perRun = ref.runFloats(), n = epochs * sim::kErrorFields;
     for (std::uint64_t run = 0; run < runs; ++run)  // the errors of each run (not an aided view)
       std::copy_n(r.errors[m].begin() + long(run * perRun), n, a.mutable_data() + run * n);
-    errors[r.labels[m].c_str()] = a;
+    errors[strOf(r.labels[m])] = a;
     py::dict metrics;
     for (int k = 0; k < sim::kMetrics; ++k) {
       std::vector<double> v(runs);
@@ -178,21 +178,21 @@ py::dict mcToDict(const sim::Reference& ref, const sim::McResult& r, std::size_t
         v[run] = sim::metricValue(&r.errors[m][run * perRun + (epochs - 1) * sim::kErrorFields], k);
       metrics[sim::metricName(k)] = array(v);
     }
-    final[r.labels[m].c_str()] = metrics;
+    final[strOf(r.labels[m])] = metrics;
   }
   py::dict head;
   for (const auto& h : sim::mcHeadlines(ref, r, models, {}).models)  // at the last epoch
-    head[h.label.c_str()] = py::dict(py::arg("t") = h.t, py::arg("cep") = h.cep,
+    head[strOf(h.label)] = py::dict(py::arg("t") = h.t, py::arg("cep") = h.cep,
                                      py::arg("r95") = h.r95);
   py::dict d;
-  d["labels"] = r.labels;
+  d["labels"] = strs(r.labels);
   d["t"] = array(t);
   d["fields"] = std::vector<std::string>{"north_m", "east_m", "down_m", "vn_mps", "ve_mps",
                                          "vd_mps", "roll_rad", "pitch_rad", "yaw_rad"};
   d["errors"] = errors;
   d["final"] = final;
   d["headline"] = head;
-  d["files"] = r.files;
+  d["files"] = strs(r.files);
   d["wall_time"] = r.wallTime;
   return d;
 }
@@ -213,11 +213,11 @@ struct ScratchDir {
 
 py::dict mc(const py::object& scenario, const py::object& models, const py::int_& runs,
             const std::optional<py::int_>& seed, const py::int_& threads, const py::object& times,
-            const py::object& biasWindow, bool budget, const std::string& output) {
+            const py::object& biasWindow, bool budget, const py::object& outputArg) {
   const InputFilesScope inputs;
   const sim::Scenario sc = toScenario(scenario);
   const std::string identity = py::isinstance<py::str>(scenario)
-                                   ? slurp(scenario.cast<std::string>())
+                                   ? slurp(pathArg(scenario))
                                    : "python:" + sc.name;
   const std::vector<sim::McModel> list = mcModels(sc, identity, models);
   sim::McOptions opt;
@@ -236,6 +236,7 @@ py::dict mc(const py::object& scenario, const py::object& models, const py::int_
   opt.budget = budget;
   opt.navigate.biasWindow = quantityArg(biasWindow, Dimension::time(), "bias_window");
   opt.scenarioIdentity = identity;
+  const std::string output = pathArg(outputArg);
   std::optional<ScratchDir> scratch;
   if (output.empty()) scratch.emplace();
   opt.outDir = output.empty() ? scratch->path : output;
@@ -258,22 +259,23 @@ py::dict mc(const py::object& scenario, const py::object& models, const py::int_
   if (interrupted.load()) throw py::error_already_set();  // the KeyboardInterrupt
   if (!r.complete) throw Error("mc: the batch did not complete");
   py::dict d = mcToDict(ref, r, list.size(), opt.runs);
-  d["output"] = output;
+  d["output"] = strOf(output);
   // About every run (the duration's rounding, an aided filter's start), as `sinsim mc` prints them: a key and Python warnings.
   const std::vector<std::string> warnings = sim::batchWarnings(sc, ref);
   d["warnings"] = warnings;
   const py::object warn = py::module_::import("warnings").attr("warn");
-  for (const std::string& w : warnings) warn("mc: " + w);
+  for (const std::string& w : warnings) warn(strOf("mc: " + w));
   return d;
 }
 
 py::dict synth(const py::object& model, double rate, const py::object& duration,
-               const std::string& path, const py::int_& seed, const py::int_& run,
+               const py::object& pathObj, const py::int_& seed, const py::int_& run,
                const std::string& temperature, const py::object& latitude, const py::object& height,
                const py::object& attitude) {
   const InputFilesScope inputs;
   const InterruptScope interrupt;
   const errormodels::ImuErrorModel m = imuModel(toModel(model));
+  const std::string path = pathArg(pathObj);
   sim::StaticRecordSpec spec;
   spec.rate = rate;
   spec.duration = quantityArg(duration, Dimension::time(), "duration");
@@ -317,12 +319,12 @@ void bindSimulate(py::module_& mod) {
   mod.def("load_scenario", [](const py::object& src) { return toScenario(src); },
           py::arg("source"), "Scenario(source): a scenario file path or a dict of its layout");
   mod.def("run", &run, py::arg("scenario"), py::arg("model") = py::none(),
-          py::arg("seed") = py::none(), py::arg("bias_window") = 0.0, py::arg("output") = "",
+          py::arg("seed") = py::none(), py::arg("bias_window") = 0.0, py::arg("output") = py::none(),
           py::arg("imu") = false,
           "sinsim run: one realisation; errors at every output epoch as arrays (SI).");
   mod.def("mc", &mc, py::arg("scenario"), py::arg("models") = py::none(), py::arg("runs") = 100,
           py::arg("seed") = py::none(), py::arg("threads") = 0, py::arg("times") = py::none(),
-          py::arg("bias_window") = 0.0, py::arg("budget") = false, py::arg("output") = "",
+          py::arg("bias_window") = 0.0, py::arg("budget") = false, py::arg("output") = py::none(),
           "sinsim mc: N realisations per model; per-run errors and final metrics as arrays.");
   mod.def("synth", &synth, py::arg("model"), py::arg("rate"), py::arg("duration"), py::arg("path"),
           py::arg("seed") = 0, py::arg("run") = 0, py::arg("temperature") = "25 degC",

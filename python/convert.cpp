@@ -120,7 +120,7 @@ Model toModel(const py::handle& v) {
   if (py::isinstance<py::str>(v) || py::hasattr(v, "__fspath__")) {
     const std::string path = pathBytes(v);
     if (path == "none") return {errormodels::ErrorModelSpec{}, "none"};
-    return {errormodels::loadErrorModel(path), fs::path(path).stem().string()};
+    return {errormodels::loadErrorModel(path), labelOf(fs::path(path).stem().string())};
   }
   throw InputError("a model is a sinsim.Model, a file path, \"none\" or a dict");
 }
@@ -162,7 +162,8 @@ errormodels::Record toRecord(const py::handle& v, const errormodels::RecordOptio
                        "\" (known: source, rate, t, gx, gy, gz, ax, ay, az, temp)");
   }
   errormodels::Record r;
-  r.source = d.contains("source") ? py::str(d["source"]).cast<std::string>() : "<record dict>";
+  // The source as given (a dict from load_record names its file, perhaps by bytes that are no UTF-8).
+  r.source = d.contains("source") ? pathBytes(py::str(d["source"])) : "<record dict>";
   r.t = column(d, "t");
   const char* g[] = {"gx", "gy", "gz"};
   const char* a[] = {"ax", "ay", "az"};
@@ -236,7 +237,7 @@ py::array_t<double> array(const std::vector<double>& v) {
 
 py::dict recordDict(const errormodels::Record& r) {
   py::dict d;
-  d["source"] = r.source;
+  d["source"] = strOf(r.source);
   d["rate"] = r.rate_hz;
   if (!r.t.empty()) {  // the stamps as written (t_origin_s + t: Unix time back to its digits in a double)
     std::vector<double> t(r.t);
@@ -285,6 +286,26 @@ std::uint64_t countArg(const py::int_& v, const std::string& what, std::uint64_t
                      py::repr(v).cast<std::string>());
   }
   return n;
+}
+
+std::string pathArg(const py::handle& v) { return v.is_none() ? std::string() : pathBytes(v); }
+
+py::str strOf(const std::string& text) {
+  PyObject* o = PyUnicode_DecodeUTF8(text.data(), py::ssize_t(text.size()), "surrogateescape");
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o);
+}
+
+py::list strs(const std::vector<std::string>& texts) {
+  py::list l;
+  for (const auto& t : texts) l.append(strOf(t));
+  return l;
+}
+
+std::string labelOf(const std::string& stem) {
+  PyObject* o = PyUnicode_DecodeUTF8(stem.data(), py::ssize_t(stem.size()), "backslashreplace");
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o).cast<std::string>();
 }
 
 }  // namespace sinsim::python

@@ -63,4 +63,21 @@ double quantityArg(const py::handle& value, Dimension dim, const std::string& wh
 std::uint64_t countArg(const py::int_& value, const std::string& what,
                        std::uint64_t max = std::numeric_limits<std::uint64_t>::max());
 
+/// A path argument (str, bytes or os.PathLike) as the bytes the file system names it by
+/// (os.fsencode: a name that is no UTF-8, as os.listdir returns it, gets its bytes back; a cast to
+/// std::string raised TypeError for it). None gives "" (no output), as the CLI's absent option.
+std::string pathArg(const py::handle& value);
+
+/// Text the library holds as bytes (a path, a label or warning that names a file) as a Python
+/// str: UTF-8 with surrogateescape, as os.fsdecode gives file names (a byte that is no UTF-8
+/// becomes a lone surrogate, and pathArg gives it back). A std::string returned as is was decoded
+/// as strict UTF-8 and raised UnicodeDecodeError after the work was done.
+py::str strOf(const std::string& text);
+
+/// A file stem as UTF-8 text for a label (a byte that is no UTF-8 written as \xff).
+std::string labelOf(const std::string& stem);
+
+/// A list of such texts (strOf each).
+py::list strs(const std::vector<std::string>& texts);
+
 }  // namespace sinsim::python

@@ -274,3 +274,34 @@ def test_text_that_is_not_utf8_is_named_and_a_file_name_that_is_not_is_read(tmp_
     assert listed == "s\udcff.yaml"
     r = sinsim.run(os.path.join(str(tmp_path), listed), model="none")
     assert r["summary"]["final_horizontal"] < 1e-3  # at rest with a perfect IMU (closed form: 0)
+
+
+def test_every_path_argument_and_result_takes_a_file_name_that_is_not_utf8(tmp_path, source_dir):
+    # A folder named with the byte 0xff, as os.listdir lists it ('\udcff'). Before, the outputs,
+    # load_record, synth, Model.write and mc's model files were cast to UTF-8 (TypeError), and a
+    # result naming such a path (source, output, summary, labels) raised UnicodeDecodeError after
+    # the work was done.
+    os.mkdir(os.path.join(os.fsencode(tmp_path), b"d\xff"))
+    (folder,) = os.listdir(tmp_path)
+    assert folder == "d\udcff"
+    d = os.path.join(str(tmp_path), folder)
+    model = sinsim.Model(WHITE_GYRO)
+    model.write(os.path.join(d, "m\udcfe.yaml"))
+    rec = sinsim.synth(model, rate=100, duration="20 s", path=os.path.join(d, "r.csv"))
+    assert rec["source"] == os.path.join(d, "r.csv")
+    again = sinsim.load_record(os.path.join(d, "r.csv"))
+    assert again["source"] == rec["source"] and np.array_equal(again["gx"], rec["gx"])
+    sinsim.analyze(rec, json=os.path.join(d, "a.json"))
+    scenario = os.path.join(source_dir, "scenarios", "static.yaml")
+    r = sinsim.run(scenario, model=os.path.join(d, "m\udcfe.yaml"), output=os.path.join(d, "run"))
+    assert r["output"] == os.path.join(d, "run")
+    assert r["summary"]["model"] == os.path.join(d, "m\udcfe.yaml")
+    mc = sinsim.mc(scenario, models=[os.path.join(d, "m\udcfe.yaml")], runs=2, times=["1 min"],
+                   output=os.path.join(d, "mc"))
+    assert mc["labels"] == ["m\udcfe"] and list(mc["final"]) == ["m\udcfe"]
+    assert mc["output"] == os.path.join(d, "mc")
+    # Every file landed under the name given, as bytes the file system holds.
+    listed = set(os.listdir(os.path.join(os.fsencode(tmp_path), b"d\xff")))
+    assert {b"m\xfe.yaml", b"r.csv", b"a.json", b"run", b"mc"} <= listed
+    # A model read from such a file is labelled with the byte written out (a label is text).
+    assert sinsim.Model(os.path.join(d, "m\udcfe.yaml")).label == "m\\xfe"
