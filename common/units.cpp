@@ -285,6 +285,27 @@ Quantity parseUnit(std::string_view unit) {
   return q;
 }
 
+std::pair<double, std::string_view> splitUnitFactor(std::string_view text) {
+  const std::string_view t = trimmed(text);
+  const auto numeric = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+'; };
+  if (t.empty() || !numeric(t.front())) return {1.0, t};
+  try {
+    parseUnit(t);
+    return {1.0, t};
+  } catch (const InputError&) {
+  }
+  const std::string buf(t);
+  char* end = nullptr;
+  const double factor = std::strtod(buf.c_str(), &end);
+  const std::string_view rest = trimmed(t.substr(std::size_t(end - buf.c_str())));
+  if (end == buf.c_str()) throw InputError("cannot read unit \"" + limits::echo(t) + "\"");
+  if (!(std::isfinite(factor) && factor > 0))
+    throw InputError("unit \"" + limits::echo(t) + "\": the factor of a count must be positive and finite");
+  if (rest.empty())
+    throw InputError("unit \"" + limits::echo(t) + "\": a factor needs a unit after it (\"0.05 deg/s\": one count is 0.05 deg/s)");
+  return {factor, rest};
+}
+
 Quantity parseQuantity(std::string_view text) {
   std::string_view t = trimmed(text);
   if (t.empty()) throw InputError("empty value");

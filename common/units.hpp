@@ -9,6 +9,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace sinsim {
 
@@ -75,6 +76,12 @@ Quantity parseQuantity(std::string_view text);
 /// Parses a unit expression alone ("deg/s", "g") into its SI factor and dimension; the factor of
 /// an offset unit (degC) is its scale only. Throws InputError on an unknown unit.
 Quantity parseUnit(std::string_view unit);
+
+/// A unit with an optional positive factor in front, as a record states raw counts: "0.05 deg/s"
+/// is one count = 0.05 deg/s. Returns the factor (1 without one) and the unit text after it; a
+/// text the unit grammar reads whole ("1/s") has no factor. InputError for a factor that is not
+/// positive and finite, or one with no unit after it.
+std::pair<double, std::string_view> splitUnitFactor(std::string_view text);
 
 /// Parses text and requires the given dimension; the message names the expected dimension and
 /// an example unit. A plain number is accepted only for a dimensionless expectation.

@@ -118,11 +118,12 @@ struct UnitSpec {
 UnitSpec parseUnitSpec(std::string_view unit, const std::string& source, std::size_t line,
                        const std::string& column) {
   try {
-    Quantity q = parseUnit(unit);
-    UnitSpec spec{q.si, 0.0, q.dim};
+    const auto [factor, base] = splitUnitFactor(unit);  // raw counts: "0.05 deg/s"
+    Quantity q = parseUnit(base);
+    UnitSpec spec{factor * q.si, 0.0, q.dim};
     if (q.dim == Dimension::temperature()) {
       // Absolute temperatures carry an offset (degC -> K); parseQuantity applies it to a lone unit.
-      spec.offset = parseQuantity("0 " + std::string(unit)).si;
+      spec.offset = parseQuantity("0 " + std::string(base)).si;
     }
     return spec;
   } catch (const InputError& e) {
@@ -405,7 +406,7 @@ class RowReader {
       if (!u.unit) continue;
       Dimension dim;
       try {
-        dim = parseUnit(*u.unit).dim;
+        dim = parseUnit(splitUnitFactor(*u.unit).second).dim;
       } catch (const InputError& e) {
         fail(source_, 0, std::string(u.option) + ": " + e.text());
       }
@@ -702,8 +703,10 @@ std::string accelWarning(double f) {
                            " m/s^2 in a static record (gravity is 9.8 m/s^2): ";
   const std::string unit = accelUnitFor(f);
   if (!unit.empty()) return lead + "did you forget --accel-unit " + unit + "?";
-  return lead + "give the file's accelerometer unit (--accel-unit, or in the header: ax[mg]), unless the "
-                "logger removed gravity";
+  // Raw counts: gravity is f counts, so one count is about 1000 / f mg (the datasheet's LSB says exactly).
+  return lead + "give the file's accelerometer unit (--accel-unit, or in the header: ax[mg]); raw counts " +
+         "take their size, about --accel-unit \"" + significant(1e3 / f, 3) +
+         " mg\" here (the datasheet's LSB), unless the logger removed gravity";
 }
 
 std::string timeWarning(const Record& record) {

@@ -92,3 +92,17 @@ TEST_CASE("dimensions print in SI") {
   // A compound denominator in parentheses: rad/s*K read as rad*K/s (helper-19).
   CHECK((Dimension::angularRate() / Dimension::temperature()).siUnit() == "rad/(s*K)");
 }
+
+TEST_CASE("a count's size in front of a unit is split off; a unit read whole keeps factor 1") {
+  const auto [f, u] = sinsim::splitUnitFactor(" 0.05 deg/s ");
+  CHECK(f == 0.05);
+  CHECK(u == "deg/s");
+  CHECK(sinsim::splitUnitFactor("2.5e-4g").first == 2.5e-4);
+  CHECK(sinsim::splitUnitFactor("2.5e-4g").second == "g");
+  CHECK(sinsim::splitUnitFactor("1/s").first == 1.0);  // the grammar's own "1/s"
+  CHECK(sinsim::splitUnitFactor("1/s").second == "1/s");
+  CHECK(sinsim::splitUnitFactor("deg/s").first == 1.0);
+  CHECK_THROWS_WITH(sinsim::splitUnitFactor("0 mg"), Catch::Contains("positive and finite"));
+  CHECK_THROWS_WITH(sinsim::splitUnitFactor("-1 mg"), Catch::Contains("positive and finite"));
+  CHECK_THROWS_WITH(sinsim::splitUnitFactor("3"), Catch::Contains("a factor needs a unit"));
+}

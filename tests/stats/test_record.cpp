@@ -436,6 +436,7 @@ TEST_CASE("record: an accelerometer in mg, ft/s^2 or counts read as m/s^2 is nam
   CHECK(record(sinsim::kStandardGravity / 0.3048).find("did you forget --accel-unit ft/s^2?") != std::string::npos);
   CHECK(record(sinsim::kStandardGravity / 0.01).find("did you forget --accel-unit Gal?") != std::string::npos);
   CHECK(record(4000.0).find("give the file's accelerometer unit") != std::string::npos);
+  CHECK(record(4000.0).find("about --accel-unit \"0.249 mg\"") != std::string::npos);  // 1000 / 4012
   CHECK(record(1.0).find("did you forget --accel-unit g?") != std::string::npos);
   CHECK(record(sinsim::kStandardGravity) == "(0 warnings)");  // m/s^2: gravity
   CHECK(record(0.01) == "(0 warnings)");              // gravity removed by the logger: not a unit
@@ -698,6 +699,35 @@ TEST_CASE("record: a bad unit option is named as the option, not as the file's c
   CHECK_THAT(errorOf("t,az\n0,1\n0.01,1\n", a), Catch::Contains("the accelerometer unit option (--accel-unit)"));
   o.gyro_unit = "dps";
   CHECK(parseRecord("t,gx\n0,1\n0.01,1\n", "rec.csv", o).gyro[0][0] == Approx(M_PI / 180.0));
+}
+
+TEST_CASE("record: raw counts are read with the count's size as their unit", "[record][units]") {
+  // ADIS16405-like counts: 0.05 deg/s and 3.33 mg per count, given as an option or in the header.
+  const std::string rows = "2,-1,0,90,-30,-300\n-3,4,1,91,-29,-301\n";
+  RecordOptions o;
+  o.rate_hz = 100.0;
+  o.gyro_unit = "0.05 deg/s";
+  o.accel_unit = "3.33 mg";
+  const Record a = parseRecord("gx,gy,gz,ax,ay,az\n" + rows, "rec.csv", o);
+  CHECK(a.gyro[0][0] == Approx(2 * 0.05 * kDeg));
+  CHECK(a.gyro[1][1] == Approx(4 * 0.05 * kDeg));
+  CHECK(a.accel[2][1] == Approx(-301 * 3.33e-3 * kG));
+  RecordOptions r;
+  r.rate_hz = 100.0;
+  const Record b = parseRecord("gx [0.05 deg/s],gy [0.05 deg/s],gz [0.05 deg/s],ax [3.33 mg],ay [3.33 mg],az [3.33 mg]\n" + rows, "rec.csv", r);
+  CHECK(b.gyro == a.gyro);
+  CHECK(b.accel == a.accel);
+  // A temperature in tenths of a degree keeps the Celsius offset.
+  const Record t = parseRecord("gx,temp [0.1 degC]\n0,250\n0,251\n", "rec.csv", r);
+  CHECK(t.temperature[0] == Approx(298.15));
+  // A unit the grammar reads whole has no factor; a bad factor is named.
+  o.gyro_unit = "-0.05 deg/s";
+  CHECK_THAT(errorOf("gx\n1\n2\n", o), Catch::Contains("the factor of a count must be positive and finite"));
+  o.gyro_unit = "0.05";
+  CHECK_THAT(errorOf("gx\n1\n2\n", o), Catch::Contains("a factor needs a unit after it"));
+  o.gyro_unit = "1e999 deg/s";
+  CHECK_THAT(errorOf("gx\n1\n2\n", o), Catch::Contains("positive and finite"));
+  CHECK_THAT(errorOf("gx [0 deg/s]\n1\n2\n", r), Catch::Contains("rec.csv:1: column \"gx [0 deg/s]\": unit \"0 deg/s\": the factor"));
 }
 
 TEST_CASE("record: Unix time stamps in ns up to 100 kHz are regular and messages show them as written",
