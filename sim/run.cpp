@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include <GeographicLib/Constants.hpp>
 #include <nlohmann/json.hpp>
 
 #include "common/atomic_file.hpp"
@@ -33,6 +34,19 @@
 
 namespace sinsim::sim {
 namespace {
+
+/// An error beyond the Earth's radius is no navigation error any more (a model in the wrong unit,
+/// a noise no strapdown can integrate): said, with where it peaked; the run is written as computed.
+std::string beyondEarthWarning(const RunSummary& s) {
+  const double radius = GeographicLib::Constants::WGS84_a();
+  if (!(s.maxHorizontal > radius || s.maxVertical > radius)) return {};
+  const bool h = s.maxHorizontal >= s.maxVertical;
+  return std::string("the ") + (h ? "horizontal" : "vertical") + " error reached " +
+         limits::fmt((h ? s.maxHorizontal : s.maxVertical) / 1e3, 3) + " km (at t = " +
+         limits::fmt(h ? s.maxHorizontalTime : s.maxVerticalTime, 6) + " s), beyond the Earth's radius (" +
+         limits::fmt(radius / 1e3, 5) + " km): the navigation solution means nothing there. Sensor errors this "
+         "large (model " + s.model + ") are beyond what strapdown navigation integrates: check the model's units";
+}
 
 const char* kStateHeader = "t_s,lat_deg,lon_deg,h_m,vn_mps,ve_mps,vd_mps,roll_deg,pitch_deg,yaw_deg\n";
 const char* kErrorHeader = "t_s,north_m,east_m,down_m,vn_mps,ve_mps,vd_mps,roll_rad,pitch_rad,yaw_rad\n";
@@ -258,6 +272,7 @@ RunSummary run(const Scenario& sc, const RunOptions& opt) {
   if (aiding) s.outages = aiding->aided().outages();
   if (aiding)
     if (std::string w = aiding->innovationWarning(); !w.empty()) s.warnings.push_back(std::move(w));
+  if (std::string w = beyondEarthWarning(s); !w.empty()) s.warnings.push_back(std::move(w));
   s.rmsHorizontal = std::sqrt(sumH2 / static_cast<double>(rows));
   s.rmsVertical = std::sqrt(sumV2 / static_cast<double>(rows));
 

@@ -214,6 +214,27 @@ TEST_CASE("a failing run leaves no output files and no folder it created") {
   fs::remove_all(dir);
 }
 
+TEST_CASE("an error beyond the Earth's radius is warned, a realistic one is not") {
+  // Accelerometer white noise N: the position error's sd at T is N sqrt(T^3 / 3) (closed form),
+  // 1.7e7 m/s/sqrt(s) x 390 s^(3/2) = 6.5e9 m over the short scenario's 77 s, a thousand Earth
+  // radii; 0.05 m/s/sqrt(h) gives 8 m.
+  const fs::path dir = tempDir("beyond_earth");
+  fs::create_directories(dir);
+  const sim::Scenario sc = sim::parseScenario(kShort, "short.yaml");
+  auto warningsWith = [&](const std::string& density) {
+    std::ofstream(dir / "m.yaml") << "accel: {all: [{type: white, density: " << density << "}]}\n";
+    sim::RunOptions opt;
+    opt.model = (dir / "m.yaml").string();
+    return sim::run(sc, opt).warnings;
+  };
+  const auto absurd = warningsWith("1e9 m/s/sqrt(h)");
+  REQUIRE(absurd.size() == 1);
+  CHECK_THAT(absurd[0], Catch::Contains("beyond the Earth's radius (6378.1 km)"));
+  CHECK_THAT(absurd[0], Catch::Contains("check the model's units"));
+  CHECK(warningsWith("0.05 m/s/sqrt(h)").empty());
+  fs::remove_all(dir);
+}
+
 TEST_CASE("error model from a file beside the scenario, fed with the scenario's temperature") {
   // Model: north accelerometer bias c1·(T − T0) with c1 = 1e-4 m/s²/K; scenario temperature
   // 27 degC, T0 = 25 degC → ∇ = 2e-4 m/s². At rest, heading north, for t ≪ the Schuler period:
