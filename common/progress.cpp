@@ -15,15 +15,16 @@ std::atomic<bool>& interruptFlag() {
   return flag;
 }
 
-void update(std::string_view stage, std::uint64_t done, std::uint64_t total) {
+void update(std::string_view stage, std::uint64_t done, std::uint64_t total, Count unit) {
   std::lock_guard<std::mutex> lock(gMutex);
   if (gCurrent.stage != stage) gCurrent.stage.assign(stage);
   gCurrent.done = done;
   gCurrent.total = total;
+  gCurrent.unit = unit;
 }
 
-void checkpoint(std::string_view stage, std::uint64_t done, std::uint64_t total) {
-  update(stage, done, total);
+void checkpoint(std::string_view stage, std::uint64_t done, std::uint64_t total, Count unit) {
+  update(stage, done, total, unit);
   if (interruptFlag().load(std::memory_order_relaxed)) throw Interrupted();
 }
 

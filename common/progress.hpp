@@ -30,17 +30,22 @@ namespace progress {
 /// Set (once) when the user asks to stop; never cleared by the library.
 std::atomic<bool>& interruptFlag();
 
+/// What done and total count: items (runs, channels) or bytes (of a file being read).
+enum class Count { items, bytes };
+
 /// Publishes the current stage ("reading run1.csv", "realisations") and, when total > 0, how far
 /// it is (done of total). Thread-safe; cheap enough for a call every few milliseconds.
-void update(std::string_view stage, std::uint64_t done = 0, std::uint64_t total = 0);
+void update(std::string_view stage, std::uint64_t done = 0, std::uint64_t total = 0, Count unit = Count::items);
 
 /// update(), then throws Interrupted if the interrupt flag is set.
-void checkpoint(std::string_view stage, std::uint64_t done = 0, std::uint64_t total = 0);
+void checkpoint(std::string_view stage, std::uint64_t done = 0, std::uint64_t total = 0,
+                Count unit = Count::items);
 
 /// What update() last published.
 struct Snapshot {
   std::string stage;
   std::uint64_t done = 0, total = 0;
+  Count unit = Count::items;
 };
 Snapshot current();
 

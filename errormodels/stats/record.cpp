@@ -100,7 +100,8 @@ void forEachLineOfFile(const std::string& path, OnLine&& line) {
     std::memmove(buf.data(), p, held);
     if (!eof) {
       const auto at = gzoffset(f);
-      progress::checkpoint("reading " + path, at > 0 ? std::uint64_t(at) : 0, ec ? 0 : std::uint64_t(fileBytes));
+      progress::checkpoint("reading " + path, at > 0 ? std::uint64_t(at) : 0, ec ? 0 : std::uint64_t(fileBytes),
+                           progress::Count::bytes);
     }
   }
   // A truncated gzip stream ends with Z_BUF_ERROR ("unexpected end of file").
@@ -663,7 +664,7 @@ Record parseRecord(std::string_view text, const std::string& source, const Recor
     if (eol == std::string_view::npos) eol = text.size();
     reader.line(text.substr(at, eol - at), ++number);
     at = eol + 1;
-    if ((number & 0xffff) == 0) progress::checkpoint("reading " + source, at, text.size());
+    if ((number & 0xffff) == 0) progress::checkpoint("reading " + source, at, text.size(), progress::Count::bytes);
   }
   return reader.finish();
 }
