@@ -112,6 +112,14 @@ AllanSolution fitWanted(const ChannelWork& w, const std::vector<std::string>& wa
   // Beside a term whose Allan shape is only a proxy of what the Monte Carlo does exactly (a
   // rounding that hides noise), a base level lowered to help the proxy is undone by the simulation.
   if (std::any_of(set.begin(), set.end(), [](const Candidate* c) { return c->keepsBaseLevel; })) return sol;
+  // A noise whose level changes over the record has no one level: a factor fitted to the whole
+  // record (x26 on a blind probe's 5x burst over a fifth of it) scaled the base everywhere and
+  // took a reported ramp's share, which was then written with size 0 (bench/blind_probe/long60).
+  if (w.d.noiseLevelChange) {
+    notes.push_back(w.d.channel + ": the base noise level is kept as given (the record's noise level changes over "
+                                  "it, which one factor cannot hold)");
+    return sol;
+  }
   const auto freeLevel = solveAllan(w.prob, set, sol.theta, false);
   if (sol.chi2 - freeLevel.chi2 > 9.0) {
     // A level that reaches 0 would write the base noise with size 0, which no model accepts

@@ -21,13 +21,18 @@ std::string pad(std::string s, std::size_t w) {
   return s;
 }
 
-/// "level steps at t = 12.5 s (+0.01 deg/s) ..." in the channel's unit.
+/// "level steps at t = 12.5 s (+0.01 deg/s) ..." in the channel's unit: the first kShownSteps, then
+/// how many more over which span (a noise whose level rises for a while listed 70 steps in one
+/// line; the JSON keeps them all).
 std::string stepsText(const AxisDiagnosis& a, const std::vector<LevelStep>& steps) {
+  constexpr std::size_t kShownSteps = 8;
   std::ostringstream o;
   o << "level step" << (steps.size() > 1 ? "s" : "") << " at";
-  for (const auto& st : steps)
-    o << " t = " << num(st.time, 4) << " s (" << (st.size > 0 ? "+" : "") << num(st.size / a.unitFactor, 3) << " "
-      << a.unit << ")";
+  for (std::size_t i = 0; i < steps.size() && i < kShownSteps; ++i)
+    o << " t = " << num(steps[i].time, 4) << " s (" << (steps[i].size > 0 ? "+" : "") << num(steps[i].size / a.unitFactor, 3)
+      << " " << a.unit << ")";
+  if (steps.size() > kShownSteps)
+    o << " and " << steps.size() - kShownSteps << " more up to t = " << num(steps.back().time, 4) << " s";
   return o.str();
 }
 
@@ -72,7 +77,9 @@ void failsAndFindings(std::ostringstream& o, const AxisDiagnosis& a) {
   if (a.noiseScale > 0 && (a.noiseScale < 0.25 || a.noiseScale > 4)) {
     o << "  " << a.channel << " level: the record's noise is x" << num(std::sqrt(a.noiseScale), 3)
       << " the model's base noise in ADEV (Allan variance factor " << num(a.noiseScale, 3)
-      << ", fitted with the findings): check the model's units and densities";
+      << ", fitted with the findings): "
+      << (a.noiseLevelChange ? "the record's noise level changes over it (above), which one factor cannot hold"
+                             : "check the model's units and densities");
     if (reported && a.noiseScale < 0.25)
       o << "; the findings are sized beside the whole base scaled by that factor, so where the model "
            "overstates one term alone (a white density above the record's) a finding may stand in for the "

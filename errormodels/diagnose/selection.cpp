@@ -586,6 +586,14 @@ void restateSignals(ChannelWork& w) {
     }
     for (auto& n : w.propose(x, {}, {}, {}))
       if (n.effect == c.effect && n.parameters == c.parameters) {
+        // The evidence is the record's alone (a ramp's "least-squares trend"); a size that the
+        // joint fit changed says so, or a ramp read "R = 168 deg/h^2 ... least-squares trend
+        // 5391 deg/h^2" with no word why (bench/blind_probe/long60).
+        Finding alone, joint;
+        c.describe(0.0, alone);
+        n.describe(0.0, joint);
+        if (alone.size != joint.size)
+          c.evidence += "; sized jointly with the other signals found (alone: " + alone.size + ")";
         c.describe = std::move(n.describe);
         c.stated = std::move(n.signal);
         break;

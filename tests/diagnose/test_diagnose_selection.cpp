@@ -657,6 +657,10 @@ TEST_CASE("a ramp beside a thermal drift of nearly its shape is fitted jointly w
           if (t.reported && t.effect == "temperature" && !t.params.count("c2")) {
             INFO("c1 " << t.params.at("c1") << " rad/s/K, truth " << c1 << ", joint sd " << sdC1);
             CHECK(std::fabs(t.params.at("c1") - c1) < 4 * sdC1);
+            // The earlier signal's size was restated from the joint fit, and its evidence (the
+            // record's alone) says so with the size it had alone.
+            CHECK((t.evidence.find("sized jointly with the other signals found (alone: c") != std::string::npos ||
+                   f.evidence.find("sized jointly with the other signals found (alone: R = ") != std::string::npos));
           }
       }
     if (seed == 1100) {  // the joint sizes as --add writes them: the misfit at least halved

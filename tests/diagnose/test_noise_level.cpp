@@ -114,6 +114,20 @@ TEST_CASE("noise level: diagnose reports a noise that changes with time as unexp
     CHECK(std::any_of(sentences.begin(), sentences.end(), [](const std::string& s) {
       return s.find("the noise level changes over the record") != std::string::npos;
     }));
+    // The burst's own samples are no outliers (an outlier stands out against the noise around
+    // it): 4.3 % of them are beyond 6 sd of the calm noise, which made hundreds "isolated".
+    auto named = [](const dg::AxisDiagnosis& a, const std::string& e) {
+      return std::any_of(a.findings.begin(), a.findings.end(),
+                         [&](const dg::Finding& f) { return f.reported && f.effect == e; });
+    };
+    CHECK_FALSE(named(burst, "outliers"));
+    // Spikes of 12 sd in the calm stretches beside it still are: all 20 and no more.
+    for (std::size_t k = 1000; k < 20000; k += 1000) r.gyro[0][k] += (k % 2000 ? 12.0 : -12.0) * 0.5 * M_PI / 180.0 / 60.0 * 10.0;
+    for (std::size_t k = 40000; k < 41000; k += 1000) r.gyro[0][k] += 12.0 * 0.5 * M_PI / 180.0 / 60.0 * 10.0;
+    const auto spikes = dg::diagnose(r, model, o).axis("gx");
+    REQUIRE(named(spikes, "outliers"));
+    for (const auto& f : spikes.findings)
+      if (f.effect == "outliers") CHECK_THAT(f.evidence, Catch::StartsWith("20 isolated samples"));
   }
 }
 
