@@ -300,3 +300,23 @@ def test_analyze_refuses_bad_outputs_before_the_work(record, tmp_path):
     assert not js.exists()
     sinsim.analyze(rec, json=str(js), html=str(tmp_path / "a.html"))
     assert js.exists() and (tmp_path / "a.html").exists()
+
+
+def test_auto_keeps_an_ar_branch_that_holds_the_short_tau_over_terms_that_do_not():
+    # A blind probe's accelerometer (bench/blind_probe/long60): AR(2) with poles 0.7 and 0.5 plus
+    # white noise, 3 h at 100 Hz (1.08e6 samples). Its AR + slow branch from a scanned start was
+    # within 2 % of the record below that start, yet auto wrote white + gm from an earlier start
+    # that was 0.89x the record at 0.01 s (within the 25 % tolerance, far outside the band on 10^6
+    # samples): the diagnosis of the record against its own fit said "does not fit" (chi2 116 /
+    # 34; 146 / 34 by the CLI), and on the probe's other records of that sensor `quantization`.
+    # The terms now give way only where they are no further off below their start than the AR
+    # branch is below its own. NumPy seed 5 is one of 2 in 8 (5-12) where the old rule chose them.
+    from scipy.signal import lfilter
+    rng = np.random.default_rng(5)
+    n = 1_080_000
+    x = lfilter([1.0], [1.0, -1.2, 0.35], rng.standard_normal(n) * 2e-4) + rng.standard_normal(n) * 5e-4
+    rec = {"rate": 100.0, "ax": x}
+    model = sinsim.fit(rec, axes=["ax"])
+    d = sinsim.diagnose(rec, model, realisations=16)["ax"]
+    assert d["fits"], d["chi2"]
+    assert not [f["effect"] for f in d["findings"] if f["reported"]]
