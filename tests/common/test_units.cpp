@@ -93,7 +93,7 @@ TEST_CASE("dimensions print in SI") {
   CHECK((Dimension::angularRate() / Dimension::temperature()).siUnit() == "rad/(s*K)");
 }
 
-TEST_CASE("a count's size in front of a unit is split off; a unit read whole keeps factor 1") {
+TEST_CASE("a count size in front of a unit is split off, and a unit read whole keeps factor 1") {
   const auto [f, u] = sinsim::splitUnitFactor(" 0.05 deg/s ");
   CHECK(f == 0.05);
   CHECK(u == "deg/s");
