@@ -258,7 +258,8 @@ void chooseAuto(AxisIdentification& out, const std::vector<double>& x, const Cur
     fit::LatentFit scanned = latentTerms(x, dt, lattice, true);
     const auto offBelow = [](const fit::LatentFit& f) { return std::fabs(std::log(f.belowStartRatio)); };
     const bool earlier = consistentThroughout(scanned) && scanned.tau.front() < out.arSlow->joint.tau.front() &&
-                         offBelow(scanned) <= offBelow(out.arSlow->joint);
+                         (offBelow(scanned) <= offBelow(out.arSlow->joint) ||
+                          fit::worstAdevLogRatio(scanned) <= arWorst);
     if (fit::offBelowStart(out.arSlow->joint) ? termsCloser(scanned, arWorst) : earlier) {
       const std::string from = "from " + significant(scanned.tau.front(), 4) + " s";
       out.decision.push_back(termsInstead(out.arSlow->joint, scanned, from));
