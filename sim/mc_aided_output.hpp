@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/constants.hpp"
+#include "sim/aided/linearity_limits.hpp"
 #include "sim/mc_output.hpp"
 #include "sim/output.hpp"
 
@@ -52,14 +53,18 @@ struct McAidedSummary {
   /// pitch or yaw, nav - truth) beyond kSmallAngle, with the largest [rad] (NaN without epochs).
   std::size_t filterEpochs = 0, largeAttitudeEpochs = 0;
   double largestAttitude = NAN;
+  /// The runs with a filter epoch, and how many of them passed kSmallAngle at any: a run that went
+  /// through large angles early can stay over-confident after they shrink (the states it learned
+  /// there), while its epochs beyond are a small share of all (a 5-deg heading prior).
+  std::size_t filterRuns = 0, largeAttitudeRuns = 0;
+  /// Whether the attitude errors beyond small angles are common enough (5 % of the filter epochs
+  /// or of the runs) for the verdict to name the linearisation beside the model.
+  bool largeAttitudeNamed() const;
   /// The verdict in words: "consistent", or the class whose NEES lies above (over-confident) or
   /// below (pessimistic) its band at more than 20 % of the epochs, with the numbers.
   std::vector<std::string> sentences() const;
 };
 
-/// The attitude error [rad] beyond which the error-state filter's small-angle linearisation is
-/// named in the verdict (5 deg: the second-order terms reach ~4 % of the first).
-inline constexpr double kSmallAngle = 5.0 * kRadPerDeg;
 
 /// The summaries of the given models (the first `models` entries) of an aided batch.
 std::vector<McAidedSummary> mcAidedSummaries(const McBatch& batch, std::size_t models);

@@ -50,15 +50,25 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
   if (std::string w = noFixWarning(config.gnss, config.alignment.duration); !w.empty()) out.push_back(std::move(w));
   constexpr double deg = kDegPerRad;
   char text[720];
+  const double position = config.initialErrors.position.spread().head<2>().maxCoeff();
+  if (position > kMaxStartPositionSigma) {
+    std::snprintf(text, sizeof text,
+                  "initial_errors.position: the filter starts with a horizontal 1-sigma of %.4g km; "
+                  "its error model is linear in the position error too, and beyond about %.0f km "
+                  "its errors and sigmas are not to be trusted, not even after the first fixes",
+                  position / 1000.0, kMaxStartPositionSigma / 1000.0);
+    out.push_back(text);
+  }
   if (!(config.alignment.duration > 0.0)) {
     const nav::Vec3 s = config.initialErrors.attitude.spread();
     if (!(s.maxCoeff() > kMaxStartAttitudeSigma)) return out;
     std::snprintf(text, sizeof text,
-                  "initial_errors.attitude: the filter starts with an attitude 1-sigma of %.0f deg "
-                  "(roll, pitch, yaw: %.1f, %.1f, %.1f deg); the error-state filter is linear in the "
-                  "attitude error and is not valid beyond about %.0f deg, so its errors and sigmas "
-                  "until the attitude is observed are not to be trusted",
-                  s.maxCoeff() * deg, s.x() * deg, s.y() * deg, s.z() * deg,
+                  "initial_errors.attitude: the filter starts with an attitude 1-sigma of %.3g deg "
+                  "(roll, pitch, yaw: %.3g, %.3g, %.3g deg); the error-state filter is linear in the "
+                  "attitude error and holds to about %.0f deg, which more than 5 %% of the runs start "
+                  "beyond at a 1-sigma above %.3g deg: its errors and sigmas until the attitude is "
+                  "observed, and for a while after, are not to be trusted",
+                  s.maxCoeff() * deg, s.x() * deg, s.y() * deg, s.z() * deg, kSmallAngle * deg,
                   kMaxStartAttitudeSigma * deg);
     out.push_back(text);
     return out;
@@ -74,12 +84,13 @@ std::vector<std::string> startWarnings(const nav::Earth& earth, const AidingConf
   if (!(yaw > kMaxStartAttitudeSigma)) return out;
   std::snprintf(text, sizeof text,
                 "coarse alignment: the filter's own sensor model makes the gyrocompassed heading "
-                "uncertain by %.0f deg (1-sigma); the error-state filter is linear in the attitude "
-                "error and is not valid beyond about %.0f deg, so its errors and sigmas until the "
-                "heading is observed are not to be trusted. Gyrocompassing needs gyro errors well "
+                "uncertain by %.3g deg (1-sigma); the error-state filter is linear in the attitude "
+                "error and holds to about %.0f deg, which more than 5 %% of the runs start beyond at "
+                "a 1-sigma above %.3g deg: its errors and sigmas until the heading is observed are "
+                "not to be trusted. Gyrocompassing needs gyro errors well "
                 "below the Earth rate's horizontal part (%.1f deg/h here); with these gyros give "
                 "the heading instead (no alignment, initial_errors.attitude as its accuracy)",
-                yaw * deg, kMaxStartAttitudeSigma * deg,
+                yaw * deg, kSmallAngle * deg, kMaxStartAttitudeSigma * deg,
                 earth.rate() * std::cos(start.lat) * deg * 3600.0);
   out.push_back(text);
   return out;

@@ -30,6 +30,7 @@
 #include "sim/aided/aiding_config.hpp"
 #include "sim/aided/error_state_filter.hpp"
 #include "sim/aided/known_errors.hpp"
+#include "sim/aided/linearity_limits.hpp"
 
 namespace sinsim::sim::aided {
 
@@ -63,9 +64,6 @@ struct FilterEpoch {
 /// their variances stay at the prior and would pull the NEES below its band).
 int neesDof(nav::VerticalChannel vertical);
 
-/// The largest attitude 1-sigma [rad] the filter starts from without a warning: it is linear in
-/// the attitude error ψ, and beyond ~10° its errors and sigmas are no longer to be trusted.
-constexpr double kMaxStartAttitudeSigma = 10.0 * kRadPerDeg;
 
 /// What every run of the scenario should warn about, from its aiding and true start (static when
 /// it aligns): no GNSS fix used (noFixWarning); a filter attitude 1-sigma at the start beyond

@@ -113,10 +113,16 @@ void parseGnss(const ConfigNode& root, double duration, GnssConfig& g) {
   g.enabled = true;
   g.rate = n.quantity("rate", D::frequency(), 1.0);
   n["rate"].check(std::isfinite(g.rate) && g.rate > 0.0, "expected a positive rate");
-  if (n.has("position_sigma"))
-    g.positionSigma = vec3(n["position_sigma"], D::length(), true, "north, east, down");
-  if (n.has("velocity_sigma"))
-    g.velocitySigma = vec3(n["velocity_sigma"], D::speed(), true, "north, east, down");
+  const auto fixSigma = [&](const char* key, D dim, const char* finest) {
+    const nav::Vec3 v = vec3(n[key], dim, true, "north, east, down");
+    if (v.allFinite() && (v.array() > 0.0).all())
+      n[key].check(v.minCoeff() >= kMinFixSigma, std::string("expected at least ") + finest +
+                                                     " (RTK is ~1 cm; finer, the filter's update reaches the "
+                                                     "rounding of the navigation solution)");
+    return v;
+  };
+  if (n.has("position_sigma")) g.positionSigma = fixSigma("position_sigma", D::length(), "1 mm");
+  if (n.has("velocity_sigma")) g.velocitySigma = fixSigma("velocity_sigma", D::speed(), "1 mm/s");
   n.check(n.has("position_sigma") || n.has("velocity_sigma"),
           "expected position_sigma, velocity_sigma or both (what the fixes measure)");
   if (n.has("lever_arm")) {
@@ -161,6 +167,10 @@ void parseFilter(const ConfigNode& root, const std::string& baseDir, double step
   } else {
     const std::string model = n.string("model");
     if (model.empty()) return;
+    // `errors: none` is a perfect IMU; a filter always needs the sensor's noise to weigh the fixes.
+    if (!m.check(model != "none", "a filter needs a sensor model (a model file or an inline map; at "
+                                  "least white noise): `none` is for `errors`, a perfect IMU"))
+      return;
     fs::path p(model);
     if (p.is_relative()) p = fs::path(baseDir) / p;
     f.model = p.lexically_normal().string();

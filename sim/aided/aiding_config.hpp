@@ -55,6 +55,10 @@ constexpr double kMaxPropagationStep = 1.0;
 
 /// The longest GNSS lever arm accepted [m].
 constexpr double kMaxLeverArm = 1000.0;
+/// The finest GNSS fix sigma accepted, 1 mm (position) and 1 mm/s (velocity): RTK is ~1 cm, and a
+/// blind probe's 1e-9 m broke the filter's covariance without a word (NEES mean 1e12; at 1 mm one
+/// spike epoch, at 1 cm consistent): finer, the update reaches the rounding of the solution.
+constexpr double kMinFixSigma = 1e-3;
 
 struct GnssConfig {
   bool enabled = false;

@@ -198,6 +198,33 @@ filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
     CHECK(m.find("gnss.lever_arm: expected 3 values (x, y, z in body axes), got 2") != std::string::npos);
     CHECK(m.find("within 1 km") == std::string::npos);
   }
+  // Fixes finer than any GNSS (a blind probe's 1e-9 m: NEES mean 1e12, no word): refused, each
+  // sigma at its key; 1 mm and 1 mm/s are taken.
+  try {
+    sim::parseScenario(std::string(kBase) + R"(
+gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 1e-9 m], velocity_sigma: 0.5 mm/s}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)", "fine.yaml");
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    const std::string m = e.what();
+    INFO(m);
+    CHECK(m.find("fine.yaml:11: gnss.position_sigma: expected at least 1 mm") != std::string::npos);
+    CHECK(m.find("fine.yaml:11: gnss.velocity_sigma: expected at least 1 mm/s") != std::string::npos);
+  }
+  // `none` is a perfect IMU for `errors`, no filter model (was "no such model file: .../none").
+  try {
+    sim::parseScenario(std::string(kBase) + "gnss: {rate: 1 Hz, position_sigma: 1 m}\nfilter: {model: none}\n",
+                       "none.yaml");
+    FAIL("expected a ConfigError");
+  } catch (const ConfigError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("none.yaml:11: filter.model: a filter needs a sensor model") != std::string::npos);
+  }
+  CHECK_NOTHROW(sim::parseScenario(std::string(kBase) + R"(
+gnss: {rate: 1 Hz, position_sigma: 1 mm, velocity_sigma: 1 mm/s}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)", "rtk.yaml"));
 }
 
 TEST_CASE("coarse alignment is refused unless the vehicle is at rest over its window") {
@@ -313,7 +340,7 @@ filter:
   const sim::RunSummary good = sim::run(sim::parseScenario(scenario("0.05 deg/h"), "fog.yaml"));
   CHECK(good.warnings.empty());
   // Without alignment the start is the user's: a 30° heading sigma is as far outside the filter's
-  // validity, 10° is not beyond it.
+  // validity, and so is 3° (more than 5 % of the runs start beyond 5°: 9.6 %); 2° is not (1.2 %).
   auto given = [](const char* yawSigma) {
     return std::string(kBase) + R"(
 initial_errors: {attitude: {sigma: [1 deg, 1 deg, )" + yawSigma + R"(]}}
@@ -328,9 +355,28 @@ filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
     INFO(wide.warnings[i]);
     CHECK(wide.warnings[i].find("GNSS innovations") != std::string::npos);
   }
-  for (const std::string& w : sim::run(sim::parseScenario(given("10 deg"), "ten.yaml")).warnings) {
+  const sim::RunSummary three = sim::run(sim::parseScenario(given("3 deg"), "three.yaml"));
+  REQUIRE(three.warnings.size() >= 1);
+  CHECK(three.warnings[0].find("attitude 1-sigma of 3 deg (roll, pitch, yaw: 1, 1, 3 deg)") != std::string::npos);
+  CHECK(three.warnings[0].find("a 1-sigma above 2.55 deg") != std::string::npos);
+  for (const std::string& w : sim::run(sim::parseScenario(given("2 deg"), "two.yaml")).warnings) {
     INFO(w);
     CHECK(w.find("initial_errors.attitude") == std::string::npos);
+  }
+  // A start position uncertain by more than 10 km (a blind probe's 1000 km: no word but the
+  // innovations', and a filter that never recovered) is warned; 10 km is not.
+  auto placed = [](const char* sigma) {
+    return std::string(kBase) + "initial_errors: {position: {sigma: " + sigma + R"(}}
+gnss: {rate: 1 Hz, position_sigma: 1 m}
+filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
+)";
+  };
+  const std::vector<std::string> far = sim::run(sim::parseScenario(placed("1000 km"), "far.yaml")).warnings;
+  REQUIRE(far.size() >= 1);
+  CHECK(far[0].find("initial_errors.position: the filter starts with a horizontal 1-sigma of 1000 km") == 0);
+  for (const std::string& w : sim::run(sim::parseScenario(placed("10 km"), "near.yaml")).warnings) {
+    INFO(w);
+    CHECK(w.find("initial_errors.position") == std::string::npos);
   }
 }
 
