@@ -99,6 +99,17 @@ double worstAdevLogRatio(const LatentFit& fit) {
   return worst;
 }
 
+double worstAllanZ(const LatentModel& model, const LatentAllanPoints& record, std::size_t samples, double dt) {
+  const std::vector<double> predicted = latentAllanVariance(model, dt, record.m);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < record.m.size(); ++i) {
+    if (!(record.avar[i] > 0.0 && predicted[i] > 0.0)) continue;
+    const double edf = greenhallEdf(0, 2, double(record.m[i]), double(samples) + 1.0, true, false);
+    worst = std::max(worst, std::fabs(std::log(predicted[i] / record.avar[i])) / std::sqrt(2.0 / edf));
+  }
+  return worst;
+}
+
 const LatentCandidate* LatentFit::runnerUp() const {
   int seen = 0;
   for (const auto& c : candidates)

@@ -291,6 +291,13 @@ bool offBelowStart(const LatentFit& fit);
 /// How far the model's ADEV is from the record's at its worst point, fitted or below a scanned
 /// start: the largest |ln(model / record)| (0 for a perfect fit).
 double worstAdevLogRatio(const LatentFit& fit);
+/// How far the model is from the record at its worst octave point, every point of `record` (the
+/// whole range, fitted or not), in standard errors of the record's Allan variance: the largest
+/// |ln(model avar / record avar)| / sqrt(2 / edf), edf the Greenhall EDF of white noise (the most
+/// precise of the usual types at short tau, where N samples pin the estimate down; at long tau,
+/// where slower noise leaves fewer degrees of freedom, the deviation is overstated, not hidden).
+/// Two models of one record compare by it on the same points.
+double worstAllanZ(const LatentModel& model, const LatentAllanPoints& record, std::size_t samples, double dt);
 /// The sanity warning of a parameter whose 1-sigma exceeds its value, and its opening words.
 std::string uncertaintyWarning(const LatentParameter& p);
 std::string uncertaintyWarningLead(const std::string& name);
