@@ -1,6 +1,7 @@
 #!/bin/bash
+D=$(cd "$(dirname "$0")" && pwd)  # this folder, home of the other scripts
 # SIGINT a long diagnose under a pseudo-terminal (script) after 15 s; then the same with stderr to a file.
-W=/tmp/probe_60/work; cd $W; B=/tmp/probe_bin60/sinsim; REC=$1; M=$2
+W=${WORK:-/tmp/probe_60/work}; cd $W; B=${SINSIM:-/tmp/probe_bin60/sinsim}; REC=$1; M=$2
 rm -f out/sigint.*
 script -qfc "$B diagnose $REC --model $M --add found -o out/sigint.pty.yaml --json out/sigint.pty.json --html out/sigint.pty.html --threads 1; echo EXIT=\$?" out/sigint.pty.log > /dev/null 2>&1 &
 SP=$!
