@@ -126,6 +126,27 @@ def test_diagnose_says_what_stays_unexplained(record):
     assert any("the noise level changes over the record" in u for u in d["gx"]["unexplained"])
 
 
+def test_diagnose_says_when_a_warmup_time_constant_is_a_bound(tmp_path):
+    # White noise with a settling slower than half the 1000-s record (tau 600 s): the warm-up's
+    # time constant stops at the top of its search (T/2 = 500 s) and the evidence says it is a
+    # bound, like a ramp's curvature (a blind probe's ramps on real ADIS16405 windows came out as
+    # warm-ups of tau 500 s without a word, bench/blind_probe). A fast settling (tau 50 s) is
+    # estimated, and says nothing of the kind.
+    model = tmp_path / "white.yaml"
+    model.write_text("gyro:\n  x: [{type: white, sigma: 0.01 rad/s, rate: 100 Hz}]\n")
+    t = np.arange(100_000) * 0.01
+    noise = np.random.default_rng(2).standard_normal(t.size) * 0.01
+    said = {}
+    for tau in (600.0, 50.0):
+        rec = {"rate": 100.0, "gx": noise + 0.05 * np.exp(-t / tau)}
+        d = sinsim.diagnose(rec, sinsim.Model(str(model)), realisations=16, seed=1)["gx"]
+        warm = [f for f in d["findings"] if f["reported"] and f["effect"] == "warmup"]
+        assert warm, d["findings"]
+        said[tau] = warm[0]["evidence"]
+    assert "tau sits at the top of the range searched (500 s): a bound, not an estimate" in said[600.0]
+    assert "a bound" not in said[50.0]
+
+
 def test_diagnose_refuses_a_nan_next_threshold(record):
     rec, _ = record
     with pytest.raises(sinsim.InputError, match="--next-threshold"):

@@ -14,6 +14,7 @@ namespace {
 struct Settling {
   double A = 0;       // amplitude at t = 0 [SI]
   double tau = 0;     // time constant [s]
+  double tauMax = 0;  // the top of the range searched [s]
   double octaves = 1; // of the time constants searched
 };
 
@@ -56,6 +57,7 @@ Settling fitSettling(const DetectorContext& ctx, bool trend) {
   }
   Settling s;
   s.tau = std::exp(0.5 * (a + b));
+  s.tauMax = std::exp(hi);
   s.octaves = std::max(1.0, (hi - lo) / std::log(2.0));
   rss(s.tau, beta);
   s.A = beta[1];
@@ -126,6 +128,13 @@ std::optional<Candidate> settlingCandidate(const DetectorContext& ctx, const Set
                num(tw, 4) + " s (least squares on " + std::to_string(nb) + " block means" +
                (besideTrend ? ", a straight trend fitted beside it" : "") + "); first window-mean step t = " +
                num(tStart, 3);
+  // At the top of the range searched the time constant is a bound, not an estimate: a settling
+  // slower than the record is a curvature that a drift in time shapes alike (a blind probe's
+  // ramps on real ADIS16405 windows came out as warm-ups of tau = T/2, 4 of 8 named first).
+  if (s.tau >= 0.95 * s.tauMax)
+    c.evidence += "; tau sits at the top of the range searched (" + num(s.tauMax, 4) +
+                  " s): a bound, not an estimate; a settling this slow is a drift through the record, "
+                  "as a ramp (see its score) shapes it too";
   const Dimension signalDim = ctx.signal;
   c.describe = [A, tw, u, signalDim](double, Finding& f) {
     f.size = "A = " + quantity(A, u.level) + ", tau = " + num(tw, 4) + " s";
