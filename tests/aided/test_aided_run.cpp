@@ -37,6 +37,17 @@ segments:
 std::string tmpDir(const char* name) {
   return sinsim::test::freshTempDir("sinsim-aided-" + std::string(name)).string();
 }
+// The message a scenario text is refused with; the test fails where it is accepted.
+std::string refusal(const std::string& text, const std::string& name) {
+  try {
+    sim::parseScenario(text, name);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  FAIL("expected a ConfigError for " << name);
+  return {};
+}
+
 }  // namespace
 
 TEST_CASE("coarse alignment in a run: a 5 deg heading error is gyrocompassed away") {
@@ -163,63 +174,49 @@ alignment: {duration: -5 s}
 gnss: {rate: 0 Hz, outages: [[50 s, 40 s]]}
 filter: {model: no-such-file.yaml}
 )";
-  try {
-    sim::parseScenario(text, "bad.yaml");
-    FAIL("expected a ConfigError");
-  } catch (const ConfigError& e) {
-    const std::string m = e.what();
+  {
+    const std::string m = refusal(text, "bad.yaml");
     for (const char* key : {"initial_errors.position", "initial_errors.attitude.sigma",
                             "alignment.duration", "gnss.rate", "gnss.outages[0]", "filter.model"})
       CHECK(m.find(key) != std::string::npos);
   }
   // Fixes that measure nothing, and an antenna a million km away (1e9 mm read as m).
-  try {
-    sim::parseScenario(std::string(kBase) + R"(
+  {
+    const std::string m = refusal(std::string(kBase) + R"(
 gnss: {rate: 1 Hz, lever_arm: [1e9 m, 0 m, 0 m]}
 filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
 )", "bad.yaml");
-    FAIL("expected a ConfigError");
-  } catch (const ConfigError& e) {
-    const std::string m = e.what();
     CHECK(m.find("bad.yaml:11: gnss: expected position_sigma, velocity_sigma or both") !=
           std::string::npos);
     CHECK(m.find("gnss.lever_arm: expected an antenna within 1 km") != std::string::npos);
   }
   // A lever arm of two values: that, in body axes, and no second message about its size.
-  try {
-    sim::parseScenario(std::string(kBase) + R"(
+  {
+    const std::string m = refusal(std::string(kBase) + R"(
 gnss: {rate: 1 Hz, position_sigma: 1 m, lever_arm: [1 m, 2 m]}
 filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
 )", "bad.yaml");
-    FAIL("expected a ConfigError");
-  } catch (const ConfigError& e) {
-    const std::string m = e.what();
     INFO(m);
     CHECK(m.find("gnss.lever_arm: expected 3 values (x, y, z in body axes), got 2") != std::string::npos);
     CHECK(m.find("within 1 km") == std::string::npos);
   }
   // Fixes finer than any GNSS (a blind probe's 1e-9 m: NEES mean 1e12, no word): refused, each
   // sigma at its key; 1 mm and 1 mm/s are taken.
-  try {
-    sim::parseScenario(std::string(kBase) + R"(
+  {
+    const std::string m = refusal(std::string(kBase) + R"(
 gnss: {rate: 1 Hz, position_sigma: [1 m, 1 m, 1e-9 m], velocity_sigma: 0.5 mm/s}
 filter: {model: {gyro: {all: [{type: white, density: 0.01 deg/sqrt(h)}]}}}
 )", "fine.yaml");
-    FAIL("expected a ConfigError");
-  } catch (const ConfigError& e) {
-    const std::string m = e.what();
     INFO(m);
     CHECK(m.find("fine.yaml:11: gnss.position_sigma: expected at least 1 mm") != std::string::npos);
     CHECK(m.find("fine.yaml:11: gnss.velocity_sigma: expected at least 1 mm/s") != std::string::npos);
   }
   // `none` is a perfect IMU for `errors`, no filter model (was "no such model file: .../none").
-  try {
-    sim::parseScenario(std::string(kBase) + "gnss: {rate: 1 Hz, position_sigma: 1 m}\nfilter: {model: none}\n",
-                       "none.yaml");
-    FAIL("expected a ConfigError");
-  } catch (const ConfigError& e) {
-    INFO(e.what());
-    CHECK(std::string(e.what()).find("none.yaml:11: filter.model: a filter needs a sensor model") != std::string::npos);
+  {
+    const std::string m = refusal(std::string(kBase) + "gnss: {rate: 1 Hz, position_sigma: 1 m}\nfilter: {model: none}\n",
+                                  "none.yaml");
+    INFO(m);
+    CHECK(m.find("none.yaml:11: filter.model: a filter needs a sensor model") != std::string::npos);
   }
   CHECK_NOTHROW(sim::parseScenario(std::string(kBase) + R"(
 gnss: {rate: 1 Hz, position_sigma: 1 mm, velocity_sigma: 1 mm/s}
@@ -316,7 +313,7 @@ filter: {model: {gyro: {all: [{type: white, density: 0.1 deg/sqrt(h)}, {type: bi
   CHECK(free.back().horizontal() > 1.0);  // the IMU errors do make the free run drift
 }
 
-TEST_CASE("coarse alignment with gyros that cannot gyrocompass: the run warns, a good gyro does not") {
+TEST_CASE("start warnings: gyros that cannot gyrocompass and a start prior too wide warn, a good gyro and a narrow prior do not") {
   // The heading 1-sigma after alignment is ≈ σ_gyro,east / (Ω cos L) (nav/alignment.hpp): at 48°
   // Ω cos L = 10.1 deg/h, so a 20 deg/h gyro bias gives ~110° (the warning's threshold is 10°) and
   // a 0.05 deg/h one ~0.3°.
