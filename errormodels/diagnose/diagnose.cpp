@@ -148,10 +148,12 @@ ChannelWork diagnoseChannel(const Record& record, const ErrorModelSpec& model, i
   // The noise level over the record, where rounding does not set it: on a lattice coarser than
   // the noise how often the value flips follows where the level sits in its cell (a drift of a
   // fraction of an LSB took the flips x0.64..x2.1 on the alt generator's quantized channels).
+  // The record's quiet stretches against the model's level: a stationary noise the change alone
+  // sizes is not named (selection.cpp, standsInForChange).
   if (w.lattice == 0.0) {
-    std::vector<double> spreads;
-    for (const auto& r : real) spreads.push_back(r.levelBlocks.spread);
-    d.noiseLevelChange = noiseLevelChange(measured.levelBlocks, y.size(), setup.rate, spreads);
+    std::vector<double> spreads, medians;
+    for (const auto& r : real) spreads.push_back(r.levelBlocks.spread), medians.push_back(r.levelBlocks.median);
+    d.noiseLevelChange = noiseLevelChange(measured.levelBlocks, y.size(), setup.rate, spreads, medians);
   }
   // What rounding onto the record's lattice adds to this model's AVAR: the realisations rounded
   // less the same realisations as they are (paired, so the difference has little scatter).

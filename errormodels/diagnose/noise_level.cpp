@@ -24,6 +24,7 @@ NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y) {
   }
   const double m = median(out.level);
   if (!(m > 0)) return {};
+  out.median = m;
   for (double& l : out.level) {
     l /= m;
     out.spread = std::max(out.spread, l > 0 ? std::abs(std::log(l)) : INFINITY);
@@ -32,7 +33,8 @@ NoiseLevelBlocks noiseLevelBlocks(const std::vector<double>& y) {
 }
 
 std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, std::size_t n, double rate,
-                                                 const std::vector<double>& modelSpreads) {
+                                                 const std::vector<double>& modelSpreads,
+                                                 const std::vector<double>& modelMedians) {
   if (rec.level.empty() || modelSpreads.empty()) return std::nullopt;
   const double most = *std::max_element(modelSpreads.begin(), modelSpreads.end());
   if (!(rec.spread > most && rec.spread > 2.0 * median(modelSpreads) && rec.spread > std::log(1.25)))
@@ -48,6 +50,20 @@ std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, st
   c.to = double(worst + 1) * per;
   c.worst = rec.level[worst];
   c.modelMost = std::exp(most);
+  for (double l : rec.level) c.changeExcess += (l * l - 1.0) / double(rec.level.size());
+  // The quiet stretches: the record's median block against the realisations' medians, in ln
+  // (a level's estimate scatters about symmetrically there), mean and sd over the realisations.
+  std::vector<double> ln;
+  for (double m : modelMedians)
+    if (m > 0) ln.push_back(std::log(m));
+  if (ln.size() >= 2 && rec.median > 0) {
+    double mean = 0, var = 0;
+    for (double v : ln) mean += v / double(ln.size());
+    for (double v : ln) var += (v - mean) * (v - mean) / double(ln.size() - 1);
+    c.quiet = std::exp(std::log(rec.median) - mean);
+    c.quietLnSd = std::sqrt(var);
+    c.quietZ = var > 0 ? (std::log(rec.median) - mean) / std::sqrt(var) : 0.0;
+  }
   return c;
 }
 

@@ -110,7 +110,15 @@ std::vector<std::string> unexplainedSentences(const AxisDiagnosis& a) {
       << " of their median, x" << num(c->worst, 3) << " at " << num(c->from, 4) << ".." << num(c->to, 4)
       << " s, where the model's realisations depart at most x" << num(c->modelMost, 3)
       << "; no effect of the catalogue changes with time (a vibration that comes and goes, a noise "
-         "that follows temperature): the findings are sized as if it did not";
+         "that follows temperature): the findings are sized as if it did not; its quiet blocks are x"
+      << num(c->quiet, 4) << " the model's level (" << num(c->quietZ, 3) << " sd of its realisations')";
+    if (!c->averaged.empty()) {
+      std::string names;
+      for (const auto& e : c->averaged) names += (names.empty() ? "" : ", ") + e;
+      o << ", less than half of what " << names
+        << " would add there sized to the whole record: a stationary noise that would mostly average the change, "
+           "not named";
+    }
     out.push_back(o.str());
   }
   return out;

@@ -24,8 +24,10 @@ struct Trials {
   std::vector<double> score, drop;
   std::vector<AllanSolution> sol;
   std::vector<char> refit;  // the trial fitted better with the AR base re-estimated
+  std::vector<char> standIn;  // a stationary noise sized by a change of the noise level (standsInForChange)
   void resize(std::size_t n) {
     score.assign(n, 0.0), drop.assign(n, 0.0), sol.assign(n, AllanSolution{}), refit.assign(n, 0);
+    standIn.assign(n, 0);
   }
 };
 
@@ -349,6 +351,46 @@ bool stillOpen(const ChannelWork& w, std::size_t i) {
   return same < w.cands[i].maxAccepted;
 }
 
+/// Tolerance of the quiet stretches' level, in sd of the realisations' ln medians.
+constexpr double kQuietSd = 3.0;
+
+/// Whether stationary noise candidate c, at its trial fit `sol` as the last of `trial`, stands in
+/// for a change of the channel's noise level (AxisDiagnosis::noiseLevelChange): a noise fitted to
+/// the whole record averages a burst into every stretch (alone, or with the level s raised beside
+/// it), and the trial model's Allan variance at the shortest tau then exceeds what the record's
+/// quiet stretches show. In units of the model's AVAR mu there: the trial raises the model from
+/// the current fit's (`now` [SI^2]) by d, and the quiet stretches show Q = quiet^2
+/// (noise_level.hpp). It stands in when d > 2 (Q - now) + tolerance, i.e. when the quiet stretches hold less than half
+/// of the rise -- unless they are themselves above the model at its stated level (1 and the
+/// findings taken, r) by more than that level is taken to be known (Q > r e^kLevelLnSd, a factor
+/// 1.5): a noise the model lacks in every stretch, beside the change (against a fit of another
+/// run the quiet stretches of real windows were 2-17 % above; a white the model lacks by 1.5-3x
+/// in Allan deviation is 2.25-9x). Signals (a line, a ramp) are not judged so, nor a noise with
+/// a test of its own (a rounding whose lattice the values show: on the alt generator's channel
+/// of a hidden quantization with outliers the flip rate on a lattice ~2x the noise read as a
+/// change of level, and the rounding was withheld).
+bool standsInForChange(const ChannelWork& w, const std::vector<const Candidate*>& trial, const AllanSolution& sol,
+                       double now) {
+  const auto& ch = w.d.noiseLevelChange;
+  const Candidate& c = *trial.back();
+  if (!ch || !c.signal.empty() || c.zSpecial > 0 || c.g.empty() || w.prob.mu.empty() || sol.theta.empty() ||
+      !(w.prob.mu[0] > 0))
+    return false;
+  const double mu = w.prob.mu[0];
+  const double total = modelAvarOf(w.prob, trial, sol)[0] / mu;
+  now /= mu;
+  const double r = 1.0 + total - sol.s - sol.theta.back() * c.g[0] / mu;
+  const double q2 = ch->quiet * ch->quiet;
+  if (q2 > r * std::exp(kLevelLnSd)) return false;
+  return total - now > 2.0 * (q2 - now) + 4.0 * kQuietSd * ch->quietLnSd * q2;
+}
+
+/// Whether candidate i may be named: still open, and at its last trial no stand-in for a change
+/// of the noise level (standsInForChange); such a one is shown among the candidates.
+bool nameable(const ChannelWork& w, const Trials& t, std::size_t i) {
+  return stillOpen(w, i) && !t.standIn[i];
+}
+
 /// Trial of every candidate still open (stillOpen: its effect not accepted yet, or one more line):
 /// added to the current set, the level and every free size refitted; drop = chi2 before - chi2
 /// after + own evidence - penalty x parameters. On a record with jumps, the smaller of that drop and the same on the record without
@@ -408,7 +450,8 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
       t.drop[i] = std::min(t.drop[i], before - jf.chi2 + own + gain);
     }
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
-    if (best < 0 || t.drop[i] > t.drop[std::size_t(best)]) best = std::ptrdiff_t(i);
+    t.standIn[i] = standsInForChange(w, trial, t.sol[i], currentAvar.empty() ? 0.0 : currentAvar[0]);
+    if (nameable(w, t, i) && (best < 0 || t.drop[i] > t.drop[std::size_t(best)])) best = std::ptrdiff_t(i);
   }
   return best;
 }
@@ -468,7 +511,7 @@ bool temperatureImitates(const ChannelWork& w, double penalty, const Trials& t, 
   std::vector<std::size_t> others;  // the best variant of each other effect that passes
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     const bool noise = w.cands[i].signal.empty(), ramp = w.cands[i].effect == "ramp";
-    if (!stillOpen(w, i) || !(noise || ramp) || t.drop[i] < threshold * threshold) continue;
+    if (!nameable(w, t, i) || !(noise || ramp) || t.drop[i] < threshold * threshold) continue;
     auto same = std::find_if(others.begin(), others.end(), [&](std::size_t j) { return w.cands[j].effect == w.cands[i].effect; });
     if (same == others.end()) others.push_back(i);
     else if (t.drop[i] > t.drop[*same]) *same = i;
@@ -504,7 +547,7 @@ bool thermalShape(const Candidate& c) {
 std::ptrdiff_t bestOpen(const ChannelWork& w, const Trials& t, const std::string& effect, bool is) {
   std::ptrdiff_t x = -1;
   for (std::size_t i = 0; i < w.cands.size(); ++i)
-    if (stillOpen(w, i) && (w.cands[i].effect == effect) == is && (x < 0 || t.drop[i] > t.drop[std::size_t(x)]))
+    if (nameable(w, t, i) && (w.cands[i].effect == effect) == is && (x < 0 || t.drop[i] > t.drop[std::size_t(x)]))
       x = std::ptrdiff_t(i);
   return x;
 }
@@ -709,6 +752,14 @@ void selectFindings(ChannelWork& w, double first, double next) {
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
   (switched ? d.switchingSteps : d.unexplainedSteps) = std::move(steps);
+  if (d.noiseLevelChange)  // the noises the last round would have named but for the change
+    for (std::size_t i = 0; i < w.cands.size(); ++i) {
+      auto& av = d.noiseLevelChange->averaged;
+      const double threshold = w.accepted.empty() ? first : next;
+      if (stillOpen(w, i) && t.standIn[i] && t.drop[i] >= threshold * threshold &&
+          std::find(av.begin(), av.end(), w.cands[i].effect) == av.end())
+        av.push_back(w.cands[i].effect);
+    }
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
   w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }
