@@ -24,6 +24,7 @@
 #include "errormodels/identify.hpp"
 #include "errormodels/imu_model.hpp"
 #include "errormodels/model_io.hpp"
+#include "errormodels/stats/special.hpp"
 #include "test_support.hpp"
 
 namespace dg = sinsim::errormodels::diagnose;
@@ -472,6 +473,25 @@ TEST_CASE("a model 10x too high is said to be off in level", "[diagnose]") {
   const auto both = dg::summaryTable(withFinding);
   CHECK_THAT(both, Catch::Contains("gx level: the record's noise is x0.1") && Catch::Contains("check the base first"));
   CHECK_THAT(table, !Catch::Contains("check the base first"));
+}
+
+// A record of a white gyro whose density is 1.2x the model's: 1.44x in Allan variance at every
+// tau, far outside the bands of 60 000 samples (chi2 of the model as given beyond its 0.999
+// quantile), a level factor only once s is fitted (the fitted s within a few % of 1.44). The table
+// says so instead of "no effect above threshold"; the model at its own density fits.
+TEST_CASE("a record that differs from its model in level alone is said to", "[diagnose]") {
+  const auto model = errorModelFromString("gyro:\n  x: [{type: white, density: 0.5 deg/sqrt(h)}]\n", "w.yaml");
+  const auto louder = errorModelFromString("gyro:\n  x: [{type: white, density: 0.6 deg/sqrt(h)}]\n", "w12.yaml");
+  auto o = options();
+  o.channels = {"gx"};
+  const auto r = dg::simulateRecord(louder, 100.0, 60000, 71, 0, {0, 0, 0, 0, 0, 0});
+  const auto d = dg::diagnose(r, model, o);
+  const auto& a = d.axis("gx");
+  REQUIRE_FALSE(a.fits());
+  CHECK(a.chi2 > sinsim::errormodels::chiSquareQuantile(0.999, double(a.chi2Points)));
+  CHECK(a.noiseScale == Approx(1.44).epsilon(0.05));
+  CHECK_THAT(dg::summaryTable(d), Catch::Contains("level only (x1.2"));
+  CHECK_THAT(dg::summaryTable(dg::diagnose(r, louder, o)), !Catch::Contains("level only"));
 }
 
 // The diagnosis counts an effect as present exactly when the simulator runs it: `enabled: no`,
