@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "errormodels/diagnose/series_tools.hpp"
 #include "errormodels/fit/allan_fit.hpp"
 #include "errormodels/stats/special.hpp"
 
@@ -18,18 +19,6 @@ double chi2Factor(double p, double nu) {
     return std::max(0.0, 1 + z * std::sqrt(2 / nu));
   }
   return chiSquareQuantile(p, nu) / nu;
-}
-
-struct Moments {
-  double mean = 0, var = 0;
-};
-Moments moments(const std::vector<double>& v) {
-  Moments m;
-  for (double x : v) m.mean += x;
-  m.mean /= double(v.size());
-  for (double x : v) m.var += (x - m.mean) * (x - m.mean);
-  m.var /= double(v.size() - 1);
-  return m;
 }
 
 /// Band of a variance-like statistic from its realisations (chi-square with nu = 2 mean^2/var).

@@ -118,9 +118,6 @@ struct NoiseLevelChange {
   /// its quiet stretches against the model's, and that in sd of the realisations' (ln) medians.
   /// quietLnSd: the sd of the realisations' ln medians.
   double quiet = 1, quietZ = 0, quietLnSd = 0;
-  /// The change's own excess: the blocks' mean square level over the median's, less 1 (the
-  /// variance a stationary noise would average it into, as a share of the quiet blocks').
-  double changeExcess = 0;
   /// The stationary noises that would have been named but only average the change: their trial
   /// raises the model at the shortest tau by more than twice what the quiet stretches show above
   /// the current fit (selection.cpp, standsInForChange). Tried and shown among the candidates,

@@ -50,19 +50,16 @@ std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, st
   c.to = double(worst + 1) * per;
   c.worst = rec.level[worst];
   c.modelMost = std::exp(most);
-  for (double l : rec.level) c.changeExcess += (l * l - 1.0) / double(rec.level.size());
   // The quiet stretches: the record's median block against the realisations' medians, in ln
   // (a level's estimate scatters about symmetrically there), mean and sd over the realisations.
   std::vector<double> ln;
   for (double m : modelMedians)
     if (m > 0) ln.push_back(std::log(m));
   if (ln.size() >= 2 && rec.median > 0) {
-    double mean = 0, var = 0;
-    for (double v : ln) mean += v / double(ln.size());
-    for (double v : ln) var += (v - mean) * (v - mean) / double(ln.size() - 1);
-    c.quiet = std::exp(std::log(rec.median) - mean);
-    c.quietLnSd = std::sqrt(var);
-    c.quietZ = var > 0 ? (std::log(rec.median) - mean) / std::sqrt(var) : 0.0;
+    const Moments m = moments(ln);
+    c.quiet = std::exp(std::log(rec.median) - m.mean);
+    c.quietLnSd = std::sqrt(m.var);
+    c.quietZ = m.var > 0 ? std::log(c.quiet) / c.quietLnSd : 0.0;
   }
   return c;
 }

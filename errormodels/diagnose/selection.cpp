@@ -752,14 +752,14 @@ void selectFindings(ChannelWork& w, double first, double next) {
   d.chi2Selected = w.sol.chi2;
   d.unexplained = unexplainedRange(w, set);
   (switched ? d.switchingSteps : d.unexplainedSteps) = std::move(steps);
-  if (d.noiseLevelChange)  // the noises the last round would have named but for the change
-    for (std::size_t i = 0; i < w.cands.size(); ++i) {
-      auto& av = d.noiseLevelChange->averaged;
-      const double threshold = w.accepted.empty() ? first : next;
+  if (d.noiseLevelChange) {  // the noises the last round would have named but for the change
+    auto& av = d.noiseLevelChange->averaged;
+    const double threshold = w.accepted.empty() ? first : next;
+    for (std::size_t i = 0; i < w.cands.size(); ++i)
       if (stillOpen(w, i) && t.standIn[i] && t.drop[i] >= threshold * threshold &&
           std::find(av.begin(), av.end(), w.cands[i].effect) == av.end())
         av.push_back(w.cands[i].effect);
-    }
+  }
   for (auto& f : otherFindings(w, t)) d.findings.push_back(f);
   w.prob.L = measured;  // improve() sizes the wanted effects against the record as measured
 }

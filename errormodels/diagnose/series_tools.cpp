@@ -6,6 +6,15 @@
 
 namespace sinsim::errormodels::diagnose::detail {
 
+Moments moments(const std::vector<double>& v) {
+  Moments m;
+  for (double x : v) m.mean += x;
+  m.mean /= double(v.size());
+  for (double x : v) m.var += (x - m.mean) * (x - m.mean);
+  m.var /= double(v.size() - 1);
+  return m;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);

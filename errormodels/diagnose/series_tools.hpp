@@ -23,6 +23,11 @@ struct BlockMeans {
 /// At most `blocks` blocks of y sampled every dt [s].
 BlockMeans blockMeans(const std::vector<double>& y, double dt, std::size_t blocks);
 
+/// Mean and sample variance (n - 1) of at least two values.
+struct Moments {
+  double mean = 0, var = 0;
+};
+Moments moments(const std::vector<double>& v);
 /// Median (the upper one for an even count); 0 for an empty vector.
 double median(std::vector<double> v);
 /// The Gaussian sd per median absolute deviation, 1 / Φ⁻¹(3/4).
