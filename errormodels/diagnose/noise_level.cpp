@@ -37,8 +37,8 @@ std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, st
                                                  const std::vector<double>& modelMedians) {
   if (rec.level.empty() || modelSpreads.empty()) return std::nullopt;
   const double most = *std::max_element(modelSpreads.begin(), modelSpreads.end());
-  if (!(rec.spread > most && rec.spread > 2.0 * median(modelSpreads) && rec.spread > std::log(1.25)))
-    return std::nullopt;
+  const double threshold = std::max({most, 2.0 * median(modelSpreads), std::log(1.25)});
+  if (!(rec.spread > threshold)) return std::nullopt;
   NoiseLevelChange c;
   c.lo = *std::min_element(rec.level.begin(), rec.level.end());
   c.hi = *std::max_element(rec.level.begin(), rec.level.end());
@@ -50,6 +50,13 @@ std::optional<NoiseLevelChange> noiseLevelChange(const NoiseLevelBlocks& rec, st
   c.to = double(worst + 1) * per;
   c.worst = rec.level[worst];
   c.modelMost = std::exp(most);
+  for (std::size_t b = 0; b < rec.level.size(); ++b) {
+    if (!(std::abs(std::log(rec.level[b])) > threshold)) continue;
+    if (!c.stretches.empty() && c.stretches.back().second == double(b) * per)
+      c.stretches.back().second = double(b + 1) * per;
+    else
+      c.stretches.emplace_back(double(b) * per, double(b + 1) * per);
+  }
   // The quiet stretches: the record's median block against the realisations' medians, in ln
   // (a level's estimate scatters about symmetrically there), mean and sd over the realisations.
   std::vector<double> ln;

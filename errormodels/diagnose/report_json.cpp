@@ -62,7 +62,8 @@ nlohmann::json axisJson(const AxisDiagnosis& a) {
   if (const auto& c = a.noiseLevelChange)  // absent: the noise keeps its level
     j["noise_level_change"] = {{"lo", c->lo}, {"hi", c->hi}, {"worst", c->worst}, {"from_s", c->from},
                                {"to_s", c->to}, {"model_most", c->modelMost},
-                               {"quiet", c->quiet}, {"quiet_z", c->quietZ}, {"averaged", c->averaged}};
+                               {"quiet", c->quiet}, {"quiet_z", c->quietZ}, {"averaged", c->averaged},
+                               {"stretches_s", c->stretches}};
   for (const auto& st : a.switchingSteps)  // absent: none a switching process explains
     j["switching_steps"].push_back({{"t_s", st.time}, {"size", st.size}});
   if (a.ljungBox)

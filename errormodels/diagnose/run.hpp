@@ -65,6 +65,10 @@ struct ChannelWork {
   /// Per candidate with a signal that takes most of the steps out but not all: ln AVAR of the
   /// record without the steps left once its signal is taken out (empty otherwise).
   std::vector<std::vector<double>> ownJumpFreeL;
+  /// On a record whose noise level changes (AxisDiagnosis::noiseLevelChange): ln AVAR of the
+  /// record without the accepted signals and without the stretches whose level departs, the
+  /// pieces joined (selection.cpp, quietRecord). Empty otherwise.
+  std::vector<double> quietL;
   /// The Allan problem's weight and bias under the realisations rounded onto the record's lattice
   /// (empty when they were not rounded): the problem's once a rounding of them is accepted.
   RoundedScatter rounded;

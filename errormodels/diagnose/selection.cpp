@@ -230,6 +230,29 @@ std::vector<double> lnAvarOf(const ChannelWork& w, const std::vector<double>& x)
   return av;
 }
 
+/// The series x without the stretches whose noise level departs (NoiseLevelChange::stretches),
+/// the pieces joined; empty when there is no change, or when what is left is under half of x or
+/// too short for the tau grid's longest factor. Every Allan shape can take part of a burst's
+/// excess: a burst's contribution at long tau is a white's, beside a model sized to the quiet
+/// level, and a ramp or a warm-up fitted to the long tau absorbs it. A signal the record holds is
+/// in its quiet stretches as well.
+std::vector<double> quietRecord(const ChannelWork& w, const std::vector<double>& x) {
+  const auto& ch = w.d.noiseLevelChange;
+  if (!ch || ch->stretches.empty() || w.factors.empty()) return {};
+  std::vector<double> q;
+  q.reserve(x.size());
+  std::size_t from = 0;
+  for (const auto& [a, b] : ch->stretches) {
+    const auto lo = std::min(x.size(), std::size_t(std::max(0.0, std::floor(a * w.rate))));
+    const auto hi = std::min(x.size(), std::size_t(std::max(0.0, std::ceil(b * w.rate))) + 1);
+    if (lo > from) q.insert(q.end(), x.begin() + std::ptrdiff_t(from), x.begin() + std::ptrdiff_t(lo));
+    from = std::max(from, hi);
+  }
+  if (from < x.size()) q.insert(q.end(), x.begin() + std::ptrdiff_t(from), x.end());
+  if (2 * q.size() < x.size() || 2 * w.factors.back() + 1 > q.size()) return {};
+  return q;
+}
+
 /// Sum of squared deviations from the mean of a piecewise-constant step series.
 double spread(const std::vector<double>& s) {
   double m = 0, ss = 0;
@@ -263,6 +286,8 @@ void markJumps(ChannelWork& w, const std::vector<double>& x) {
   w.jumpFreeCoef.clear();
   w.explainsJumps.assign(w.cands.size(), 0);
   w.ownJumpFreeL.assign(w.cands.size(), {});
+  const auto quiet = quietRecord(w, x);
+  w.quietL = quiet.empty() ? std::vector<double>{} : lnAvarOf(w, quiet);
   const auto modelAvar = modelAvarOf(w.prob, allanSet(w), w.sol);
   const auto& steps = w.steps;
   if (steps.empty()) return;
@@ -414,6 +439,12 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
     jumpFreeSol = solveAllan(jumpFree, set, w.sol.theta);
     chi2JumpFree = jumpFreeSol.chi2;
   }
+  AllanProblem quiet = w.prob;
+  double chi2Quiet = 0;
+  if (!w.quietL.empty()) {
+    quiet.L = w.quietL;
+    chi2Quiet = solveAllan(quiet, set, w.sol.theta).chi2;
+  }
   const auto v0 = lowFreqVarOf(w, set, w.sol);
   for (std::size_t i = 0; i < w.cands.size(); ++i) {
     if (!stillOpen(w, i) || !(only.empty() || w.cands[i].effect == only)) continue;
@@ -448,6 +479,11 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
                               ? lowFreqGain(w, w.jumpFreeCoef, lowFreqVarOf(w, set, jumpFreeSol), w.cands[i], trial, jf)
                               : 0.0;
       t.drop[i] = std::min(t.drop[i], before - jf.chi2 + own + gain);
+    }
+    if (!w.quietL.empty() && !w.cands[i].signal.empty()) {  // a signal: seen where the noise is quiet too
+      AllanProblem p = t.refit[i] ? refitProblem : quiet;
+      p.L = w.quietL;
+      t.drop[i] = std::min(t.drop[i], chi2Quiet - solveAllan(p, trial, start).chi2 + own);
     }
     t.score[i] = std::min(kMaxScore, std::sqrt(std::max(0.0, t.drop[i])));
     t.standIn[i] = standsInForChange(w, trial, t.sol[i], currentAvar.empty() ? 0.0 : currentAvar[0]);

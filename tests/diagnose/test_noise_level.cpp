@@ -63,6 +63,11 @@ TEST_CASE("noise level: a burst of doubled noise is found at its level and place
   CHECK(c->lo == Approx(1.0).epsilon(0.08));
   CHECK((c->from == Approx(120.0) || c->from == Approx(140.0)));
   CHECK(c->to - c->from == Approx(20.0));
+  // The stretch that departs: blocks 6 and 7 merged, 120..160 s (the others within 8 % of 1, below
+  // the change's threshold ln 1.25); a selection judges signals on the record without it.
+  REQUIRE(c->stretches.size() == 1);
+  CHECK(c->stretches[0].first == Approx(120.0));
+  CHECK(c->stretches[0].second == Approx(160.0));
   // Realisations that depart as much as the record: no change reported.
   CHECK_FALSE(dg::detail::noiseLevelChange(b, y.size(), 100.0, std::vector<double>(16, 0.8), {}).has_value());
 }
