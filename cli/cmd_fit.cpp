@@ -77,6 +77,7 @@ void printSummary(const errormodels::Identification& id) {
       std::printf(")");
       for (const auto& g : f.model.gm) std::printf(", GM tau %.4g s", g.tau);
     }
+    if (a.written.roundedRateLsb > 0.0) std::printf(", + quantization (each sample rounded onto the record's value lattice)");
     std::printf("\n");
   }
 }

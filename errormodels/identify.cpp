@@ -93,6 +93,30 @@ std::string describeArSlow(const fit::ArSlowFit& f, fit::SensorSignal s) {
   return t;
 }
 
+/// `--kind ar` writes the AR alone, which forgets within its correlation time: where the record's
+/// Allan deviation stays above the model's 99 % band up to its last tau (the record's AVAR over the
+/// model's beyond the chi-square 0.995 point at the point's EDF), the warning says from which tau
+/// and by how much. (A blind probe's AR(1) fits of white + GM + walk records predicted 0.1-0.46x
+/// the drift of the truth, with no word from `fit`.) Empty when the last two points are inside.
+std::string arLongTauWarning(const AxisIdentification& ax) {
+  const AllanCurve& c = ax.allan;
+  if (!ax.written.ar || c.size() < 2 || c.edf.size() != c.size()) return {};
+  const std::vector<double> model = ax.modelAdev(c.tau);
+  auto below = [&](std::size_t i) {
+    const double r = c.dev[i] * c.dev[i] / (model[i] * model[i]);
+    return c.edf[i] > 0.0 && r > chiSquareQuantile(0.995, c.edf[i]) / c.edf[i];
+  };
+  std::size_t from = c.size();
+  while (from > 0 && below(from - 1)) --from;
+  if (from + 2 > c.size()) return {};
+  const std::size_t last = c.size() - 1;
+  return "the AR model's ADEV is below the record's 99 % band from tau " + significant(c.tau[from], 3) +
+         " s up (" + significant(model[last] / c.dev[last], 2) + "x the record's at " + significant(c.tau[last], 3) +
+         " s): an AR forgets within its correlation time, and the record's slow part (a GM, a walk, a "
+         "flicker) is in no term of this model, so the drift it predicts is too small; --kind ar+slow fits "
+         "slow terms beside the AR, --kind auto chooses";
+}
+
 fit::SensorSignal signalOf(Sensor s) {
   return s == Sensor::gyro ? fit::SensorSignal::Gyro : fit::SensorSignal::Accel;
 }
@@ -312,6 +336,12 @@ void writeVisibleLattice(fit::AxisFitResult& w, const std::vector<double>& x, do
     const double before = m.white;
     m.white = std::sqrt(m.white * m.white - v * dt);
     moved = "the white density x" + significant(m.white / before, 4);
+    // Its stated 1-sigma moves with it: the same relative width about the value written.
+    for (fit::LatentParameter& p : w.latent->parameters)
+      if (p.name == "white") {
+        const double k = m.white / before;
+        p.value *= k, p.stdError *= k, p.logCenter += std::log(k);
+      }
   } else if (m.arVariance > 0.0 && v <= 0.5 * m.arVariance) {
     const double before = std::sqrt(m.arVariance);
     if (const auto less = fit::arLessWhite(m.arPolynomial, m.arVariance, v)) {
@@ -645,6 +675,8 @@ Identification identifyOnce(const Record& record, const IdentifyOptions& opt) {
         break;
       }
 
+      if (ax.kind == IdentifyKind::Ar)
+        if (std::string w = arLongTauWarning(ax); !w.empty()) warnings[slot].push_back(std::string(c.name) + ": " + w);
       if (ax.arDenoised && ax.ar && ax.written.ar) {
         const auto &other = opt.arOnDenoised ? *ax.ar : *ax.arDenoised;
         std::string s = std::string("for comparison, AR(") +

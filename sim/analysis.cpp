@@ -168,8 +168,8 @@ void addChannelToPage(report::HtmlPage& page, const ChannelStats& c, const Analy
     if (lo > 0 && lo < hi) adev.yRange = std::make_pair(lo / 2.0, hi * 2.0);
     readout = "Read off the Allan deviation: white noise N = " + formatNumber(nt.N * u.density) +
               " " + u.densityUnit + " (" + (u.levelUnit == "deg/h" ? "ARW" : "VRW") +
-              "), bias instability B = " + formatNumber(nt.B * k) + " " + unit + " at τ = " +
-              formatNumber(nt.tauB) + " s, rate random walk K ≤ " + formatNumber(nt.K * u.walk) +
+              "), bias instability B " + (nt.bStillFalling ? "≤ " : "= ") + formatNumber(nt.B * k) + " " + unit +
+              " at τ = " + formatNumber(nt.tauB) + (nt.bStillFalling ? " s (the curve still falls there)" : " s") + ", rate random walk K ≤ " + formatNumber(nt.K * u.walk) +
               " " + u.walkUnit + " (at the longest τ, " + formatNumber(t1) + " s).";
   }
 

@@ -58,6 +58,9 @@ struct NoiseTerms {
   double shortSlope = NAN;  // log-log slope between the two shortest τ (white: −½)
   double B = NAN;     // bias instability [unit]
   double tauB = NAN;  // τ of the minimum [s]
+  /// The minimum is the longest τ: the curve still falls there, no floor is in the record, and B
+  /// is only an upper bound.
+  bool bStillFalling = false;
   double K = NAN;     // rate random walk [unit/√s]
 };
 /// N is read at the shortest τ unless the curve's slope there is more than 0.1 from white noise's

@@ -50,6 +50,7 @@ NoiseTerms readNoiseTerms(const errormodels::AllanCurve& a) {
   }
   t.B = a.dev[k] / 0.664;
   t.tauB = a.tau[k];
+  t.bStillFalling = a.size() > 1 && k + 1 == a.size();
   t.K = a.dev.back() * std::sqrt(3.0 / a.tau.back());
   return t;
 }
@@ -76,7 +77,8 @@ std::string analysisSummary(const std::vector<ChannelStats>& stats) {
     if (c.allan.size() > 0 && !c.constant) {
       std::snprintf(line, sizeof line, "%.4g %s at %.3g s", t.N * u.density, u.densityUnit.c_str(), t.tauN);
       N = line;
-      std::snprintf(line, sizeof line, "%.4g %s at %.3g s", t.B * u.level, u.levelUnit.c_str(), t.tauB);
+      std::snprintf(line, sizeof line, t.bStillFalling ? "<= %.4g %s at %.3g s (still falling)" : "%.4g %s at %.3g s",
+                    t.B * u.level, u.levelUnit.c_str(), t.tauB);
       B = line;
     }
     char mean[64], sd[64];

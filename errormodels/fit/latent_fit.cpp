@@ -1138,8 +1138,9 @@ void warnBelowStart(LatentFit& fit, const std::vector<std::size_t>& m, const std
   const double worst = fit.belowStartRatio;
   fit.warnings.push_back("below the fitted range (tau < " + fmt(fit.tau.front()) + " s) the model's ADEV is " +
                          fmt(worst, 3) + "x the record's at " + fmt(at) + " s: " +
-                         (worst > 1.0 ? "the record falls below white noise there, as behind a sensor's low-pass "
-                                        "filter (an AR carries such a shape: --kind ar+slow or auto)"
+                         (worst > 1.0 ? "the record falls below the fitted terms there: as behind a sensor's low-pass "
+                                        "filter (an AR carries such a shape: --kind ar+slow or auto), or where "
+                                        "the set lacks a faster correlated term (a second GM: --kind latent or auto)"
                                       : "the record holds a short-tau feature no term carries"));
 }
 

@@ -43,6 +43,10 @@ TEST_CASE("analyze reads the white density where the Allan curve has white noise
   CHECK(w.tauN == white.allan.tau.front());
   CHECK(w.N == Approx(kN).epsilon(0.02));
   CHECK(sim::analysisWarnings({white}).empty());
+  // Its curve falls to the longest tau: no floor, and the table shows B as a bound there.
+  CHECK(w.bStillFalling);
+  CHECK(w.tauB == white.allan.tau.back());
+  CHECK_THAT(sim::analysisSummary({white}), Catch::Contains("(still falling)"));
 
   // The same noise averaged over 8 samples (a low-pass filter, as a sensor's output chain): at
   // one sample the ADEV is ~1/8 of white noise's, so N read there is far too low; beyond a few
@@ -60,4 +64,22 @@ TEST_CASE("analyze reads the white density where the Allan curve has white noise
   const auto warnings = sim::analysisWarnings({filtered});
   REQUIRE(warnings.size() == 1);
   CHECK_THAT(warnings[0], Catch::Contains("a low-pass filter in the sensor (or a correlated noise) under-reads the white noise"));
+}
+
+// White noise plus a random walk whose Allan minimum, sqrt(3) N / K, is at 10 s of a 2000-s
+// record: the minimum is inside the curve (its Allan deviation rises sqrt(tau) beyond it, 4.5x at
+// the longest tau of ~200 s), B is read there, and the table says nothing of a falling curve.
+TEST_CASE("analyze reads B at an Allan minimum inside the curve, and says when there is none", "[analysis]") {
+  const double K = std::sqrt(3.0) * kN / 10.0;  // [unit/√s]: minimum at 10 s
+  std::vector<double> y = whiteNoise(200000, 9);
+  std::mt19937_64 rng(10);
+  std::normal_distribution<double> g(0.0, K / std::sqrt(kRate));
+  double b = 0;
+  for (double& v : y) v += (b += g(rng));
+  const auto walk = stats(y);
+  const sim::NoiseTerms t = sim::readNoiseTerms(walk.allan);
+  CHECK_FALSE(t.bStillFalling);
+  CHECK(t.tauB > 2.0);
+  CHECK(t.tauB < 50.0);
+  CHECK_THAT(sim::analysisSummary({walk}), !Catch::Contains("still falling"));
 }
