@@ -74,6 +74,12 @@ struct Candidate {
   /// later signal is fitted beside them (DetectorContext::taken). Empty for noises and for
   /// signals no slow shape overlaps (lines, spikes).
   std::vector<std::vector<double>> basis;
+  /// A slow deterministic shape in time (ramp, warm-up, temperature, level steps): a burst of broadband noise
+  /// raises the long tau it explains, so on a record whose noise level changes it is credited
+  /// only with what it also explains without the loud stretches (selection.cpp, quietRecord). A
+  /// line or spikes are not: a burst of broadband noise makes no narrow line, and a vibration
+  /// that comes and goes is its line.
+  bool slowShape = false;
   /// The signal as `describe` states it, where that differs from `signal`: a signal fitted beside
   /// signals already taken out has its joint size (Frisch-Waugh-Lovell), and `signal` is only its
   /// part apart from them (what the record without them still holds); this is the whole effect

@@ -234,8 +234,8 @@ std::vector<double> lnAvarOf(const ChannelWork& w, const std::vector<double>& x)
 /// the pieces joined; empty when there is no change, or when what is left is under half of x or
 /// too short for the tau grid's longest factor. Every Allan shape can take part of a burst's
 /// excess: a burst's contribution at long tau is a white's, beside a model sized to the quiet
-/// level, and a ramp or a warm-up fitted to the long tau absorbs it. A signal the record holds is
-/// in its quiet stretches as well.
+/// level, and a ramp or a warm-up fitted to the long tau absorbs it. A drift the record holds is
+/// in its quiet stretches as well (Candidate::slowShape).
 std::vector<double> quietRecord(const ChannelWork& w, const std::vector<double>& x) {
   const auto& ch = w.d.noiseLevelChange;
   if (!ch || ch->stretches.empty() || w.factors.empty()) return {};
@@ -480,7 +480,7 @@ std::ptrdiff_t trialRound(const ChannelWork& w, double penalty, Trials& t, const
                               : 0.0;
       t.drop[i] = std::min(t.drop[i], before - jf.chi2 + own + gain);
     }
-    if (!w.quietL.empty() && !w.cands[i].signal.empty()) {  // a signal: seen where the noise is quiet too
+    if (!w.quietL.empty() && w.cands[i].slowShape) {  // a drift: seen where the noise is quiet too
       AllanProblem p = t.refit[i] ? refitProblem : quiet;
       p.L = w.quietL;
       t.drop[i] = std::min(t.drop[i], chi2Quiet - solveAllan(p, trial, start).chi2 + own);

@@ -18,6 +18,7 @@ std::vector<Candidate> detect_bias_jumps(const DetectorContext& ctx) {
   const Units& u = ctx.units;
   Candidate c;
   c.effect = "bias_jumps";
+  c.slowShape = true;
   c.freeSize = false;
   c.parameters = 2 * jumps.size();
   double mean = 0;

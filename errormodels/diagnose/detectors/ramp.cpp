@@ -45,6 +45,7 @@ std::vector<Candidate> detect_ramp(const DetectorContext& ctx) {
   if (ctx.spanned(line)) return {};
   Candidate c;
   c.effect = "ramp";
+  c.slowShape = true;
   c.basis = {line};
   double slope = 0;
   if (ctx.taken.empty()) {

@@ -131,6 +131,7 @@ std::vector<Candidate> detect_temperature(const DetectorContext& ctx) {
     std::vector<double> sig = polynomialSignal(TK, T0, coef);
     Candidate c;
     c.effect = "temperature";
+    c.slowShape = true;
     c.freeSize = false;
     c.parameters = std::size_t(degree);
     for (int p = 1; p <= degree; ++p) {  // (T - T0)^p

@@ -103,6 +103,7 @@ std::optional<Candidate> settlingCandidate(const DetectorContext& ctx, const Set
   for (std::size_t k = 0; k < ctx.N; ++k) w[k] = A * shapeX[k];
   Candidate c;
   c.effect = "warmup";
+  c.slowShape = true;
   c.freeSize = false;
   c.parameters = 2;  // amplitude and time constant
   // Beside a trend the amplitude is already the joint fit's, so a drift found later is fitted on
