@@ -120,8 +120,9 @@ struct NoiseLevelChange {
   /// quietLnSd: the sd of the realisations' ln medians.
   double quiet = 1, quietZ = 0, quietLnSd = 0;
   /// The stretches [s] (from, to) whose blocks depart from the median block by more than the
-  /// realisations' blocks do (the change's own threshold), adjacent blocks merged. A signal is
-  /// named only if the record without them shows it too (selection.cpp, quietRecord).
+  /// realisations' blocks do (the change's own threshold), adjacent blocks merged. A slow shape
+  /// in time (Candidate::slowShape) is named only if the record without them shows it too
+  /// (selection.cpp, quietRecord).
   std::vector<std::pair<double, double>> stretches;
   /// The stationary noises that would have been named but only average the change: their trial
   /// raises the model at the shortest tau by more than twice what the quiet stretches show above
