@@ -94,17 +94,19 @@ std::string describeArSlow(const fit::ArSlowFit& f, fit::SensorSignal s) {
 }
 
 /// `--kind ar` writes the AR alone, which forgets within its correlation time: where the record's
-/// Allan deviation stays above the model's 99 % band up to its last tau (the record's AVAR over the
-/// model's beyond the chi-square 0.995 point at the point's EDF), the warning says from which tau
-/// and by how much. (A blind probe's AR(1) fits of white + GM + walk records predicted 0.1-0.46x
+/// Allan deviation stays above the model's 99 % band up to its last tau (the model below the
+/// record's 99 % chi-square bound at the point's EDF, chiSquareBounds), the warning says from which
+/// tau and by how much. (A blind probe's AR(1) fits of white + GM + walk records predicted 0.1-0.46x
 /// the drift of the truth, with no word from `fit`.) Empty when the last two points are inside.
 std::string arLongTauWarning(const AxisIdentification& ax) {
   const AllanCurve& c = ax.allan;
   if (!ax.written.ar || c.size() < 2 || c.edf.size() != c.size()) return {};
   const std::vector<double> model = ax.modelAdev(c.tau);
   auto below = [&](std::size_t i) {
-    const double r = c.dev[i] * c.dev[i] / (model[i] * model[i]);
-    return c.edf[i] > 0.0 && r > chiSquareQuantile(0.995, c.edf[i]) / c.edf[i];
+    if (!(c.edf[i] > 0.0)) return false;
+    double lo = 0, hi = 0;
+    chiSquareBounds(c.dev[i], c.edf[i], 0.99, lo, hi);
+    return model[i] < lo;
   };
   std::size_t from = c.size();
   while (from > 0 && below(from - 1)) --from;
