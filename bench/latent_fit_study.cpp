@@ -515,6 +515,9 @@ struct Tally {
   /// Fits whose drift the trend alone added (LatentFit::trendDrift: the likelihood's slope test
   /// chose it, the Allan fit of that set put it at zero).
   int trendDrift = 0;
+  /// Fits with a drift, and those among them warned that a walk explains the trend nearly as well
+  /// (LatentFit::driftWalkGap below kDriftSlopeChi2, drift_gls.hpp).
+  int drifts = 0, walkLikeDrifts = 0;
   /// STUDY_ORACLE (oracleProbe): records right for the same penalties at best, for any penalty
   /// monotone in the parameter count at best, block-detectable, and right among those.
   int oracled = 0, oracleSame = 0, oracleMonotone = 0, oracleDetectable = 0, oracleRightDetectable = 0;
@@ -596,6 +599,8 @@ struct Tally {
     }
     ++chosen[f.terms.name()];
     trendDrift += f.trendDrift;
+    drifts += f.terms.drift;
+    walkLikeDrifts += f.terms.drift && f.driftWalkGap < fit::kDriftSlopeChi2;
     likelihoodChecked += !f.parameterNote.empty();
     if (truth.randomWalk) {
       fit::LatentTermSet swapped = truth, got = f.terms;
@@ -662,6 +667,8 @@ struct Tally {
     }
     if (walkAsGm > 0) std::printf("\n   the walk read as a GM: %d/%d", walkAsGm, fitted + failed);
     if (trendDrift > 0) std::printf("\n   a drift added from the trend alone: %d/%d", trendDrift, fitted + failed);
+    if (drifts > 0) std::printf("\n   a drift chosen: %d/%d, warned that a walk explains its trend nearly as well: %d",
+                                drifts, fitted + failed, walkLikeDrifts);
     if (likelihoodChecked > 0)
       std::printf("\n   the Allan optimum rejected by the block likelihood, its nearest fit written: %d/%d",
                   likelihoodChecked, fitted + failed);

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "common/error.hpp"
+#include "common/limits.hpp"
 #include "errormodels/fit/block_likelihood.hpp"
+#include "errormodels/fit/golden_section.hpp"
 
 namespace sinsim::errormodels::fit {
 
@@ -46,6 +48,15 @@ void setDrift(LatentFit& fit, double R, double sd) {
   }
 }
 
+/// The drift's warning where a walk explains its trend nearly as well (driftWalkAlternative).
+std::string walkWarning(const DriftWalkAlternative& w) {
+  return "drift: a random walk explains the record's trend nearly as well (-2 log L " + limits::fmt(w.gap, 3) +
+         " above the ramp's, within the ramp's own cost " + limits::fmt(kDriftSlopeChi2, 3) + "; the walk's K " +
+         limits::fmt(w.K, 4) + " (SI), in the file's unit in its drift comment): a ramp is the same in every "
+         "Monte Carlo run of this model, a walk's trend differs from run to run; if this sensor's trend does not "
+         "repeat, write the walk in place of the ramp";
+}
+
 /// The drift term added to a fit whose Allan fit held none (LatentFit::trendDrift): the set, a
 /// "drift" parameter row last (logParameters' order) and its row and column in logCovariance.
 void addDriftTerm(LatentFit& fit) {
@@ -69,8 +80,10 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest
   LatentModel others = fit.model;
   others.drift = 0.0;
   BlockLikelihood gls;
+  BlockMeans means;
   try {
-    gls = blockLikelihood(blockMeans(x, fit.sampleInterval, B), others);
+    means = blockMeans(x, fit.sampleInterval, B);
+    gls = blockLikelihood(means, others);
   } catch (const Error&) {
     return;
   }
@@ -91,6 +104,29 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest
                                     [&](const std::string& w) { return w.rfind(stale, 0) == 0; }),
                      fit.warnings.end());
   if (sd > R) fit.warnings.push_back(uncertaintyWarning(fit.parameter("drift")));
+  try {
+    const DriftWalkAlternative walk = driftWalkAlternative(means, others, gls.m2LogLikDrift, R);
+    fit.driftWalkGap = walk.gap, fit.driftWalkK = walk.K;
+    if (walk.gap < kDriftSlopeChi2) fit.warnings.push_back(walkWarning(walk));
+  } catch (const Error&) {
+  }
+}
+
+DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others, double drifted, double R) {
+  const double T = means.dt * double(means.perBlock * means.y.size());
+  const double K0 = R * std::sqrt(T);
+  const double lo = others.randomWalk > 0.0 ? others.randomWalk : K0 / 1000.0;
+  const double hi = std::max(100.0 * K0, 10.0 * lo);
+  auto at = [&](double u) {
+    LatentModel m = others;
+    m.randomWalk = std::exp(u);
+    return std::make_pair(m.randomWalk, blockLikelihood(means, m).m2LogLik);
+  };
+  const auto best = goldenSectionLog(lo, hi, 48, at, [](const auto& f) { return f.second; });
+  // The set's own walk (or none) is one end of the range: never worse than what the set had.
+  const double own = blockLikelihood(means, others).m2LogLik;
+  if (own <= best.second) return {own - drifted, others.randomWalk};
+  return {best.second - drifted, best.first};
 }
 
 }  // namespace sinsim::errormodels::fit

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "errormodels/fit/block_likelihood.hpp"
 #include "errormodels/fit/latent_fit.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -38,5 +39,19 @@ namespace sinsim::errormodels::fit {
 /// Block means average the lattice rounding's non-Gaussian steps away, which is why the
 /// likelihood is not used for the set itself there.
 void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest = false);
+
+/// The trend a drift fits, fitted as a random walk instead: the other terms held at `others`
+/// (the fit's, drift removed), the walk's K minimised over a log range by golden sections (from
+/// the set's own K, or from R sqrt(T) / 1000, to 100 R sqrt(T) and beyond the set's own K), and
+/// its -2 log L of the block means compared with `drifted` (the same terms with the slope
+/// profiled out). Returns {gap, K}: the walk's -2 log L minus the ramp's, and the walk's K.
+/// A trend over a record is what a walk, or a GM slower than the record, leaves there too, and
+/// the two differ in little but a ramp's straightness (a ramp's periodogram falls as 1/f^2, a
+/// walk's expected one does too). Where the gap is below the drift's own cost against the set
+/// (kDriftSlopeChi2), the record does not tell them apart at the 1 % level.
+struct DriftWalkAlternative {
+  double gap = 0.0, K = 0.0;
+};
+DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others, double drifted, double R);
 
 }  // namespace sinsim::errormodels::fit

@@ -269,6 +269,12 @@ struct LatentFit {
   /// The likelihood's choice was this set + drift, but its Allan fit held no drift (put it at
   /// zero): the drift is the record's trend's alone, added by drift_gls.hpp (with a record).
   bool trendDrift = false;
+  /// With a drift fitted from a record's trend (driftSlope finite): the same trend as a random
+  /// walk instead (driftWalkAlternative, drift_gls.hpp): the walk's -2 log L of the block means
+  /// above the ramp's, and its K [U / sqrt(s)] (the whole walk, the set's own included); NaN
+  /// where not computed. Warned where the gap is below kDriftSlopeChi2.
+  double driftWalkGap = std::numeric_limits<double>::quiet_NaN();
+  double driftWalkK = std::numeric_limits<double>::quiet_NaN();
   /// Where the block likelihood rejected the Allan fit's optimum of the chosen set and the
   /// parameters written are the Allan fit nearest the likelihood's (likelihoodCheckedFit): what
   /// was done, for the model file; empty otherwise.

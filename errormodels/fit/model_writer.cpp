@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "common/number_text.hpp"
+#include "errormodels/fit/block_likelihood.hpp"
 #include "errormodels/model_io.hpp"
 
 namespace sinsim::errormodels::fit {
@@ -343,6 +344,10 @@ void addLatent(ListBuilder& b, const LatentFit& f, const Units& u, Dimension sig
                    : "; its size from the Allan variance, its sign the record's least-squares trend's")
            << (f.trendDrift ? "; chosen by the likelihood's slope test, where the Allan variance alone put it at zero" : "")
            << ")";
+    if (f.driftWalkGap < kDriftSlopeChi2)
+      b.line << "; a random_walk of K " << q(f.driftWalkK, u.walk) << " explains this trend nearly as well (-2 log L "
+             << num(f.driftWalkGap, 3) << " above the ramp's): a ramp repeats in every Monte Carlo run, a walk's "
+             << "trend does not";
     b.endComment();
     b.add(EffectSpec::make("ramp", {withSigma(ParamSpec::quantity("slope", rampSign * m.drift, signal / time),
                                               {sd("drift")})}));
