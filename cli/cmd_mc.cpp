@@ -74,6 +74,7 @@ struct Args {
   std::string outDir;
   std::string times;
   bool budget = false;
+  std::string reference;
   std::string measured;
   RecordArgs record;  // of --measured
   std::string latitude = "51.08 deg", longitude = "-114.13 deg", height = "1100 m";
@@ -231,6 +232,7 @@ int runMc(const Args& a) {
     if (!a.times.empty())
       for (const auto& t : splitList(a.times)) opt.times.push_back(parseDuration(t, "--times"));
     opt.budget = a.budget;
+    opt.reference = a.reference;
     opt.navigate.biasWindow = a.biasWindow.empty() ? 0.0 : parseDuration(a.biasWindow, "--bias-window");
     opt.resume = a.resume;
     opt.outDir = a.outDir;
@@ -287,6 +289,9 @@ void addMcCommand(CLI::App& app, Action& action) {
   c->add_option("--times", a->times,
                 "Report times, comma-separated (\"60,300\" s or \"5 min,10 min\"; default: the end)");
   c->add_flag("--budget", a->budget, "Error budget: switch each effect off in turn");
+  c->add_option("--reference", a->reference,
+                "Compare every model with this one only (its label: the model file's name without .yaml; "
+                "default: every pair)");
   c->add_option("--measured", a->measured,
                 "A static record (CSV, .gz) to navigate and place in each model's envelope");
   addRecordOptions(c, a->record);  // of the --measured record

@@ -46,6 +46,7 @@ McCommandResult runMcBatch(const McRequest& request) {
     scenarioIdentity = readRegularFile(request.scenarioPath, limits::kMaxYamlBytes, "YAML file");
   }
   const std::vector<McModel> models = loadMcModels(request.models, sc, scenarioIdentity);
+  requireReference(models, opt.reference);  // before a measured record is navigated
 
   opt.seed = request.seed ? *request.seed : sc.seed.value_or(0);
   if (opt.outDir.empty()) opt.outDir = (std::filesystem::path("out") / sc.folderName("mc-")).string();
@@ -77,7 +78,8 @@ McCommandResult runMcBatch(const McRequest& request) {
                                       : " has one effect, which is all its drift") +
                                  ": nothing to switch off");
   if (batch.result.complete && opt.partition.rank == 0)
-    batch.headlines = mcHeadlines(ref, batch.result, models.size(), opt.times, measuredSetup ? &measured : nullptr);
+    batch.headlines =
+        mcHeadlines(ref, batch.result, models.size(), opt.times, measuredSetup ? &measured : nullptr, opt.reference);
   return batch;
 }
 

@@ -44,7 +44,10 @@ McHeadlines mcHeadlines(const McBatch& batch, std::size_t models) {
                             mcstats::percentileSorted(v, 95)});
     }
     for (std::size_t a = 0; a < models; ++a)
-      for (std::size_t b = a + 1; b < models; ++b) {
+      for (std::size_t b = 0; b < models; ++b) {
+        const bool wanted = batch.reference.empty() ? b > a
+                                                    : a != b && batch.entries[a].label == batch.reference;
+        if (!wanted) continue;
         McPairedHeadline p;
         p.a = batch.entries[a].label;
         p.b = batch.entries[b].label;
@@ -77,9 +80,10 @@ McHeadlines mcHeadlines(const McBatch& batch, std::size_t models) {
 }
 
 McHeadlines mcHeadlines(const Reference& ref, const McResult& r, std::size_t models,
-                        const std::vector<double>& times, const McMeasured* measured) {
+                        const std::vector<double>& times, const McMeasured* measured, const std::string& reference) {
   McBatch batch(ref);
   batch.measured = measured;
+  batch.reference = reference;
   batch.runs = r.errors.empty() ? 0 : r.errors[0].size() / ref.runFloats();
   batch.timeEpochs = reportEpochs(ref, times);
   for (std::size_t m = 0; m < models; ++m) batch.entries.push_back({r.labels[m], "", -1, ""});

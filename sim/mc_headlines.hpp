@@ -38,7 +38,9 @@ struct McPairedHeadline {
 
 struct McHeadlines {
   std::vector<McHeadline> models;       // time-major: every model at the first time, then ...
-  std::vector<McPairedHeadline> pairs;  // every pair of the given models at every time
+  /// Every pair of the given models at every time, or each model against the batch's reference
+  /// (McOptions::reference) with the reference first.
+  std::vector<McPairedHeadline> pairs;
   std::vector<McAidedSummary> aided;    // per model, of a batch whose scenario runs the filter
   /// With a measured record: its horizontal error at the last report time and its mid-rank
   /// percentile among each model's runs, as a sentence; empty otherwise.
@@ -52,6 +54,7 @@ McHeadlines mcHeadlines(const McBatch& batch, std::size_t models);
 /// The same from a complete result (rank 0) and the report times (McOptions::times), with the
 /// measured record navigated along the reference where there is one.
 McHeadlines mcHeadlines(const Reference& ref, const McResult& result, std::size_t models,
-                        const std::vector<double>& times, const McMeasured* measured = nullptr);
+                        const std::vector<double>& times, const McMeasured* measured = nullptr,
+                        const std::string& reference = "");
 
 }  // namespace sinsim::sim

@@ -24,6 +24,7 @@ struct McBatch {
   std::uint64_t runs = 0;
   std::uint64_t seed = 0;
   double biasWindow = 0.0;
+  std::string reference;                   // McOptions::reference
   std::vector<std::size_t> timeEpochs;     // report epochs
   std::vector<Entry> entries;              // models, then budget variants
   std::vector<std::vector<std::string>> effectNames;  // per entry

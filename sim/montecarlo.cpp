@@ -60,6 +60,15 @@ std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<do
   return epochs;
 }
 
+void requireReference(const std::vector<McModel>& models, const std::string& reference) {
+  if (reference.empty()) return;
+  std::string labels;
+  bool found = false;
+  for (const McModel& m : models) found |= m.label == reference, labels += " " + m.label;
+  if (!found)
+    throw InputError("--reference " + reference + ": no model has that label (the models:" + labels + ")");
+}
+
 McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primaryModels,
                        const McOptions& opt) {
   const auto wallStart = std::chrono::steady_clock::now();
@@ -79,6 +88,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
     for (std::size_t j = 0; j < i; ++j)
       if (primaryModels[i].label == primaryModels[j].label)
         throw InputError("two models share the label " + primaryModels[i].label);
+  requireReference(primaryModels, opt.reference);
   const std::vector<std::size_t> timeEpochs = reportEpochs(ref, opt.times);
 
   // ---- the batch: models and budget variants -----------------------------------------------------
@@ -88,6 +98,7 @@ McResult runMonteCarlo(const Reference& ref, const std::vector<McModel>& primary
   batch.timeEpochs = timeEpochs;
   batch.measured = opt.measured;
   batch.biasWindow = opt.navigate.biasWindow;
+  batch.reference = opt.reference;
   std::vector<McModel> models = primaryModels;
   for (std::size_t i = 0; i < primaryModels.size(); ++i) {
     batch.entries.push_back({primaryModels[i].label, primaryModels[i].model.source(), -1, ""});

@@ -76,6 +76,9 @@ struct McOptions {
   /// Adds, for every model, the variants with one effect switched off (ImuErrorModel::filtered)
   /// and reports each effect's share of the mean-square horizontal drift.
   bool budget = false;
+  /// The label of the model every other model is compared with in the headlines (paired
+  /// comparison of the horizontal drift); empty: every pair. Must name one of the models.
+  std::string reference;
   NavigateOptions navigate;
   bool resume = false;
   std::string outDir;        // required
@@ -122,6 +125,9 @@ constexpr std::uint64_t kChunkRuns = 8;
 /// The output epochs of the report times [s] (McOptions::times), each snapped to the nearest
 /// epoch; no times: the last epoch. Throws InputError for a time outside the run.
 std::vector<std::size_t> reportEpochs(const Reference& ref, const std::vector<double>& times);
+
+/// InputError unless `reference` is empty or the label of one of `models` (McOptions::reference).
+void requireReference(const std::vector<McModel>& models, const std::string& reference);
 
 /// Runs (or resumes) a batch. Throws InputError for bad options or a checkpoint folder that
 /// belongs to another batch; nothing is written before the options are validated.

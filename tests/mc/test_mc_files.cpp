@@ -176,6 +176,42 @@ TEST_CASE("sinsim mc: --budget of a model with one effect says there is nothing 
   fs::remove_all(tmp);
 }
 
+TEST_CASE("sinsim mc: --reference compares every model with one, and names the labels when it matches none") {
+  const fs::path tmp = tempDir("reference");
+  const fs::path sc = writeScenario(tmp);
+  std::string models;
+  for (const char* name : {"a", "b", "c", "d"}) {
+    std::ofstream(tmp / (std::string(name) + ".yaml")) << "gyro: {x: [{type: white, density: 0.1 deg/sqrt(h)}]}\n";
+    models += " --model '" + (tmp / (std::string(name) + ".yaml")).string() + "'";
+  }
+  auto sentences = [](const std::string& out) {
+    std::size_t n = 0;
+    for (std::size_t at = out.find("horizontal drift"); at != std::string::npos; at = out.find("horizontal drift", at + 1))
+      ++n;
+    return n;
+  };
+  const std::string base = "mc '" + sc.string() + "' --runs 3 --threads 1" + models;
+  const Result all = sinsim(base + " -o '" + (tmp / "all").string() + "'", tmp);
+  REQUIRE(all.exitCode == 0);
+  CHECK(sentences(all.out) == 6);  // 4 models: every pair, one report time
+  const Result one = sinsim(base + " --reference c -o '" + (tmp / "one").string() + "'", tmp);
+  INFO(one.err);
+  REQUIRE(one.exitCode == 0);
+  CHECK(sentences(one.out) == 3);  // c against a, b and d
+  std::istringstream lines(one.out);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("horizontal drift") != std::string::npos) {
+      INFO(line);
+      CHECK((line.find(" c ") != std::string::npos || line.find("  c ") != std::string::npos));
+    }
+  CHECK(fs::exists(tmp / "one" / "report.html"));
+  const Result bad = sinsim(base + " --reference e -o '" + (tmp / "bad").string() + "'", tmp);
+  CHECK(bad.exitCode != 0);
+  CHECK(bad.err.find("--reference e: no model has that label (the models: a b c d)") != std::string::npos);
+  CHECK_FALSE(fs::exists(tmp / "bad"));
+  fs::remove_all(tmp);
+}
+
 TEST_CASE("sinsim mc: stopped before its first chunk, nothing is left to resume or to refuse") {
   const fs::path tmp = tempDir("nochunk");
   const fs::path sc = writeScenario(tmp);
