@@ -138,6 +138,7 @@ ImuErrorModel ImuErrorModel::fromSpec(const ErrorModelSpec& spec, const std::str
   ImuErrorModel m;
   m.impl_ = impl;
   m.source_ = source;
+  m.recordDuration_ = spec.recordDuration;
   return m;
 }
 

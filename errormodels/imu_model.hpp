@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +68,8 @@ class ImuErrorModel {
   std::vector<std::string> effectNames() const;
   /// Where the model came from (file name or "inline"), for reports.
   const std::string& source() const { return source_; }
+  /// The fitted record's length [s] (ErrorModelSpec::recordDuration); unset when not given.
+  std::optional<double> recordDuration() const { return recordDuration_; }
   /// The same model keeping only the effects whose name passes `keep` (error budgets: switch
   /// effects off one at a time). Random streams are unchanged: the kept effects draw exactly the
   /// numbers they draw in the full model.
@@ -81,6 +84,7 @@ class ImuErrorModel {
  private:
   std::shared_ptr<const Impl> impl_;
   std::string source_ = "none";
+  std::optional<double> recordDuration_;
 };
 
 }  // namespace sinsim::errormodels

@@ -1,4 +1,5 @@
 // The one reader of the error-model format: YAML → ErrorModelSpec (model_io.hpp).
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -239,8 +240,15 @@ ErrorModelSpec readErrorModel(const ConfigNode& node) {
     node.error("expected an error model: a map with keys gyro and/or accel");
     return spec;
   }
-  node.allowKeys({"description", "gyro", "accel"});
+  node.allowKeys({"description", "record_duration", "gyro", "accel"});
   spec.description = node.string("description", "");
+  if (node.has("record_duration")) {
+    const double d = node.quantity("record_duration", Dimension::time());
+    if (std::isfinite(d) && d > 0.0)
+      spec.recordDuration = d;
+    else
+      node["record_duration"].error("expected a positive duration (the fitted record's length), e.g. 40 min");
+  }
   // `gyro: ~` or a file of only `description:` would silently be a perfect IMU.
   if (!node.yaml()["gyro"] && !node.yaml()["accel"])
     node.error("no gyro: or accel: section: an empty error model; write `gyro: {}` if you mean a "

@@ -157,8 +157,8 @@ bool SensorSpec::operator==(const SensorSpec& o) const {
 }
 
 bool ErrorModelSpec::operator==(const ErrorModelSpec& o) const {
-  return description == o.description && headerComments == o.headerComments && gyro == o.gyro &&
-         accel == o.accel;
+  return description == o.description && recordDuration == o.recordDuration &&
+         headerComments == o.headerComments && gyro == o.gyro && accel == o.accel;
 }
 
 // ---- functions on specs -----------------------------------------------------------------------

@@ -135,6 +135,9 @@ struct SensorSpec {
 /// An IMU error model.
 struct ErrorModelSpec {
   std::string description;                  ///< `description:`; empty when absent
+  /// `record_duration:` [s]: how long the record a fitted model came from was (`sinsim fit` writes
+  /// it); unset when absent. What a model says about times beyond it is extrapolated.
+  std::optional<double> recordDuration;
   std::vector<std::string> headerComments;  ///< comment lines at the top (provenance), without "# "
   SensorSpec gyro, accel;
   std::string source;  ///< file name it was read from ("inline", "" when built in code); not compared

@@ -140,6 +140,7 @@ std::string errorModelYaml(const ErrorModelSpec& spec) {
   std::ostringstream out;
   for (const auto& c : spec.headerComments) comment(out, "", c);
   if (!spec.description.empty()) out << "description: " << quoted(spec.description) << "\n";
+  if (spec.recordDuration) out << "record_duration: " << number(*spec.recordDuration, 10) << " s\n";
   for (Sensor sensor : {Sensor::gyro, Sensor::accel}) {
     const SensorSpec& ss = spec.sensor(sensor);
     std::ostringstream body;

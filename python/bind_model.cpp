@@ -163,6 +163,9 @@ void bindModel(py::module_& mod) {
       .def(py::init([](const py::object& src) { return checked(toModel(src)); }), py::arg("source"))
       .def_readwrite("label", &Model::label, "name of the model in mc() results")
       .def_property_readonly("description", [](const Model& m) { return m.spec.description; })
+      .def_property_readonly(
+          "record_duration", [](const Model& m) { return m.spec.recordDuration; },
+          "length [s] of the record the model was fitted on (record_duration:), None when not given")
       .def_property_readonly("source", [](const Model& m) { return m.spec.source; })
       .def_property_readonly("header_comments", [](const Model& m) { return m.spec.headerComments; })
       .def("effects", &effectList,

@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/limits.hpp"
+#include "common/number_text.hpp"
 #include "common/read_file.hpp"
 #include "errormodels/stats/record.hpp"
 #include "sim/aided/aided_navigation.hpp"
@@ -20,6 +21,17 @@ std::vector<std::string> batchWarnings(const Scenario& sc, const Reference& ref)
   if (!ref.aiding.inert())
     for (std::string& s : aided::startWarnings(sharedEarth(), ref.aiding, ref.strapdown, ref.initial))
       w.push_back(std::move(s));
+  return w;
+}
+
+std::vector<std::string> extrapolationWarnings(const std::vector<McModel>& models, double duration) {
+  std::vector<std::string> w;
+  for (const McModel& m : models)
+    if (const auto record = m.model.recordDuration(); record && duration > *record)
+      w.push_back("model " + m.label + " was fitted on a " + durationText(*record) + " record and the scenario runs " +
+                  durationText(duration) + ": its drift beyond " + durationText(*record) +
+                  " is extrapolated (a GM slower than the record, a walk or a ramp the record could not "
+                  "resolve there)");
   return w;
 }
 
@@ -67,6 +79,7 @@ McCommandResult runMcBatch(const McRequest& request) {
   batch.options = opt;
   batch.samples = ref.samples.size();
   batch.warnings = batchWarnings(sc, ref);
+  for (std::string& w : extrapolationWarnings(models, sc.duration())) batch.warnings.push_back(std::move(w));
   if (measuredSetup)  // a record in g or deg/s read as SI navigates as nonsense, silently
     for (std::string& w : errormodels::recordWarnings(measuredSetup->record)) batch.warnings.push_back(std::move(w));
   if (opt.budget)

@@ -44,6 +44,10 @@ struct McCommandResult {
 /// (aided::startWarnings). `sinsim mc` and Python's `mc` print them.
 std::vector<std::string> batchWarnings(const Scenario& sc, const Reference& ref);
 
+/// For each model fitted on a record shorter than the scenario's `duration` [s]
+/// (ImuErrorModel::recordDuration): a warning that its drift beyond the record is extrapolated.
+std::vector<std::string> extrapolationWarnings(const std::vector<McModel>& models, double duration);
+
 /// Runs (or resumes) the batch. Throws InputError for a scenario and a record together, neither,
 /// a record without a model to compare with, and whatever the scenario, record, models and batch
 /// options refuse.

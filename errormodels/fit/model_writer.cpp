@@ -434,6 +434,7 @@ ErrorModelSpec modelSpec(const std::vector<AxisFitResult>& axes, const ModelProv
   for (char& c : desc)
     if (c == '\n' || c == '"') c = ' ';
   spec.description = desc;
+  if (p.duration > 0.0) spec.recordDuration = p.duration;
   std::map<std::pair<int, std::string>, int> seen;
   for (const auto& ax : axes) {
     if (ax.axis != "x" && ax.axis != "y" && ax.axis != "z" && ax.axis != "all")

@@ -287,6 +287,26 @@ TEST_CASE("spec: 400 random valid specs round-trip through the writer and the re
   }
 }
 
+TEST_CASE("spec: record_duration, the fitted record's length, reads in any time unit, writes in s and refuses nonsense") {
+  const std::string effects = "gyro:\n  x:\n    - {type: white, density: 0.1 deg/sqrt(h)}\n";
+  const ErrorModelSpec a = errorModelFromString("record_duration: 40 min\n" + effects, "r.yaml");
+  REQUIRE(a.recordDuration);
+  CHECK(*a.recordDuration == Approx(2400.0).epsilon(1e-15));
+  CHECK(errorModelYaml(a).find("record_duration: 2400 s\n") != std::string::npos);
+  CHECK(roundTrip(a) == a);
+  CHECK(ImuErrorModel::fromSpec(a, "r.yaml").recordDuration() == a.recordDuration);
+  CHECK_FALSE(errorModelFromString(effects, "plain.yaml").recordDuration);
+  CHECK_FALSE(ImuErrorModel::fromString(effects, "plain.yaml").recordDuration());
+  for (const char* bad : {"-5 min", "0 s", "nan s", "1e999 s"}) {
+    INFO(bad);
+    const std::string msg =
+        messageOf([&] { errorModelFromString(std::string("record_duration: ") + bad + "\n" + effects, "bad.yaml"); });
+    CHECK(msg.find("bad.yaml:1: record_duration") != std::string::npos);
+  }
+  CHECK(messageOf([&] { errorModelFromString("record_duration: 40\n" + effects, "unit.yaml"); })
+            .find("unit.yaml:1: record_duration") != std::string::npos);
+}
+
 TEST_CASE("spec: enabled no, false and off all switch an effect off, in simulation and queries") {
   for (const char* off : {"no", "false", "off", "No", "FALSE"}) {
     const std::string text = std::string("gyro:\n  x:\n    - {type: white, density: 1 deg/sqrt(h), enabled: ") +

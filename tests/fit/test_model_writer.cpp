@@ -73,6 +73,7 @@ TEST_CASE("Model writer: AR and Allan terms read back to the fitted values", "[f
 
   const YAML::Node root = YAML::Load(text);
   CHECK(root["description"].as<std::string>() == "test model");
+  CHECK(root["record_duration"].as<std::string>() == "200 s");  // the record's length, for mc's warning
   const YAML::Node ar = root["gyro"]["x"][0];
   CHECK(ar["type"].as<std::string>() == "ar");
   REQUIRE(ar["a"].size() == sel.fit.order);

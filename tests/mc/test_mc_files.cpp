@@ -212,6 +212,26 @@ TEST_CASE("sinsim mc: --reference compares every model with one, and names the l
   fs::remove_all(tmp);
 }
 
+TEST_CASE("sinsim mc: a model fitted on a record shorter than the scenario is said to extrapolate") {
+  const fs::path tmp = tempDir("extrapolate");
+  const fs::path sc = writeScenario(tmp);  // 30 s
+  const std::string effects = "gyro: {x: [{type: white, density: 0.1 deg/sqrt(h)}]}\n";
+  std::ofstream(tmp / "brief.yaml") << "record_duration: 20 s\n" << effects;
+  std::ofstream(tmp / "long.yaml") << "record_duration: 1 min\n" << effects;
+  std::ofstream(tmp / "unknown.yaml") << effects;
+  const Result r = sinsim("mc '" + sc.string() + "' --runs 2 --threads 1 --model '" + (tmp / "brief.yaml").string() +
+                              "' --model '" + (tmp / "long.yaml").string() + "' --model '" +
+                              (tmp / "unknown.yaml").string() + "' -o '" + (tmp / "o").string() + "'",
+                          tmp);
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.err.find("model brief was fitted on a 20 s record and the scenario runs 30 s: its drift beyond 20 s is "
+                   "extrapolated") != std::string::npos);
+  CHECK(r.err.find("model long was fitted") == std::string::npos);
+  CHECK(r.err.find("model unknown was fitted") == std::string::npos);
+  fs::remove_all(tmp);
+}
+
 TEST_CASE("sinsim mc: stopped before its first chunk, nothing is left to resume or to refuse") {
   const fs::path tmp = tempDir("nochunk");
   const fs::path sc = writeScenario(tmp);

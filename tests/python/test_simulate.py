@@ -74,6 +74,17 @@ def test_model_file_error_names_file_and_line(tmp_path):
     assert "gyro.x[0].density" in str(e.value)
 
 
+def test_model_record_duration_reads_in_seconds_and_is_kept(tmp_path):
+    path = tmp_path / "fitted.yaml"
+    path.write_text("record_duration: 40 min\ngyro:\n  x:\n    - {type: white, density: 0.1 deg/sqrt(h)}\n")
+    model = sinsim.Model(str(path))
+    assert model.record_duration == 2400.0
+    again = tmp_path / "again.yaml"
+    model.write(str(again))
+    assert sinsim.Model(str(again)).record_duration == 2400.0
+    assert sinsim.Model(WHITE_GYRO).record_duration is None
+
+
 def scenario_file(tmp_path):
     path = tmp_path / "static5.yaml"
     path.write_text(
