@@ -105,14 +105,15 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest
                      fit.warnings.end());
   if (sd > R) fit.warnings.push_back(uncertaintyWarning(fit.parameter("drift")));
   try {
-    const DriftWalkAlternative walk = driftWalkAlternative(means, others, gls.m2LogLikDrift, R);
+    const DriftWalkAlternative walk = driftWalkAlternative(means, others, gls, R);
     fit.driftWalkGap = walk.gap, fit.driftWalkK = walk.K;
     if (walk.gap < kDriftSlopeChi2) fit.warnings.push_back(walkWarning(walk));
   } catch (const Error&) {
   }
 }
 
-DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others, double drifted, double R) {
+DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others,
+                                          const BlockLikelihood& scored, double R) {
   const double T = means.dt * double(means.perBlock * means.y.size());
   const double K0 = R * std::sqrt(T);
   const double lo = others.randomWalk > 0.0 ? others.randomWalk : K0 / 1000.0;
@@ -124,9 +125,8 @@ DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentM
   };
   const auto best = goldenSectionLog(lo, hi, 48, at, [](const auto& f) { return f.second; });
   // The set's own walk (or none) is one end of the range: never worse than what the set had.
-  const double own = blockLikelihood(means, others).m2LogLik;
-  if (own <= best.second) return {own - drifted, others.randomWalk};
-  return {best.second - drifted, best.first};
+  if (scored.m2LogLik <= best.second) return {scored.m2LogLik - scored.m2LogLikDrift, others.randomWalk};
+  return {best.second - scored.m2LogLikDrift, best.first};
 }
 
 }  // namespace sinsim::errormodels::fit

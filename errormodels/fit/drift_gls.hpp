@@ -43,8 +43,8 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest
 /// The trend a drift fits, fitted as a random walk instead: the other terms held at `others`
 /// (the fit's, drift removed), the walk's K minimised over a log range by golden sections (from
 /// the set's own K, or from R sqrt(T) / 1000, to 100 R sqrt(T) and beyond the set's own K), and
-/// its -2 log L of the block means compared with `drifted` (the same terms with the slope
-/// profiled out). Returns {gap, K}: the walk's -2 log L minus the ramp's, and the walk's K.
+/// its -2 log L of the block means compared with the ramp's: `scored` is blockLikelihood(means,
+/// others), whose m2LogLikDrift has the slope profiled out and whose m2LogLik is the set's own walk. Returns {gap, K}: the walk's -2 log L minus the ramp's, and the walk's K.
 /// A trend over a record is what a walk, or a GM slower than the record, leaves there too, and
 /// the two differ in little but a ramp's straightness (a ramp's periodogram falls as 1/f^2, a
 /// walk's expected one does too). Where the gap is below the drift's own cost against the set
@@ -52,6 +52,7 @@ void driftFromTrend(LatentFit& fit, const std::vector<double>& x, bool slopeTest
 struct DriftWalkAlternative {
   double gap = 0.0, K = 0.0;
 };
-DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others, double drifted, double R);
+DriftWalkAlternative driftWalkAlternative(const BlockMeans& means, const LatentModel& others,
+                                          const BlockLikelihood& scored, double R);
 
 }  // namespace sinsim::errormodels::fit

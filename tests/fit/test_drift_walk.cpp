@@ -39,7 +39,7 @@ Scored scoredRecord(double K, double R, std::uint64_t seed) {
   LatentModel white;
   white.white = kN;
   const BlockLikelihood l = blockLikelihood(means, white);
-  return {l.m2LogLik - l.m2LogLikDrift, driftWalkAlternative(means, white, l.m2LogLikDrift, std::fabs(l.slope))};
+  return {l.m2LogLik - l.m2LogLikDrift, driftWalkAlternative(means, white, l, std::fabs(l.slope))};
 }
 
 }  // namespace
